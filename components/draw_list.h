@@ -1,0 +1,16 @@
+#pragma once
+// Resource: every particle to draw this frame, back to front, as the GPU instance layout.
+// Written by the sorting system, read by the billboard renderer and the CPU reference.
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+namespace pyro {
+
+struct DrawList {
+  std::vector<glm::vec4> center_radius;  // xyz world position, w radius
+  std::vector<glm::vec4> color_density;  // rgb linear colour, a density rho
+  size_t size() const { return center_radius.size(); }
+};
+
+}  // namespace pyro

@@ -1,0 +1,14 @@
+#pragma once
+#include <string>
+
+namespace pyro {
+
+// The folder holding scenes and shaders: $PYRO_CONTENT_DIR when set, else the source tree's
+// content/ folder recorded at build time.
+std::string content_dir();
+std::string content_path(const std::string& relative);
+
+// Reads a whole file; throws pyro::UserError naming the file when it cannot be read.
+std::string read_text_file(const std::string& path);
+
+}  // namespace pyro

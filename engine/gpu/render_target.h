@@ -1,0 +1,32 @@
+#pragma once
+// An offscreen framebuffer: a floating-point colour attachment (RGBA16F by default, linear
+// radiance, premultiplied alpha) and a 32-bit float depth attachment.
+#include <vector>
+
+#include "engine/gpu/gl_objects.h"
+
+namespace pyro::gpu {
+
+class RenderTarget {
+ public:
+  RenderTarget(int width, int height, GLenum color_format = GL_RGBA16F);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  GLuint framebuffer() const { return fbo_.get(); }
+  GLuint color_texture() const { return color_.get(); }
+  GLuint depth_texture() const { return depth_.get(); }
+
+  void bind() const;
+  // RGBA floats, row 0 at the top of the image (GL's bottom-up rows are flipped).
+  std::vector<float> read_rgba() const;
+  // Depth values in [0, 1], row 0 at the top.
+  std::vector<float> read_depth() const;
+
+ private:
+  int width_, height_;
+  Texture color_, depth_;
+  Framebuffer fbo_;
+};
+
+}  // namespace pyro::gpu

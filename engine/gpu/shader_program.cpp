@@ -1,0 +1,72 @@
+#include "engine/gpu/shader_program.h"
+
+#include "engine/core/content_path.h"
+#include "engine/gpu/gpu_error.h"
+
+namespace pyro::gpu {
+
+namespace {
+
+const char* stage_name(GLenum stage) {
+  switch (stage) {
+    case GL_VERTEX_SHADER: return "vertex";
+    case GL_FRAGMENT_SHADER: return "fragment";
+    case GL_COMPUTE_SHADER: return "compute";
+    case GL_GEOMETRY_SHADER: return "geometry";
+    default: return "shader";
+  }
+}
+
+}  // namespace
+
+ShaderStageSource load_shader_stage(GLenum stage, const std::string& relative) {
+  const std::string path = content_path(relative);
+  return ShaderStageSource{stage, path, read_text_file(path)};
+}
+
+Program link_program(const std::vector<ShaderStageSource>& stages) {
+  std::vector<Shader> shaders;
+  std::string files;
+  for (const ShaderStageSource& s : stages) {
+    Shader shader(glCreateShader(s.stage));
+    const char* text = s.source.c_str();
+    glShaderSource(shader.get(), 1, &text, nullptr);
+    glCompileShader(shader.get());
+    GLint ok = 0;
+    glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      GLint length = 0;
+      glGetShaderiv(shader.get(), GL_INFO_LOG_LENGTH, &length);
+      std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
+      glGetShaderInfoLog(shader.get(), static_cast<GLsizei>(log.size()), nullptr, log.data());
+      throw GpuError(s.file + ": " + stage_name(s.stage) + " shader does not compile:\n" + log);
+    }
+    files += (files.empty() ? "" : " + ") + s.file;
+    shaders.push_back(std::move(shader));
+  }
+  Program program(glCreateProgram());
+  for (const Shader& s : shaders) glAttachShader(program.get(), s.get());
+  glLinkProgram(program.get());
+  GLint ok = 0;
+  glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program.get(), GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
+    glGetProgramInfoLog(program.get(), static_cast<GLsizei>(log.size()), nullptr, log.data());
+    throw GpuError(files + ": program does not link:\n" + log);
+  }
+  for (const Shader& s : shaders) glDetachShader(program.get(), s.get());
+  return program;
+}
+
+Program load_program(const std::string& vertex_file, const std::string& fragment_file) {
+  return link_program({load_shader_stage(GL_VERTEX_SHADER, "shaders/" + vertex_file),
+                       load_shader_stage(GL_FRAGMENT_SHADER, "shaders/" + fragment_file)});
+}
+
+GLint uniform_location(const Program& program, const char* name) {
+  return glGetUniformLocation(program.get(), name);
+}
+
+}  // namespace pyro::gpu

@@ -1,0 +1,58 @@
+#include "engine/io/png_file.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+#include "engine/core/user_error.h"
+#include "engine/math/color.h"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#include <stb_image.h>
+#include <stb_image_write.h>
+#pragma GCC diagnostic pop
+
+namespace pyro {
+
+void write_png(const std::string& path, int width, int height, int channels,
+               const std::vector<uint8_t>& pixels) {
+  if (pixels.size() != static_cast<size_t>(width) * height * channels)
+    throw std::invalid_argument("write_png: pixel count does not match the size");
+  const std::string temp = path + ".partial";
+  if (!stbi_write_png(temp.c_str(), width, height, channels, pixels.data(), width * channels)) {
+    std::error_code ec;
+    std::filesystem::remove(temp, ec);
+    throw std::runtime_error(path + ": cannot write PNG (is the folder writable?)");
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, path, ec);
+  if (ec) {
+    std::filesystem::remove(temp, ec);
+    throw std::runtime_error(path + ": cannot rename the finished PNG into place: " + ec.message());
+  }
+}
+
+std::vector<uint8_t> linear_rgba_to_srgb8(const std::vector<float>& rgba, int width, int height) {
+  const size_t n = static_cast<size_t>(width) * height;
+  std::vector<uint8_t> out(n * 3);
+  for (size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) out[i * 3 + c] = to_byte(linear_to_srgb(rgba[i * 4 + c]));
+  return out;
+}
+
+PngImage read_png(const std::string& path) {
+  PngImage img;
+  unsigned char* data = stbi_load(path.c_str(), &img.width, &img.height, &img.channels, 0);
+  if (!data) throw UserError(path, "", std::string("cannot read PNG: ") + stbi_failure_reason());
+  img.pixels.assign(data, data + static_cast<size_t>(img.width) * img.height * img.channels);
+  stbi_image_free(data);
+  return img;
+}
+
+}  // namespace pyro

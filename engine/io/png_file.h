@@ -1,0 +1,25 @@
+#pragma once
+// PNG output. Files are written to a temporary name beside the destination and renamed once
+// complete, so a failure never leaves a partial image under the final name.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pyro {
+
+// 8-bit RGB (channels 3) or RGBA (channels 4), top row first. Throws std::runtime_error naming
+// the file when it cannot be written.
+void write_png(const std::string& path, int width, int height, int channels,
+               const std::vector<uint8_t>& pixels);
+
+// Linear RGBA floats to 8-bit sRGB RGB (alpha dropped: frames are opaque).
+std::vector<uint8_t> linear_rgba_to_srgb8(const std::vector<float>& rgba, int width, int height);
+
+struct PngImage {
+  int width = 0, height = 0, channels = 0;
+  std::vector<uint8_t> pixels;
+};
+// Reads a PNG (for tests and tools). Throws pyro::UserError naming the file on failure.
+PngImage read_png(const std::string& path);
+
+}  // namespace pyro

@@ -1,0 +1,73 @@
+#pragma once
+// What a scene file says, as plain data: the loader (scene_loader.h) fills it from JSON and
+// checks every value; the scene builder turns it into entities.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace pyro {
+
+struct CameraDescription {
+  glm::vec3 position{0.0f, 1.5f, 8.0f};
+  glm::vec3 target{0.0f, 1.5f, 0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_y_deg = 45.0f;  // vertical field of view, (0, 180)
+  float near = 0.1f;        // > 0
+  float far = 200.0f;       // > near
+  // Optional scripted motion: the camera orbits `target` about the vertical axis.
+  float orbit_deg_per_second = 0.0f;
+};
+
+struct LightDescription {
+  glm::vec3 direction{-0.4f, -1.0f, -0.3f};  // direction the light travels; non-zero
+  glm::vec3 color{1.0f, 1.0f, 1.0f};         // linear RGB, each >= 0
+  glm::vec3 ambient{0.35f, 0.38f, 0.45f};    // linear RGB, each >= 0
+};
+
+// A cloud of identical Gaussian particles placed uniformly at random in a box
+// (Johnson & McAllister 2005, section 4: r, rho and grey colour c per scene).
+struct CloudDescription {
+  std::string name;                          // optional, for reports
+  uint32_t count = 1000;                     // 1 .. 10,000,000
+  float radius = 0.4f;                       // world units, > 0
+  float density = 0.4f;                      // opacity at the kernel centre, [0, 1]
+  glm::vec3 color{0.8f, 0.8f, 0.8f};         // linear, each in [0, 1]; a number c means (c,c,c)
+  glm::vec3 box_min{-4.0f, 0.0f, -4.0f};     // box_min < box_max on every axis
+  glm::vec3 box_max{4.0f, 4.0f, 4.0f};
+  uint64_t seed = 1;                         // mixed with the scene seed
+  glm::vec3 drift{0.0f, 0.0f, 0.0f};         // common drift velocity, world units / s
+  float jitter = 0.0f;                       // per-particle random speed, >= 0
+};
+
+enum class MeshKind { ground_plane, water_tower };
+
+struct MeshDescription {
+  MeshKind kind = MeshKind::ground_plane;
+  glm::vec3 position{0.0f, 0.0f, 0.0f};
+  float scale = 1.0f;                        // > 0; for the ground plane: half the side length
+  glm::vec3 color{0.5f, 0.5f, 0.5f};         // linear albedo, each in [0, 1]
+};
+
+struct FootprintDescription {
+  int size = 64;        // table is size x size, 2 .. 4096 (Johnson & McAllister eq. 4)
+  int intervals = 100;  // composite quadrature intervals along z, 1 .. 100000
+};
+
+struct SceneDescription {
+  std::string file;                          // where it was read from
+  std::string name;
+  uint64_t seed = 1;
+  int width = 800;                           // 1 .. 8192
+  int height = 600;                          // 1 .. 8192
+  float frames_per_second = 30.0f;           // > 0
+  glm::vec3 background{0.62f, 0.68f, 0.76f}; // linear RGB sky colour
+  CameraDescription camera;
+  LightDescription light;
+  FootprintDescription footprint;
+  std::vector<CloudDescription> clouds;
+  std::vector<MeshDescription> meshes;
+};
+
+}  // namespace pyro

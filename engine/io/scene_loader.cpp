@@ -1,0 +1,662 @@
+// Scene file reader. Two layers:
+//  1. JsonDocumentBuilder: a SAX handler that builds the JSON tree, turns syntax errors into
+//     "line L, column C" places, and refuses duplicate keys (nlohmann would keep the last one
+//     silently).
+//  2. ObjectReader: walks one JSON object, knows its JSON pointer, reads typed and
+//     range-checked values into the description (whose defaults stay when a key is absent),
+//     remembers which keys it asked for and refuses any other key in finish().
+// The scene-specific part at the bottom is then a list of one-line reads plus the few checks
+// that involve several fields.
+#include "engine/io/scene_loader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "engine/core/user_error.h"
+
+namespace pyro {
+namespace {
+
+using json = nlohmann::json;
+
+// Bound on every quantity whose header comment gives no upper limit (lengths, coordinates,
+// speeds, radiances, frame rate): far beyond any sensible scene, far below float overflow,
+// and still coarse enough that float keeps ~0.1 world-unit precision at the extremes.
+constexpr double kLarge = 1e6;
+
+// ---------------------------------------------------------------------------------------------
+// Text helpers
+
+// Shortest text that reads back as the same value (at float precision when `as_float`), with
+// tidy exponents: 1e6 rather than 1000000 or 1e+06, 0.7 rather than 0.699999988.
+std::string format_number(double v, bool as_float = false) {
+  char buffer[40];
+  for (int precision = 1; precision <= 17; ++precision) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", precision, v);
+    const double back = std::strtod(buffer, nullptr);
+    if (as_float ? static_cast<float>(back) == static_cast<float>(v) : back == v) break;
+  }
+  std::string s = buffer;
+  const std::size_t e = s.find('e');
+  if (e != std::string::npos) {
+    std::string exponent = s.substr(e + 1);
+    const bool negative = exponent[0] == '-';
+    std::size_t i = (exponent[0] == '+' || exponent[0] == '-') ? 1 : 0;
+    while (i + 1 < exponent.size() && exponent[i] == '0') ++i;
+    s = s.substr(0, e) + "e" + (negative ? "-" : "") + exponent.substr(i);
+    // %g switches to an exponent early (180 -> 1.8e2); write whole numbers below 1e4 in full.
+    if (std::fabs(v) < 1e4 && v == std::floor(v)) {
+      std::snprintf(buffer, sizeof buffer, "%.0f", v);
+      s = buffer;
+    }
+  } else if (v == std::floor(v) && std::fabs(v) >= 1e4) {
+    // 1000000 -> 1e6 when it ends in at least four zeros.
+    std::size_t zeros = 0;
+    while (zeros < s.size() && s[s.size() - 1 - zeros] == '0') ++zeros;
+    if (zeros >= 4) s = s.substr(0, s.size() - zeros) + "e" + std::to_string(zeros);
+  }
+  return s;
+}
+
+std::string format_float(float v) { return format_number(v, true); }
+
+std::string format_vec3(const glm::vec3& v) {
+  return "[" + format_float(v.x) + ", " + format_float(v.y) + ", " + format_float(v.z) + "]";
+}
+
+std::string in_quotes(std::string_view s) {
+  // Built by appending: g++ 12 at -O3 warns falsely (-Wrestrict) on "\"" + std::string.
+  std::string q;
+  q.reserve(s.size() + 2);
+  q += '"';
+  q += s;
+  q += '"';
+  return q;
+}
+
+std::string quoted_list(const std::vector<std::string_view>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += ", ";
+    out += in_quotes(items[i]);
+  }
+  return out;
+}
+
+// What the user wrote, for "found ...": the value itself (shortened) and its JSON type.
+std::string describe(const json& v) {
+  std::string text = v.dump(-1, ' ', false, json::error_handler_t::replace);
+  if (text.size() > 60) {
+    std::size_t cut = 57;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // UTF-8
+    text = text.substr(0, cut) + "...";
+  }
+  switch (v.type()) {
+    case json::value_t::null:
+      return "null";
+    case json::value_t::boolean:
+      return text + " (boolean)";
+    case json::value_t::string:
+      return text + " (string)";
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float:
+      return text;
+    case json::value_t::object:
+      return text + " (object)";
+    case json::value_t::array:
+      return text + " (array of " + std::to_string(v.size()) + ")";
+    default:
+      return "a value of type " + std::string(v.type_name());
+  }
+}
+
+// RFC 6901: "~" -> "~0", "/" -> "~1".
+std::string escape_pointer_token(std::string_view token) {
+  std::string out;
+  for (char c : token) {
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
+  }
+  return out;
+}
+
+// Optimal string alignment distance (Levenshtein plus adjacent transpositions, so that
+// "raduis" is one edit from "radius").
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  const std::size_t n = a.size(), m = b.size();
+  std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
+  for (std::size_t i = 0; i <= n; ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= n; ++i) {
+    for (std::size_t j = 1; j <= m; ++j) {
+      const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[n][m];
+}
+
+// "; did you mean "radius"?" when a candidate is within two edits, else the full list.
+std::string suggest(std::string_view wrong, const std::vector<std::string_view>& candidates) {
+  std::string_view best;
+  std::size_t best_distance = 3;
+  for (std::string_view c : candidates) {
+    const std::size_t dist = edit_distance(wrong, c);
+    if (dist < best_distance) best_distance = dist, best = c;
+  }
+  if (best_distance <= 2) return "; did you mean " + in_quotes(best) + "?";
+  return "; expected one of " + quoted_list(candidates);
+}
+
+// nlohmann reports the 1-based index of the last byte it read (one past the end for an
+// unexpected end of input). Columns count characters (UTF-8 lead bytes), starting at 1.
+std::string line_and_column(const std::string& text, std::size_t position) {
+  const std::size_t index = position > 0 ? position - 1 : 0;
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < index && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+// ---------------------------------------------------------------------------------------------
+// JSON text -> tree
+
+class JsonDocumentBuilder final : public nlohmann::json_sax<json> {
+ public:
+  explicit JsonDocumentBuilder(const std::string& text) : text_(text) {}
+
+  json& root() { return root_; }
+  bool failed() const { return failed_; }
+  const std::string& error_place() const { return error_place_; }
+  const std::string& error_message() const { return error_message_; }
+
+  bool null() override { return put(nullptr) != nullptr; }
+  bool boolean(bool v) override { return put(v) != nullptr; }
+  bool number_integer(number_integer_t v) override { return put(v) != nullptr; }
+  bool number_unsigned(number_unsigned_t v) override { return put(v) != nullptr; }
+  bool number_float(number_float_t v, const string_t&) override { return put(v) != nullptr; }
+  bool string(string_t& v) override { return put(std::move(v)) != nullptr; }
+  bool binary(binary_t& v) override { return put(json::binary(std::move(v))) != nullptr; }
+
+  bool start_object(std::size_t) override { return open(json::object()); }
+  bool start_array(std::size_t) override { return open(json::array()); }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
+
+  bool key(string_t& k) override {
+    json& object = *stack_.back();
+    if (object.contains(k)) {
+      return fail(current_pointer() + "/" + escape_pointer_token(k),
+                  "duplicate key " + in_quotes(k) + "; each key may appear only once in an object");
+    }
+    pending_ = &object[k];
+    pending_token_ = "/" + escape_pointer_token(k);
+    return true;
+  }
+
+  bool parse_error(std::size_t position, const std::string& last_token,
+                   const json::exception& ex) override {
+    std::string message;
+    if (ex.id == 406) {  // out_of_range.406: number overflow
+      message =
+          "expected a number within the range of a double (about 1.8e308), found " + last_token;
+    } else {
+      // "[json.exception.parse_error.101] parse error at line 1, column 9: syntax error ..."
+      // -> keep what follows the position, which nlohmann sometimes gets wrong.
+      message = ex.what();
+      const std::size_t at = message.find("parse error");
+      const std::size_t colon = message.find(": ", at == std::string::npos ? 0 : at);
+      if (colon != std::string::npos) message = message.substr(colon + 2);
+      message = "invalid JSON: " + message;
+    }
+    return fail(line_and_column(text_, position), message);
+  }
+
+ private:
+  template <class T>
+  json* put(T&& value) {
+    if (stack_.empty()) {
+      root_ = json(std::forward<T>(value));
+      last_token_.clear();
+      return &root_;
+    }
+    json& top = *stack_.back();
+    if (top.is_array()) {
+      last_token_ = "/" + std::to_string(top.size());
+      top.push_back(json(std::forward<T>(value)));
+      return &top.back();
+    }
+    *pending_ = json(std::forward<T>(value));
+    last_token_ = pending_token_;
+    return pending_;
+  }
+
+  bool open(json&& container) {
+    if (stack_.size() >= kMaxDepth) {  // scenes nest 4 deep; this keeps recursion bounded
+      return fail(current_pointer(), "expected at most " + std::to_string(kMaxDepth) +
+                                         " levels of nested arrays and objects, found more");
+    }
+    json* v = put(std::move(container));
+    stack_.push_back(v);
+    tokens_.push_back(last_token_);
+    return true;
+  }
+
+  bool close() {
+    stack_.pop_back();
+    tokens_.pop_back();
+    return true;
+  }
+
+  std::string current_pointer() const {
+    std::string p;
+    for (const std::string& t : tokens_) p += t;
+    return p;
+  }
+
+  bool fail(std::string place, std::string message) {
+    failed_ = true;
+    error_place_ = std::move(place);
+    error_message_ = std::move(message);
+    return false;
+  }
+
+  static constexpr std::size_t kMaxDepth = 64;
+
+  const std::string& text_;
+  json root_;
+  std::vector<json*> stack_;         // open containers, outermost first
+  std::vector<std::string> tokens_;  // "/key" or "/index" of each open container
+  json* pending_ = nullptr;          // slot for the value after the last key
+  std::string pending_token_, last_token_;
+  bool failed_ = false;
+  std::string error_place_, error_message_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Typed, range-checked reads
+
+struct Range {
+  double lo, hi;
+  bool lo_open = false, hi_open = false;
+
+  bool contains(double v) const {
+    return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+  }
+  std::string text() const {
+    return std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) +
+           (hi_open ? ")" : "]");
+  }
+};
+
+constexpr Range kAnyRange{-kLarge, kLarge};
+constexpr Range kPositive{0.0, kLarge, true, false};
+constexpr Range kNonNegative{0.0, kLarge};
+constexpr Range kUnit{0.0, 1.0};
+
+// Where a value sits: the file and the JSON pointer inside it.
+struct Where {
+  const std::string* file;
+  std::string pointer;
+
+  Where child(std::string_view key) const {
+    return {file, pointer + "/" + escape_pointer_token(key)};
+  }
+  Where child(std::size_t index) const { return {file, pointer + "/" + std::to_string(index)}; }
+  [[noreturn]] void fail(const std::string& message) const {
+    throw UserError(*file, pointer, message);
+  }
+};
+
+float read_number(const json& v, const Where& at, const Range& range) {
+  const std::string expected = "expected a number in " + range.text();
+  if (!v.is_number()) at.fail(expected + ", found " + describe(v));
+  const double d = v.get<double>();
+  if (!range.contains(d)) at.fail(expected + ", found " + describe(v));
+  const float f = static_cast<float>(d);
+  if (!range.contains(f)) {  // e.g. 1e-50 for a positive value: rounds to 0 in a float
+    at.fail(expected + ", found " + describe(v) + ", which is " + format_float(f) +
+            " in single precision");
+  }
+  return f;
+}
+
+std::uint64_t read_integer(const json& v, const Where& at, std::uint64_t lo, std::uint64_t hi) {
+  const std::string expected = "expected an integer in [" + std::to_string(lo) + ", " +
+                               std::to_string(hi) + "], found " + describe(v);
+  std::uint64_t u = 0;
+  if (v.is_number_unsigned()) {
+    u = v.get<std::uint64_t>();
+  } else if (v.is_number_integer()) {
+    const std::int64_t i = v.get<std::int64_t>();
+    if (i < 0) at.fail(expected);
+    u = static_cast<std::uint64_t>(i);
+  } else if (v.is_number_float()) {  // accept 1e6 or 3.0, refuse 2.5
+    const double d = v.get<double>();
+    if (d != std::floor(d)) at.fail(expected + " (not a whole number)");
+    if (d < 0.0 || d > 9007199254740992.0) at.fail(expected);  // beyond 2^53: not exact
+    u = static_cast<std::uint64_t>(d);
+  } else {
+    at.fail(expected);
+  }
+  if (u < lo || u > hi) at.fail(expected);
+  return u;
+}
+
+glm::vec3 read_vec3(const json& v, const Where& at, const Range& range) {
+  if (!v.is_array() || v.size() != 3) {
+    at.fail("expected an array of 3 numbers, each in " + range.text() + ", found " + describe(v));
+  }
+  glm::vec3 out;
+  for (std::size_t i = 0; i < 3; ++i)
+    out[static_cast<glm::length_t>(i)] = read_number(v[i], at.child(i), range);
+  return out;
+}
+
+// A colour in [0, 1]: either a grey level c, meaning (c, c, c), or [r, g, b].
+glm::vec3 read_unit_color(const json& v, const Where& at) {
+  if (v.is_number()) return glm::vec3(read_number(v, at, kUnit));
+  if (v.is_array()) return read_vec3(v, at, kUnit);
+  at.fail("expected a grey level in [0, 1] or an array of 3 numbers each in [0, 1], found " +
+          describe(v));
+}
+
+// Reads the keys of one JSON object into fields whose current values are the defaults.
+class ObjectReader {
+ public:
+  ObjectReader(const json& object, Where where, std::string_view what = "an object")
+      : object_(object), where_(std::move(where)) {
+    if (!object_.is_object())
+      where_.fail("expected " + std::string(what) + ", found " + describe(object_));
+  }
+
+  const Where& where() const { return where_; }
+  Where at(std::string_view key) const { return where_.child(key); }
+
+  // The value under `key`, or nullptr when absent. Either way `key` becomes a known key.
+  const json* find(std::string_view key) {
+    known_.push_back(key);
+    const auto it = object_.find(key);
+    return it == object_.end() ? nullptr : &*it;
+  }
+
+  const json& require(std::string_view key, std::string_view what) {
+    const json* v = find(key);
+    if (v == nullptr)
+      where_.fail("missing required key " + in_quotes(key) + ": expected " + std::string(what));
+    return *v;
+  }
+
+  void number(std::string_view key, const Range& range, float& out) {
+    if (const json* v = find(key)) out = read_number(*v, at(key), range);
+  }
+
+  template <class Int>
+  void integer(std::string_view key, std::uint64_t lo, std::uint64_t hi, Int& out) {
+    if (const json* v = find(key)) out = static_cast<Int>(read_integer(*v, at(key), lo, hi));
+  }
+
+  void vec3(std::string_view key, const Range& range, glm::vec3& out) {
+    if (const json* v = find(key)) out = read_vec3(*v, at(key), range);
+  }
+
+  void unit_color(std::string_view key, glm::vec3& out) {
+    if (const json* v = find(key)) out = read_unit_color(*v, at(key));
+  }
+
+  void string(std::string_view key, std::string& out) {
+    if (const json* v = find(key)) {
+      if (!v->is_string()) at(key).fail("expected a string, found " + describe(*v));
+      out = v->get<std::string>();
+    }
+  }
+
+  // A nested object: `read(ObjectReader&)` fills fields, then unknown keys are refused.
+  template <class F>
+  void object(std::string_view key, F&& read) {
+    if (const json* v = find(key)) {
+      ObjectReader child(*v, at(key));
+      read(child);
+      child.finish();
+    }
+  }
+
+  // An array of objects, each read like object().
+  template <class F>
+  void objects(std::string_view key, std::string_view what, F&& read) {
+    const json* v = find(key);
+    if (v == nullptr) return;
+    const Where array_at = at(key);
+    if (!v->is_array()) array_at.fail("expected an array of objects, found " + describe(*v));
+    for (std::size_t i = 0; i < v->size(); ++i) {
+      ObjectReader child((*v)[i], array_at.child(i), what);
+      read(child, i);
+      child.finish();
+    }
+  }
+
+  // Refuses every key that no read asked for.
+  void finish() const {
+    for (const auto& item : object_.items()) {
+      const std::string& key = item.key();
+      if (std::find(known_.begin(), known_.end(), std::string_view(key)) != known_.end()) continue;
+      at(key).fail("unknown key " + in_quotes(key) + suggest(key, known_));
+    }
+  }
+
+ private:
+  const json& object_;
+  Where where_;
+  std::vector<std::string_view> known_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// The scene
+
+double length(const glm::vec3& v) {
+  const double x = v.x, y = v.y, z = v.z;
+  return std::sqrt(x * x + y * y + z * z);
+}
+
+constexpr double kMinLength = 1e-6;  // shortest usable direction / camera-to-target distance
+
+void require_nonzero(const glm::vec3& v, const Where& at, std::string_view what) {
+  if (length(v) < kMinLength) {
+    at.fail("expected a non-zero " + std::string(what) + " (length at least 1e-6), found " +
+            format_vec3(v));
+  }
+}
+
+void read_camera(ObjectReader& r, CameraDescription& c) {
+  r.vec3("position", kAnyRange, c.position);
+  r.vec3("target", kAnyRange, c.target);
+  r.vec3("up", kAnyRange, c.up);
+  r.number("fov_y_deg", Range{0.0, 180.0, true, true}, c.fov_y_deg);
+  r.number("near", kPositive, c.near);
+  r.number("far", kPositive, c.far);
+  r.number("orbit_deg_per_second", kAnyRange, c.orbit_deg_per_second);
+
+  if (!(c.far > c.near)) {
+    r.at("far").fail("expected \"far\" greater than \"near\" (" + format_float(c.near) +
+                     "), found " + format_float(c.far));
+  }
+  const glm::vec3 view = c.target - c.position;
+  if (length(view) < kMinLength) {
+    r.at("target").fail("expected a target different from the camera position " +
+                        format_vec3(c.position) + ", found " + format_vec3(c.target));
+  }
+  require_nonzero(c.up, r.at("up"), "up vector");
+  const double u = length(c.up), d = length(view);
+  const double ux = c.up.x / u, uy = c.up.y / u, uz = c.up.z / u;
+  const double dx = view.x / d, dy = view.y / d, dz = view.z / d;
+  const double sine = std::sqrt((uy * dz - uz * dy) * (uy * dz - uz * dy) +
+                                (uz * dx - ux * dz) * (uz * dx - ux * dz) +
+                                (ux * dy - uy * dx) * (ux * dy - uy * dx));
+  if (sine < 1e-3) {
+    r.at("up").fail("expected an up vector not parallel to the view direction " +
+                    format_vec3(view) + " (from position to target), found " + format_vec3(c.up));
+  }
+}
+
+void read_light(ObjectReader& r, LightDescription& l) {
+  r.vec3("direction", kAnyRange, l.direction);
+  r.vec3("color", kNonNegative, l.color);
+  r.vec3("ambient", kNonNegative, l.ambient);
+  require_nonzero(l.direction, r.at("direction"), "light direction");
+}
+
+void read_cloud(ObjectReader& r, CloudDescription& c) {
+  r.string("name", c.name);
+  c.count = static_cast<std::uint32_t>(
+      read_integer(r.require("count", "the number of particles, an integer in [1, 10000000]"),
+                   r.at("count"), 1, 10'000'000));
+  r.number("radius", kPositive, c.radius);
+  r.number("density", kUnit, c.density);
+  r.unit_color("color", c.color);
+  r.object("box", [&](ObjectReader& box) {
+    box.vec3("min", kAnyRange, c.box_min);
+    box.vec3("max", kAnyRange, c.box_max);
+  });
+  r.integer("seed", 0, std::numeric_limits<std::uint64_t>::max(), c.seed);
+  r.vec3("drift", kAnyRange, c.drift);
+  r.number("jitter", kNonNegative, c.jitter);
+
+  static constexpr const char* kAxis[] = {"x", "y", "z"};
+  for (glm::length_t i = 0; i < 3; ++i) {
+    if (!(c.box_min[i] < c.box_max[i])) {
+      r.at("box").fail(std::string("expected \"min\" < \"max\" on every axis, found min.") +
+                       kAxis[i] + " = " + format_float(c.box_min[i]) + " >= max." + kAxis[i] +
+                       " = " + format_float(c.box_max[i]));
+    }
+  }
+}
+
+struct MeshKindName {
+  std::string_view name;
+  MeshKind kind;
+};
+constexpr MeshKindName kMeshKinds[] = {
+    {"ground_plane", MeshKind::ground_plane},
+    {"water_tower", MeshKind::water_tower},
+};
+
+void read_mesh(ObjectReader& r, MeshDescription& m) {
+  std::vector<std::string_view> names;
+  for (const MeshKindName& k : kMeshKinds) names.push_back(k.name);
+  const json& type = r.require("type", "the mesh type, one of " + quoted_list(names));
+  if (!type.is_string())
+    r.at("type").fail("expected a mesh type, one of " + quoted_list(names) + ", found " +
+                      describe(type));
+  const std::string name = type.get<std::string>();
+  const auto it = std::find_if(std::begin(kMeshKinds), std::end(kMeshKinds),
+                               [&](const MeshKindName& k) { return k.name == name; });
+  if (it == std::end(kMeshKinds)) {
+    std::string message =
+        "unknown mesh type " + in_quotes(name) + "; expected one of " + quoted_list(names);
+    const std::string hint = suggest(name, names);
+    if (hint.rfind("; did you mean", 0) == 0) message += hint;
+    r.at("type").fail(message);
+  }
+  m.kind = it->kind;
+  r.vec3("position", kAnyRange, m.position);
+  r.number("scale", kPositive, m.scale);
+  r.vec3("color", kUnit, m.color);
+}
+
+SceneDescription read_scene(ObjectReader& r) {
+  SceneDescription s;
+  r.string("name", s.name);
+  r.integer("seed", 0, std::numeric_limits<std::uint64_t>::max(), s.seed);
+  r.object("output", [&](ObjectReader& o) {
+    o.integer("width", 1, 8192, s.width);
+    o.integer("height", 1, 8192, s.height);
+    o.number("fps", kPositive, s.frames_per_second);
+  });
+  r.vec3("background", kNonNegative, s.background);
+  r.object("camera", [&](ObjectReader& c) { read_camera(c, s.camera); });
+  r.object("light", [&](ObjectReader& l) { read_light(l, s.light); });
+  r.object("footprint", [&](ObjectReader& f) {
+    f.integer("size", 2, 4096, s.footprint.size);
+    f.integer("intervals", 1, 100000, s.footprint.intervals);
+  });
+  r.objects("clouds", "an object describing a cloud",
+            [&](ObjectReader& c, std::size_t) { read_cloud(c, s.clouds.emplace_back()); });
+  r.objects("meshes", "an object describing a mesh",
+            [&](ObjectReader& m, std::size_t) { read_mesh(m, s.meshes.emplace_back()); });
+  r.finish();
+  return s;
+}
+
+}  // namespace
+
+SceneDescription parse_scene(const std::string& text, const std::string& file_name_for_messages) {
+  const std::string& file = file_name_for_messages;
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+    throw UserError(file, "", "expected a JSON object describing the scene, found an empty file");
+  }
+  JsonDocumentBuilder builder(text);
+  json::sax_parse(text, &builder, json::input_format_t::json, /*strict=*/true,
+                  /*ignore_comments=*/false);
+  if (builder.failed()) throw UserError(file, builder.error_place(), builder.error_message());
+
+  const json& root = builder.root();
+  if (!root.is_object()) {
+    throw UserError(
+        file, "", "expected a JSON object at the top level of the scene, found " + describe(root));
+  }
+  ObjectReader reader(root, Where{&file, ""});
+  SceneDescription scene = read_scene(reader);
+  scene.file = file;
+  return scene;
+}
+
+SceneDescription load_scene(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw UserError(path, "", "cannot open scene file: expected a file, found a directory");
+  }
+  errno = 0;
+  struct Closer {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
+  if (!file)
+    throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, n);
+  if (std::ferror(file.get())) {
+    throw UserError(path, "", std::string("cannot read scene file: ") + std::strerror(errno));
+  }
+  return parse_scene(text, path);
+}
+
+}  // namespace pyro

@@ -1,0 +1,34 @@
+#pragma once
+// Camera frames and projections (right-handed, camera looks down -z, GL clip depth [-1, 1]).
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+namespace pyro {
+
+struct CameraFrame {
+  glm::vec3 eye{0.0f};
+  glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit view direction
+  glm::vec3 right{1.0f, 0.0f, 0.0f};     // unit, camera x axis
+  glm::vec3 up{0.0f, 1.0f, 0.0f};        // unit, camera y axis
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};
+  glm::mat4 view_projection{1.0f};
+  float near = 0.1f, far = 100.0f;
+  float fov_y_rad = 0.785398f;
+  int width = 1, height = 1;
+};
+
+// Frame for an eye at `eye` looking at `target`. `up` must not be parallel to the view direction.
+CameraFrame make_camera_frame(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up,
+                              float fov_y_deg, float near, float far, int width, int height);
+
+// Distance of p in front of the eye along the view axis (view-space -z).
+inline float view_depth(const CameraFrame& f, const glm::vec3& p) {
+  return (p.x - f.eye.x) * f.forward.x + (p.y - f.eye.y) * f.forward.y +
+         (p.z - f.eye.z) * f.forward.z;
+}
+
+// Pixel coordinates (x right, y down, pixel centres at +0.5) of world point p.
+glm::vec2 project_to_pixels(const CameraFrame& f, const glm::vec3& p);
+
+}  // namespace pyro

@@ -1,0 +1,134 @@
+#include "engine/mesh/mesh_data.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+namespace pyro {
+
+void MeshData::append(const MeshData& other, const glm::vec3& offset, float scale) {
+  const auto base = static_cast<uint32_t>(positions.size());
+  for (const glm::vec3& p : other.positions) positions.push_back(p * scale + offset);
+  normals.insert(normals.end(), other.normals.begin(), other.normals.end());
+  for (uint32_t i : other.indices) indices.push_back(base + i);
+}
+
+namespace {
+
+void add_quad(MeshData& m, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+              const glm::vec3& d) {
+  // a b c d counter-clockwise seen from the side the normal points to.
+  const glm::vec3 n = glm::normalize(glm::cross(b - a, d - a));
+  const auto base = static_cast<uint32_t>(m.positions.size());
+  for (const glm::vec3& p : {a, b, c, d}) {
+    m.positions.push_back(p);
+    m.normals.push_back(n);
+  }
+  for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
+}
+
+}  // namespace
+
+MeshData make_ground_plane(float h) {
+  MeshData m;
+  add_quad(m, {-h, 0, h}, {h, 0, h}, {h, 0, -h}, {-h, 0, -h});
+  return m;
+}
+
+MeshData make_box(const glm::vec3& lo, const glm::vec3& hi) {
+  MeshData m;
+  const glm::vec3 p000{lo.x, lo.y, lo.z}, p100{hi.x, lo.y, lo.z}, p010{lo.x, hi.y, lo.z},
+      p110{hi.x, hi.y, lo.z}, p001{lo.x, lo.y, hi.z}, p101{hi.x, lo.y, hi.z},
+      p011{lo.x, hi.y, hi.z}, p111{hi.x, hi.y, hi.z};
+  add_quad(m, p001, p101, p111, p011);  // +z
+  add_quad(m, p100, p000, p010, p110);  // -z
+  add_quad(m, p101, p100, p110, p111);  // +x
+  add_quad(m, p000, p001, p011, p010);  // -x
+  add_quad(m, p011, p111, p110, p010);  // +y
+  add_quad(m, p000, p100, p101, p001);  // -y
+  return m;
+}
+
+MeshData make_cylinder(float r, float y0, float y1, int segments) {
+  MeshData m;
+  const float step = 2.0f * std::numbers::pi_v<float> / segments;
+  for (int s = 0; s < segments; ++s) {
+    const float a0 = s * step, a1 = (s + 1) * step;
+    const glm::vec3 n0{std::cos(a0), 0, -std::sin(a0)}, n1{std::cos(a1), 0, -std::sin(a1)};
+    const auto base = static_cast<uint32_t>(m.positions.size());
+    m.positions.insert(m.positions.end(), {n0 * r + glm::vec3(0, y0, 0), n1 * r + glm::vec3(0, y0, 0),
+                                           n1 * r + glm::vec3(0, y1, 0), n0 * r + glm::vec3(0, y1, 0)});
+    m.normals.insert(m.normals.end(), {n0, n1, n1, n0});
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
+    // caps
+    for (int cap = 0; cap < 2; ++cap) {
+      const float y = cap ? y1 : y0;
+      const glm::vec3 n{0, cap ? 1.0f : -1.0f, 0};
+      const auto b = static_cast<uint32_t>(m.positions.size());
+      m.positions.insert(m.positions.end(), {glm::vec3(0, y, 0), n0 * r + glm::vec3(0, y, 0),
+                                             n1 * r + glm::vec3(0, y, 0)});
+      m.normals.insert(m.normals.end(), {n, n, n});
+      if (cap) m.indices.insert(m.indices.end(), {b, b + 1, b + 2});
+      else m.indices.insert(m.indices.end(), {b, b + 2, b + 1});
+    }
+  }
+  return m;
+}
+
+MeshData make_cone(float r, float y0, float y1, int segments) {
+  MeshData m;
+  const float step = 2.0f * std::numbers::pi_v<float> / segments;
+  const float slope = r / (y1 - y0);
+  for (int s = 0; s < segments; ++s) {
+    const float a0 = s * step, a1 = (s + 1) * step, am = (s + 0.5f) * step;
+    const glm::vec3 d0{std::cos(a0), 0, -std::sin(a0)}, d1{std::cos(a1), 0, -std::sin(a1)},
+        dm{std::cos(am), 0, -std::sin(am)};
+    auto normal = [&](const glm::vec3& d) { return glm::normalize(glm::vec3(d.x, slope, d.z)); };
+    const auto base = static_cast<uint32_t>(m.positions.size());
+    m.positions.insert(m.positions.end(), {d0 * r + glm::vec3(0, y0, 0), d1 * r + glm::vec3(0, y0, 0),
+                                           glm::vec3(0, y1, 0)});
+    m.normals.insert(m.normals.end(), {normal(d0), normal(d1), normal(dm)});
+    m.indices.insert(m.indices.end(), {base, base + 1, base + 2});
+    const auto b = static_cast<uint32_t>(m.positions.size());
+    m.positions.insert(m.positions.end(), {glm::vec3(0, y0, 0), d0 * r + glm::vec3(0, y0, 0),
+                                           d1 * r + glm::vec3(0, y0, 0)});
+    m.normals.insert(m.normals.end(), 3, glm::vec3(0, -1, 0));
+    m.indices.insert(m.indices.end(), {b, b + 2, b + 1});
+  }
+  return m;
+}
+
+MeshData make_water_tower() {
+  MeshData m;
+  const float leg = 0.09f, foot = 0.95f, head = 0.7f, top = 4.0f;
+  // Four slanted legs, each built from short boxes stacked along the slant.
+  const int pieces = 8;
+  for (int sx : {-1, 1}) {
+    for (int sz : {-1, 1}) {
+      for (int k = 0; k < pieces; ++k) {
+        const float t0 = static_cast<float>(k) / pieces, t1 = static_cast<float>(k + 1) / pieces;
+        const float o = foot + (head - foot) * (t0 + t1) / 2.0f;
+        const glm::vec3 c{sx * o, 0, sz * o};
+        m.append(make_box({c.x - leg, top * t0, c.z - leg}, {c.x + leg, top * t1, c.z + leg}));
+      }
+    }
+  }
+  // Horizontal braces between the legs at two heights.
+  for (float y : {1.4f, 2.8f}) {
+    const float o = foot + (head - foot) * y / top;
+    const float t = 0.045f;
+    m.append(make_box({-o, y - t, -o - t}, {o, y + t, -o + t}));
+    m.append(make_box({-o, y - t, o - t}, {o, y + t, o + t}));
+    m.append(make_box({-o - t, y - t, -o}, {-o + t, y + t, o}));
+    m.append(make_box({o - t, y - t, -o}, {o + t, y + t, o}));
+  }
+  m.append(make_cylinder(0.16f, 0.0f, top, 16));           // riser pipe
+  m.append(make_cylinder(1.05f, top - 0.1f, top + 0.05f, 40));  // balcony floor
+  m.append(make_cylinder(0.95f, top, top + 1.5f, 40));      // tank
+  m.append(make_cone(1.05f, top + 1.5f, top + 2.3f, 40));   // roof
+  m.append(make_cylinder(0.05f, top + 2.3f, top + 2.6f, 8)); // finial
+  return m;
+}
+
+}  // namespace pyro

@@ -1,0 +1,36 @@
+#pragma once
+// Triangle meshes on the CPU: positions and normals per vertex, three indices per triangle.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace pyro {
+
+struct MeshData {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
+  std::vector<uint32_t> indices;
+
+  size_t triangle_count() const { return indices.size() / 3; }
+  // Appends `other` moved by `offset` and scaled by `scale`.
+  void append(const MeshData& other, const glm::vec3& offset = glm::vec3(0.0f), float scale = 1.0f);
+};
+
+// A square in the y = 0 plane with half side `half_size`, normal +y.
+MeshData make_ground_plane(float half_size);
+
+// A box between corners lo and hi, with flat faces.
+MeshData make_box(const glm::vec3& lo, const glm::vec3& hi);
+
+// A capped cylinder about the y axis from y0 to y1 (smooth sides).
+MeshData make_cylinder(float radius, float y0, float y1, int segments);
+
+// A cone about the y axis with its base (radius) at y0 and apex at y1.
+MeshData make_cone(float radius, float y0, float y1, int segments);
+
+// The water tower of the paper's figures, standing on y = 0 and about 6.3 units tall: four
+// legs with cross braces, a central pipe, a cylindrical tank and a conical roof.
+MeshData make_water_tower();
+
+}  // namespace pyro

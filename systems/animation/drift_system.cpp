@@ -1,0 +1,61 @@
+#include "systems/animation/drift_system.h"
+
+#include <cmath>
+
+#include <glm/trigonometric.hpp>
+
+#include "components/camera.h"
+#include "components/camera_orbit.h"
+#include "components/cloud_volume.h"
+#include "components/frame_clock.h"
+#include "components/particle_set.h"
+#include "engine/ecs/world.h"
+
+namespace pyro {
+
+namespace {
+inline float wrap(float v, float lo, float extent) {
+  // Periodic wrap into [lo, lo + extent).
+  float t = (v - lo) / extent;
+  t -= std::floor(t);
+  return lo + t * extent;
+}
+}  // namespace
+
+void drift_particles(const CloudVolume& c, ParticleSet& set, float dt) {
+  ParticlePool& p = set.pool;
+  const size_t n = p.size();
+  const glm::vec3 extent = c.box_max - c.box_min;
+  for (size_t i = 0; i < n; ++i) {
+    p.px[i] = wrap(p.px[i] + p.vx[i] * dt, c.box_min.x, extent.x);
+    p.py[i] = wrap(p.py[i] + p.vy[i] * dt, c.box_min.y, extent.y);
+    p.pz[i] = wrap(p.pz[i] + p.vz[i] * dt, c.box_min.z, extent.z);
+  }
+}
+
+ecs::SystemDesc drift_system() {
+  return {"animation", ecs::Phase::simulate, ecs::access<CloudVolume, FrameClock>(),
+          ecs::access<ParticleSet>(), [](ecs::World& world) {
+            const FrameClock& clock = world.resource<FrameClock>();
+            if (clock.frame == 0) return;  // frame 0 shows the emitted state
+            const float dt = clock.dt;
+            world.each<CloudVolume, ParticleSet>([dt](CloudVolume& c, ParticleSet& s) {
+              if (c.drift != glm::vec3(0.0f) || c.jitter > 0.0f) drift_particles(c, s, dt);
+            });
+          }};
+}
+
+ecs::SystemDesc camera_orbit_system() {
+  return {"camera_orbit", ecs::Phase::simulate, ecs::access<CameraOrbit, FrameClock>(),
+          ecs::access<Camera>(), [](ecs::World& world) {
+            const double t = world.resource<FrameClock>().time();
+            world.each<Camera, CameraOrbit>([t](Camera& cam, CameraOrbit& orbit) {
+              const float a = glm::radians(static_cast<float>(orbit.deg_per_second * t));
+              const glm::vec3 d = orbit.start_position - cam.target;
+              const float c = std::cos(a), s = std::sin(a);
+              cam.position = cam.target + glm::vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
+            });
+          }};
+}
+
+}  // namespace pyro

@@ -1,0 +1,77 @@
+#include "systems/mesh_render/mesh_renderer.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "engine/gpu/shader_program.h"
+
+namespace pyro {
+
+MeshRenderer::MeshRenderer() : program_(gpu::load_program("mesh.vert", "mesh.frag")) {}
+
+const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(MeshKind kind) {
+  auto it = meshes_.find(kind);
+  if (it != meshes_.end()) return it->second;
+  // Unit meshes; the instance's scale and position are applied in the vertex shader.
+  const MeshData data = kind == MeshKind::ground_plane ? make_ground_plane(1.0f) : make_water_tower();
+  std::vector<float> interleaved;
+  interleaved.reserve(data.positions.size() * 6);
+  for (size_t i = 0; i < data.positions.size(); ++i) {
+    for (int k = 0; k < 3; ++k) interleaved.push_back(data.positions[i][k]);
+    for (int k = 0; k < 3; ++k) interleaved.push_back(data.normals[i][k]);
+  }
+  GpuMesh g;
+  g.vertices = gpu::make_buffer();
+  glNamedBufferStorage(g.vertices.get(), static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
+                       interleaved.data(), 0);
+  g.indices = gpu::make_buffer();
+  glNamedBufferStorage(g.indices.get(), static_cast<GLsizeiptr>(data.indices.size() * sizeof(uint32_t)),
+                       data.indices.data(), 0);
+  g.index_count = static_cast<GLsizei>(data.indices.size());
+  g.vao = gpu::make_vertex_array();
+  const GLuint vao = g.vao.get();
+  glVertexArrayVertexBuffer(vao, 0, g.vertices.get(), 0, 6 * sizeof(float));
+  glVertexArrayElementBuffer(vao, g.indices.get());
+  glEnableVertexArrayAttrib(vao, 0);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vao, 0, 0);
+  glEnableVertexArrayAttrib(vao, 1);
+  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
+  glVertexArrayAttribBinding(vao, 1, 0);
+  return meshes_.emplace(kind, std::move(g)).first->second;
+}
+
+void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
+                        const RenderSettings& settings, const gpu::RenderTarget& target) {
+  target.bind();
+  glClearColor(settings.background.x, settings.background.y, settings.background.z, 1.0f);
+  glClearDepth(1.0);
+  glDepthMask(GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (instances.empty()) return;
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  glUseProgram(program_.get());
+  glUniformMatrix4fv(gpu::uniform_location(program_, "u_view_projection"), 1, GL_FALSE,
+                     glm::value_ptr(frame.view_projection));
+  const glm::vec3 light = glm::normalize(settings.light_direction);
+  glUniform3fv(gpu::uniform_location(program_, "u_light_direction"), 1, glm::value_ptr(light));
+  glUniform3fv(gpu::uniform_location(program_, "u_light_color"), 1, glm::value_ptr(settings.light_color));
+  glUniform3fv(gpu::uniform_location(program_, "u_ambient"), 1, glm::value_ptr(settings.ambient));
+  const GLint offset = gpu::uniform_location(program_, "u_offset");
+  const GLint scale = gpu::uniform_location(program_, "u_scale");
+  const GLint albedo = gpu::uniform_location(program_, "u_albedo");
+  for (const MeshInstance& m : instances) {
+    const GpuMesh& g = mesh_for(m.kind);
+    glUniform3fv(offset, 1, glm::value_ptr(m.position));
+    glUniform1f(scale, m.scale);
+    glUniform3fv(albedo, 1, glm::value_ptr(m.color));
+    glBindVertexArray(g.vao.get());
+    glDrawElements(GL_TRIANGLES, g.index_count, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindVertexArray(0);
+}
+
+}  // namespace pyro

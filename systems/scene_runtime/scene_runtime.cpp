@@ -1,0 +1,117 @@
+#include "systems/scene_runtime/scene_runtime.h"
+
+#include <stdexcept>
+
+#include "components/camera.h"
+#include "components/camera_orbit.h"
+#include "components/cloud_volume.h"
+#include "components/frame_clock.h"
+#include "components/frame_image.h"
+#include "components/gpu_frame.h"
+#include "components/mesh_instance.h"
+#include "components/particle_set.h"
+#include "components/render_settings.h"
+#include "engine/core/rng.h"
+#include "engine/io/png_file.h"
+#include "engine/math/footprint.h"
+#include "systems/animation/drift_system.h"
+#include "systems/billboard_render/billboard_render_system.h"
+#include "systems/billboard_render/billboard_renderer.h"
+#include "systems/camera/camera_system.h"
+#include "systems/emitter/cloud_emitter_system.h"
+#include "systems/mesh_render/mesh_render_system.h"
+#include "systems/output/frame_readback_system.h"
+#include "systems/sorting/depth_sort.h"
+
+namespace pyro {
+
+gpu::HeadlessContext& shared_headless_context() {
+  static gpu::HeadlessContext context;
+  return context;
+}
+
+SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& options)
+    : scene_(scene) {
+  shared_headless_context().make_current();
+
+  RenderSettings settings;
+  settings.width = options.width_override > 0 ? options.width_override : scene.width;
+  settings.height = options.height_override > 0 ? options.height_override : scene.height;
+  settings.background = scene.background;
+  settings.light_direction = scene.light.direction;
+  settings.light_color = scene.light.color;
+  settings.ambient = scene.light.ambient;
+  world_.set_resource<RenderSettings>(settings);
+  FrameClock clock;
+  clock.dt = 1.0f / scene.frames_per_second;
+  world_.set_resource<FrameClock>(clock);
+
+  const ecs::Entity camera = world_.create();
+  Camera& cam = world_.emplace<Camera>(camera);
+  cam.position = scene.camera.position;
+  cam.target = scene.camera.target;
+  cam.up = scene.camera.up;
+  cam.fov_y_deg = scene.camera.fov_y_deg;
+  cam.near = scene.camera.near;
+  cam.far = scene.camera.far;
+  if (scene.camera.orbit_deg_per_second != 0.0f)
+    world_.emplace<CameraOrbit>(camera, CameraOrbit{scene.camera.position, scene.camera.orbit_deg_per_second});
+
+  for (size_t k = 0; k < scene.clouds.size(); ++k) {
+    const CloudDescription& d = scene.clouds[k];
+    const ecs::Entity e = world_.create();
+    CloudVolume c;
+    c.box_min = d.box_min;
+    c.box_max = d.box_max;
+    c.count = d.count;
+    c.radius = d.radius;
+    c.density = d.density;
+    c.color = d.color;
+    c.seed = mix_seeds(scene.seed, d.seed * 1000003ull + k);
+    c.drift = d.drift;
+    c.jitter = d.jitter;
+    world_.emplace<CloudVolume>(e, c);
+    world_.emplace<ParticleSet>(e, ParticleSet{ParticlePool(d.count)});
+  }
+  for (const MeshDescription& m : scene.meshes) {
+    world_.emplace<MeshInstance>(world_.create(), MeshInstance{m.kind, m.position, m.scale, m.color});
+  }
+
+  GpuFrame frame;
+  frame.target = std::make_unique<gpu::RenderTarget>(settings.width, settings.height);
+  world_.set_resource<GpuFrame>(std::move(frame));
+  world_.set_resource<BillboardRenderer>(
+      make_footprint_table(scene.footprint.size, scene.footprint.intervals));
+
+  schedule_.add(cloud_emitter_system());
+  schedule_.add(drift_system());
+  schedule_.add(camera_orbit_system());
+  schedule_.add(depth_sort_system());
+  schedule_.add(camera_system());
+  schedule_.add(mesh_render_system());
+  schedule_.add(billboard_render_system());
+  if (options.readback) schedule_.add(frame_readback_system());
+}
+
+void SceneRuntime::step() {
+  shared_headless_context().make_current();
+  schedule_.run_frame(world_);
+  world_.resource<FrameClock>().frame += 1;
+}
+
+uint64_t SceneRuntime::frame() const {
+  return const_cast<ecs::World&>(world_).resource<FrameClock>().frame;
+}
+
+const FrameImage& SceneRuntime::image() {
+  const FrameImage* img = world_.try_resource<FrameImage>();
+  if (!img || !img->valid) throw std::logic_error("no frame has been read back yet");
+  return *img;
+}
+
+void SceneRuntime::write_png(const std::string& path) {
+  const FrameImage& img = image();
+  pyro::write_png(path, img.width, img.height, 3, linear_rgba_to_srgb8(img.rgba, img.width, img.height));
+}
+
+}  // namespace pyro

@@ -1,0 +1,40 @@
+#pragma once
+// Sort phase: gathers every particle of every ParticleSet into the frame's DrawList, back to
+// front along the camera's view axis (billboards facing the viewplane are composited in view
+// depth order). The order is a strict total order: depth descending, then the set's entity
+// index, then the particle's id, so equal depths never swap between frames or runs.
+#include <cstdint>
+#include <vector>
+
+#include "components/draw_list.h"
+#include "engine/ecs/schedule.h"
+#include "engine/ecs/world.h"
+#include "engine/math/camera_math.h"
+
+namespace pyro {
+
+struct SortKey {
+  float depth;
+  uint32_t set;       // tie-break 1: the owning entity's index
+  uint32_t id;        // tie-break 2: the particle's id within its set
+  uint32_t particle;  // where to read it from
+};
+
+// Strict weak order: farther first, then set, then id.
+inline bool back_to_front(const SortKey& a, const SortKey& b) {
+  if (a.depth != b.depth) return a.depth > b.depth;
+  if (a.set != b.set) return a.set < b.set;
+  return a.id < b.id;
+}
+
+// Sorts keys in place (std::sort with the total order above: the result does not depend on
+// the input order).
+void sort_back_to_front(std::vector<SortKey>& keys);
+
+// Fills `list` from every ParticleSet in the world, sorted for the given view.
+void build_draw_list(ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
+                     DrawList& list);
+
+ecs::SystemDesc depth_sort_system();
+
+}  // namespace pyro

@@ -1,0 +1,166 @@
+#include "engine/ecs/schedule.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/ecs/world.h"
+
+namespace {
+
+using pyro::ecs::access;
+using pyro::ecs::Phase;
+using pyro::ecs::Schedule;
+using pyro::ecs::SystemDesc;
+using pyro::ecs::World;
+
+struct Position {
+  float x = 0;
+};
+struct Velocity {
+  float x = 0;
+};
+struct Image {
+  int w = 0;
+};
+
+// A system that appends its name to a shared log, so the run order is observable.
+SystemDesc logger(std::string name, Phase phase, std::vector<std::string>* log,
+                  std::vector<std::string> reads = {}, std::vector<std::string> writes = {}) {
+  SystemDesc s;
+  s.name = name;
+  s.phase = phase;
+  s.reads = std::move(reads);
+  s.writes = std::move(writes);
+  s.run = [log, name](World&) { log->push_back(name); };
+  return s;
+}
+
+TEST(Schedule, PhaseNames) {
+  EXPECT_STREQ(pyro::ecs::phase_name(Phase::spawn), "spawn");
+  EXPECT_STREQ(pyro::ecs::phase_name(Phase::simulate), "simulate");
+  EXPECT_STREQ(pyro::ecs::phase_name(Phase::sort), "sort");
+  EXPECT_STREQ(pyro::ecs::phase_name(Phase::camera), "camera");
+  EXPECT_STREQ(pyro::ecs::phase_name(Phase::render), "render");
+  EXPECT_STREQ(pyro::ecs::phase_name(Phase::composite), "composite");
+  EXPECT_STREQ(pyro::ecs::phase_name(Phase::output), "output");
+}
+
+TEST(Schedule, PhaseOrderThenInsertionOrder) {
+  std::vector<std::string> log;
+  Schedule s;
+  s.add(logger("write_png", Phase::output, &log));
+  s.add(logger("draw_a", Phase::render, &log));
+  s.add(logger("emit", Phase::spawn, &log));
+  s.add(logger("draw_b", Phase::render, &log));
+  s.add(logger("blend", Phase::composite, &log));
+  s.add(logger("move", Phase::simulate, &log));
+  s.add(logger("depth_sort", Phase::sort, &log));
+  s.add(logger("eyes", Phase::camera, &log));
+  s.add(logger("draw_c", Phase::render, &log));
+  s.add(logger("age", Phase::simulate, &log));
+  s.add(logger("emit_late", Phase::spawn, &log));
+
+  const std::vector<std::string> expected{"emit",       "emit_late", "move",     "age",
+                                          "depth_sort", "eyes",      "draw_a",   "draw_b",
+                                          "draw_c",     "blend",     "write_png"};
+  EXPECT_EQ(s.order(), expected);
+  World w;
+  s.run_frame(w);
+  EXPECT_EQ(log, expected);
+  s.run_frame(w);
+  ASSERT_EQ(log.size(), 2 * expected.size());
+  EXPECT_TRUE(std::equal(expected.begin(), expected.end(), log.begin() + 11));
+  ASSERT_EQ(s.stats().size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(s.stats()[i].name, expected[i]);
+}
+
+TEST(Schedule, SystemsSeeTheWorld) {
+  Schedule s;
+  s.add({"spawn", Phase::spawn, {}, access<Position, Velocity>(), [](World& w) {
+           const auto e = w.create();
+           w.emplace<Position>(e, 0.0f);
+           w.emplace<Velocity>(e, 2.0f);
+         }});
+  s.add({"move", Phase::simulate, access<Velocity>(), access<Position>(), [](World& w) {
+           w.each<Position, Velocity>([](Position& p, Velocity& v) { p.x += v.x; });
+         }});
+  World w;
+  for (int i = 0; i < 3; ++i) s.run_frame(w);
+  // Entities spawned in frames 1, 2, 3 have moved 3, 2, 1 times.
+  float sum = 0;
+  w.each<Position>([&](Position& p) { sum += p.x; });
+  EXPECT_EQ(sum, 2.0f * (3 + 2 + 1));
+}
+
+TEST(Schedule, TimingsEveryFrame) {
+  Schedule s;
+  s.add({"busy", Phase::simulate, {}, {}, [](World&) {
+           // Spin rather than sleep: the time must be spent inside the system.
+           const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(300);
+           while (std::chrono::steady_clock::now() < until) {
+           }
+         }});
+  s.add({"idle", Phase::render, {}, {}, [](World&) {}});
+  World w;
+  double sum_last = 0;
+  for (int f = 1; f <= 5; ++f) {
+    s.run_frame(w);
+    const auto& busy = s.stats()[0];
+    EXPECT_EQ(busy.name, "busy");
+    EXPECT_EQ(busy.frames, uint64_t(f));
+    EXPECT_GE(busy.last_ms, 0.3);
+    EXPECT_GE(busy.total_ms, busy.last_ms);
+    EXPECT_GE(busy.max_ms, busy.last_ms);
+    sum_last += busy.last_ms;
+    EXPECT_NEAR(busy.total_ms, sum_last, 1e-9);
+    EXPECT_NEAR(busy.mean_ms(), sum_last / f, 1e-9);
+    EXPECT_EQ(s.stats()[1].frames, uint64_t(f));
+    EXPECT_GE(s.stats()[1].last_ms, 0.0);
+  }
+  EXPECT_EQ(s.frames(), 5u);
+  EXPECT_EQ(pyro::ecs::SystemStats{}.mean_ms(), 0.0);
+}
+
+TEST(Schedule, RejectsBadSystems) {
+  Schedule s;
+  std::vector<std::string> log;
+  s.add(logger("move", Phase::simulate, &log));
+  EXPECT_THROW(s.add(logger("move", Phase::render, &log)), std::invalid_argument);
+  EXPECT_THROW(s.add(logger("", Phase::render, &log)), std::invalid_argument);
+  SystemDesc empty;
+  empty.name = "nothing";
+  EXPECT_THROW(s.add(empty), std::invalid_argument);
+  EXPECT_EQ(s.size(), 1u);
+  EXPECT_EQ(s.stats().size(), 1u);
+}
+
+TEST(Schedule, ConflictsWithinAPhase) {
+  std::vector<std::string> log;
+  Schedule s;
+  const auto pos = access<Position>();
+  const auto vel = access<Velocity>();
+  EXPECT_EQ((access<Position, Velocity>().size()), 2u);
+  EXPECT_NE(pos[0], vel[0]);
+  s.add(logger("integrate", Phase::simulate, &log, vel, pos));       // writes Position
+  s.add(logger("collide", Phase::simulate, &log, pos, vel));         // reads P, writes V
+  s.add(logger("age", Phase::simulate, &log, {}, access<Image>()));  // disjoint
+  s.add(logger("bounds", Phase::simulate, &log, pos, {}));           // reads P
+  s.add(logger("draw", Phase::render, &log, pos, access<Image>()));  // other phase
+  s.add(logger("blur", Phase::render, &log, access<Image>(), access<Image>()));
+  s.add(logger("stats", Phase::output, &log, pos, {}));  // readers never clash
+  s.add(logger("hud", Phase::output, &log, pos, {}));
+  s.add(logger("teleport", Phase::output, &log, {}, pos));  // later writer vs earlier readers
+
+  const std::vector<std::pair<std::string, std::string>> expected{{"integrate", "collide"},
+                                                                  {"integrate", "bounds"},
+                                                                  {"draw", "blur"},
+                                                                  {"stats", "teleport"},
+                                                                  {"hud", "teleport"}};
+  EXPECT_EQ(s.conflicts(), expected);
+}
+
+}  // namespace

@@ -1,0 +1,25 @@
+#pragma once
+// Paths the tests need: the pyro binary, the content folder, a scratch folder.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/core/content_path.h"
+
+namespace pyro::test {
+
+inline std::string pyro_binary() { return PYRO_BINARY; }
+inline std::string scene_path(const std::string& name) { return content_path("scenes/" + name); }
+
+// A fresh empty folder under the system's temp folder, unique to this test.
+std::filesystem::path scratch_dir(const std::string& name);
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+// Runs `pyro` with the given arguments (each shell-quoted here).
+CommandResult run_pyro(const std::vector<std::string>& args);
+
+}  // namespace pyro::test

@@ -1,0 +1,11 @@
+#pragma once
+// The `pyro` subcommands. Each registers itself on the CLI11 app and runs when chosen.
+#include <CLI/CLI.hpp>
+
+namespace pyro::cli {
+
+void add_render_command(CLI::App& app);
+void add_analyze_commands(CLI::App& app);
+void add_bench_commands(CLI::App& app);
+
+}  // namespace pyro::cli
