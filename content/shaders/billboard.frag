@@ -3,13 +3,12 @@
 // the kernel texture holds the scaled footprint table, the colour is the particle's own.
 // Output is premultiplied; blending is (ONE, ONE_MINUS_SRC_ALPHA), back to front.
 in vec2 v_texcoord;
-flat in vec4 v_color_density;
+flat in vec4 v_premultiplied;
 
 layout(binding = 0) uniform sampler2D u_kernel;
 
 layout(location = 0) out vec4 o_color;
 
 void main() {
-  float alpha = v_color_density.a * textureLod(u_kernel, v_texcoord, 0.0).r;
-  o_color = vec4(v_color_density.rgb * alpha, alpha);
+  o_color = v_premultiplied * textureLod(u_kernel, v_texcoord, 0.0).r;
 }

@@ -13,13 +13,13 @@ uniform vec3 u_up;
 uniform vec2 u_texcoord_bias_scale;
 
 out vec2 v_texcoord;
-flat out vec4 v_color_density;  // one value per billboard: not interpolated
+flat out vec4 v_premultiplied;  // (rgb * rho, rho): one value per billboard, not interpolated
 
 void main() {
   vec2 corner = vec2(float(gl_VertexID & 1), float((gl_VertexID >> 1) & 1)) * 2.0 - 1.0;
   vec3 world = a_center_radius.xyz +
                (u_right * corner.x + u_up * corner.y) * a_center_radius.w;
   v_texcoord = u_texcoord_bias_scale.x + (corner * 0.5 + 0.5) * u_texcoord_bias_scale.y;
-  v_color_density = a_color_density;
+  v_premultiplied = vec4(a_color_density.rgb * a_color_density.a, a_color_density.a);
   gl_Position = u_view_projection * vec4(world, 1.0);
 }
