@@ -13,4 +13,10 @@ struct DrawList {
   size_t size() const { return center_radius.size(); }
 };
 
+// Resource: one DrawList per rendered view (billboards facing the viewpoint are ordered by
+// distance to each eye; facing the viewplane, every eye shares one order).
+struct EyeDrawLists {
+  std::vector<DrawList> eyes;
+};
+
 }  // namespace pyro

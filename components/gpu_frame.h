@@ -1,13 +1,23 @@
 #pragma once
-// Resource: the frame's offscreen target, shared by the render passes.
+// Resource: the frame's offscreen targets, shared by the render and composite passes.
+// Per rendered view: the scene target (opaque geometry, then particles, linear RGBA16F with
+// depth) and, when particles render at reduced resolution, their layer. One output target
+// holds the composed sRGB image (two views side by side for side-by-side and left-right).
 #include <memory>
+#include <vector>
 
 #include "engine/gpu/render_target.h"
 
 namespace pyro {
 
+struct EyeTargets {
+  std::unique_ptr<gpu::RenderTarget> scene;
+  std::unique_ptr<gpu::RenderTarget> layer;  // null when the layer scale is 1
+};
+
 struct GpuFrame {
-  std::unique_ptr<gpu::RenderTarget> target;
+  std::vector<EyeTargets> eyes;
+  std::unique_ptr<gpu::RenderTarget> output;  // GL_SRGB8_ALPHA8
 };
 
 }  // namespace pyro

@@ -2,7 +2,22 @@
 // Resource: what the render systems need from the scene that is not an entity.
 #include <glm/vec3.hpp>
 
+#include "engine/io/scene_description.h"
+
 namespace pyro {
+
+// How the views of a frame become images (pyro render --stereo).
+enum class StereoMode {
+  mono,                  // one view, one image
+  left_right,            // two views, two images per frame (_left, _right)
+  side_by_side,          // two views in one image, left eye on the left (parallel viewing)
+  side_by_side_crossed,  // right eye on the left (cross-eyed viewing)
+  anaglyph,              // red-cyan, Dubois least-squares matrices
+  anaglyph_color,        // red-cyan, colour anaglyph
+  anaglyph_half_color,   // red-cyan, half-colour anaglyph
+};
+
+inline bool is_stereo(StereoMode m) { return m != StereoMode::mono; }
 
 struct RenderSettings {
   int width = 800;
@@ -11,6 +26,9 @@ struct RenderSettings {
   glm::vec3 light_direction{-0.4f, -1.0f, -0.3f};
   glm::vec3 light_color{1.0f, 1.0f, 1.0f};
   glm::vec3 ambient{0.35f, 0.38f, 0.45f};
+  BillboardAlignment alignment = BillboardAlignment::viewplane;
+  float layer_scale = 1.0f;  // particle layer size as a fraction of the frame
+  StereoMode stereo_mode = StereoMode::mono;
 };
 
 }  // namespace pyro

@@ -1,13 +1,19 @@
 #version 450 core
-// Instanced particle billboards facing the viewplane (Johnson & McAllister 2005, 2.2.1): every
-// billboard of an eye shares the camera's right and up axes. One instance per particle; the four
-// corners come from gl_VertexID (triangle strip).
+// Instanced particle billboards (Johnson & McAllister 2005, 2.2.1 and section 3). One instance
+// per particle; the four corners come from gl_VertexID (triangle strip).
+//  - facing the viewplane: every billboard of an eye shares the camera's right and up axes;
+//  - facing the viewpoint: each billboard turns to the eye. Its right axis is the camera's up
+//    crossed with the direction to the eye, u = up x (V - C) normalised (paper section 3.1),
+//    and its up axis completes the frame. The same construction is in
+//    engine/math/billboard_alignment (viewpoint_billboard_basis) and tested there.
 layout(location = 0) in vec4 a_center_radius;  // world xyz, radius
 layout(location = 1) in vec4 a_color_density;  // linear rgb, density rho
 
 uniform mat4 u_view_projection;
 uniform vec3 u_right;
 uniform vec3 u_up;
+uniform vec3 u_eye;
+uniform int u_face_viewpoint;
 // Maps the billboard's edge-to-edge coordinate s in [0, 1] to the texture coordinate of the
 // footprint table's first and last nodes (engine/math/footprint.h, footprint_texcoord).
 uniform vec2 u_texcoord_bias_scale;
@@ -17,8 +23,20 @@ flat out vec4 v_premultiplied;  // (rgb * rho, rho): one value per billboard, no
 
 void main() {
   vec2 corner = vec2(float(gl_VertexID & 1), float((gl_VertexID >> 1) & 1)) * 2.0 - 1.0;
-  vec3 world = a_center_radius.xyz +
-               (u_right * corner.x + u_up * corner.y) * a_center_radius.w;
+  vec3 center = a_center_radius.xyz;
+  vec3 right = u_right;
+  vec3 up = u_up;
+  if (u_face_viewpoint != 0) {
+    vec3 to_eye = u_eye - center;
+    vec3 r = cross(u_up, to_eye);
+    float len = length(r);
+    // A particle at the eye, or straight above or below it, keeps the viewplane axes.
+    if (len > 1e-6 * max(length(to_eye), 1e-30)) {
+      right = r / len;
+      up = normalize(cross(to_eye, right));
+    }
+  }
+  vec3 world = center + (right * corner.x + up * corner.y) * a_center_radius.w;
   v_texcoord = u_texcoord_bias_scale.x + (corner * 0.5 + 0.5) * u_texcoord_bias_scale.y;
   v_premultiplied = vec4(a_color_density.rgb * a_color_density.a, a_color_density.a);
   gl_Position = u_view_projection * vec4(world, 1.0);

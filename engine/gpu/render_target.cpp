@@ -55,6 +55,15 @@ std::vector<float> RenderTarget::read_rgba() const {
   return pixels;
 }
 
+std::vector<uint8_t> RenderTarget::read_rgba8() const {
+  std::vector<uint8_t> pixels(static_cast<size_t>(width_) * height_ * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(color_.get(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    static_cast<GLsizei>(pixels.size()), pixels.data());
+  flip_rows(pixels, width_, height_, 4);
+  return pixels;
+}
+
 std::vector<float> RenderTarget::read_depth() const {
   std::vector<float> depth(static_cast<size_t>(width_) * height_);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -1,6 +1,7 @@
 #pragma once
 // An offscreen framebuffer: a floating-point colour attachment (RGBA16F by default, linear
 // radiance, premultiplied alpha) and a 32-bit float depth attachment.
+#include <cstdint>
 #include <vector>
 
 #include "engine/gpu/gl_objects.h"
@@ -20,6 +21,8 @@ class RenderTarget {
   void bind() const;
   // RGBA floats, row 0 at the top of the image (GL's bottom-up rows are flipped).
   std::vector<float> read_rgba() const;
+  // RGBA bytes as stored (sRGB-encoded for an sRGB target), row 0 at the top.
+  std::vector<uint8_t> read_rgba8() const;
   // Depth values in [0, 1], row 0 at the top.
   std::vector<float> read_depth() const;
 

@@ -18,6 +18,20 @@ struct CameraDescription {
   float far = 200.0f;       // > near
   // Optional scripted motion: the camera orbits `target` about the vertical axis.
   float orbit_deg_per_second = 0.0f;
+  // Stereo pair (used when a stereo output mode is chosen): off-axis, parallel view axes.
+  float interocular = 0.065f;          // world units between the eyes, >= 0
+  float zero_parallax_distance = 8.0f; // view depth where both eyes' images coincide, > 0
+};
+
+// How particle billboards are oriented (Johnson & McAllister 2005, section 3): all facing the
+// viewplane (one rotation per eye) or each facing the viewpoint (one rotation per particle).
+enum class BillboardAlignment { viewplane, viewpoint };
+
+struct RenderDescription {
+  BillboardAlignment billboards = BillboardAlignment::viewplane;
+  // Particles are drawn into a layer of this fraction of the frame's size, then upsampled and
+  // composited over the opaque scene: 1, 0.5, 0.25 or 0.125.
+  float layer_scale = 1.0f;
 };
 
 struct LightDescription {
@@ -66,6 +80,7 @@ struct SceneDescription {
   CameraDescription camera;
   LightDescription light;
   FootprintDescription footprint;
+  RenderDescription render;
   std::vector<CloudDescription> clouds;
   std::vector<MeshDescription> meshes;
 };

@@ -502,6 +502,10 @@ void read_camera(ObjectReader& r, CameraDescription& c) {
   r.number("near", kPositive, c.near);
   r.number("far", kPositive, c.far);
   r.number("orbit_deg_per_second", kAnyRange, c.orbit_deg_per_second);
+  r.object("stereo", [&](ObjectReader& st) {
+    st.number("interocular", kNonNegative, c.interocular);
+    st.number("zero_parallax_distance", kPositive, c.zero_parallax_distance);
+  });
 
   if (!(c.far > c.near)) {
     r.at("far").fail("expected \"far\" greater than \"near\" (" + format_float(c.near) +
@@ -590,6 +594,33 @@ void read_mesh(ObjectReader& r, MeshDescription& m) {
   r.vec3("color", kUnit, m.color);
 }
 
+// A string that must be one of `names`; returns its index.
+std::size_t read_choice(ObjectReader& r, std::string_view key,
+                        const std::vector<std::string_view>& names, std::size_t fallback) {
+  const json* v = r.find(key);
+  if (v == nullptr) return fallback;
+  if (!v->is_string())
+    r.at(key).fail("expected one of " + quoted_list(names) + ", found " + describe(*v));
+  const std::string name = v->get<std::string>();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return i;
+  std::string message = "unknown value " + in_quotes(name) + "; expected one of " + quoted_list(names);
+  const std::string hint = suggest(name, names);
+  if (hint.rfind("; did you mean", 0) == 0) message += hint;
+  r.at(key).fail(message);
+  return fallback;
+}
+
+void read_render(ObjectReader& r, RenderDescription& d) {
+  d.billboards = static_cast<BillboardAlignment>(
+      read_choice(r, "billboards", {"viewplane", "viewpoint"}, static_cast<std::size_t>(d.billboards)));
+  r.number("layer_scale", Range{0.0, 1.0, true, false}, d.layer_scale);
+  if (d.layer_scale != 1.0f && d.layer_scale != 0.5f && d.layer_scale != 0.25f &&
+      d.layer_scale != 0.125f) {
+    r.at("layer_scale").fail("expected one of 1, 0.5, 0.25, 0.125, found " + format_float(d.layer_scale));
+  }
+}
+
 SceneDescription read_scene(ObjectReader& r) {
   SceneDescription s;
   r.string("name", s.name);
@@ -606,6 +637,7 @@ SceneDescription read_scene(ObjectReader& r) {
     f.integer("size", 2, 4096, s.footprint.size);
     f.integer("intervals", 1, 100000, s.footprint.intervals);
   });
+  r.object("render", [&](ObjectReader& d) { read_render(d, s.render); });
   r.objects("clouds", "an object describing a cloud",
             [&](ObjectReader& c, std::size_t) { read_cloud(c, s.clouds.emplace_back()); });
   r.objects("meshes", "an object describing a mesh",

@@ -1,9 +1,17 @@
 #pragma once
-// Render phase, second pass: blends the sorted particles over the opaque frame.
-// Needs a BillboardRenderer resource (made from the scene's footprint table).
+// Render phase, second pass: blends each view's sorted particles over its opaque frame, or
+// into its reduced-resolution layer (composited later). Needs a BillboardRenderer resource
+// (made from the scene's footprint table).
+#include "components/draw_list.h"
+#include "components/gpu_frame.h"
 #include "engine/ecs/schedule.h"
+#include "systems/billboard_render/billboard_renderer.h"
 
 namespace pyro {
+
+void draw_particles_for_view(BillboardRenderer& renderer, const DrawList& list,
+                             const CameraFrame& frame, EyeTargets& targets,
+                             BillboardAlignment alignment, BillboardShading shading);
 
 ecs::SystemDesc billboard_render_system();
 

@@ -26,7 +26,8 @@ BillboardRenderer::BillboardRenderer(const FootprintTable& table)
 }
 
 void BillboardRenderer::draw(const DrawList& list, const CameraFrame& frame,
-                             const gpu::RenderTarget& target, BillboardShading shading) {
+                             const gpu::RenderTarget& target, BillboardAlignment alignment,
+                             BillboardShading shading) {
   const size_t n = list.size();
   if (n == 0) return;
   const size_t half = n * sizeof(glm::vec4);
@@ -66,6 +67,9 @@ void BillboardRenderer::draw(const DrawList& list, const CameraFrame& frame,
                      glm::value_ptr(frame.view_projection));
   glUniform3fv(gpu::uniform_location(program, "u_right"), 1, glm::value_ptr(frame.right));
   glUniform3fv(gpu::uniform_location(program, "u_up"), 1, glm::value_ptr(frame.up));
+  glUniform3fv(gpu::uniform_location(program, "u_eye"), 1, glm::value_ptr(frame.eye));
+  glUniform1i(gpu::uniform_location(program, "u_face_viewpoint"),
+              alignment == BillboardAlignment::viewpoint ? 1 : 0);
   const float t0 = static_cast<float>(footprint_texcoord(table_, -table_.extent));
   const float t1 = static_cast<float>(footprint_texcoord(table_, table_.extent));
   glUniform2f(gpu::uniform_location(program, "u_texcoord_bias_scale"), t0, t1 - t0);

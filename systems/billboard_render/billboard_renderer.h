@@ -3,6 +3,7 @@
 // instance buffer, and the programs (the real one and a trivial one used as a fill-rate
 // baseline by `pyro bench render`).
 #include "components/draw_list.h"
+#include "engine/io/scene_description.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
@@ -18,6 +19,7 @@ class BillboardRenderer {
 
   // Uploads the sorted instances and blends them over `target` (depth tested, not written).
   void draw(const DrawList& list, const CameraFrame& frame, const gpu::RenderTarget& target,
+            BillboardAlignment alignment = BillboardAlignment::viewplane,
             BillboardShading shading = BillboardShading::kernel);
 
   const FootprintTable& table() const { return table_; }

@@ -15,9 +15,13 @@ ecs::SystemDesc mesh_render_system() {
             if (!world.has_resource<MeshRenderer>()) world.set_resource<MeshRenderer>();
             std::vector<MeshInstance> instances;
             world.each<MeshInstance>([&](MeshInstance& m) { instances.push_back(m); });
-            world.resource<MeshRenderer>().draw(instances, world.resource<View>().frame,
-                                                world.resource<RenderSettings>(),
-                                                *world.resource<GpuFrame>().target);
+            const View& view = world.resource<View>();
+            GpuFrame& frame = world.resource<GpuFrame>();
+            for (size_t v = 0; v < view.eyes.size() && v < frame.eyes.size(); ++v) {
+              world.resource<MeshRenderer>().draw(instances, view.eyes[v],
+                                                  world.resource<RenderSettings>(),
+                                                  *frame.eyes[v].scene);
+            }
           }};
 }
 

@@ -9,7 +9,8 @@ namespace pyro {
 ecs::SystemDesc frame_readback_system() {
   return {"readback", ecs::Phase::output, ecs::access<GpuFrame>(), ecs::access<FrameImage>(),
           [](ecs::World& world) {
-            const gpu::RenderTarget& target = *world.resource<GpuFrame>().target;
+            // The first view's composited scene, linear: what image tests compare.
+            const gpu::RenderTarget& target = *world.resource<GpuFrame>().eyes.at(0).scene;
             FrameImage& image = world.has_resource<FrameImage>() ? world.resource<FrameImage>()
                                                                  : world.set_resource<FrameImage>();
             image.width = target.width();

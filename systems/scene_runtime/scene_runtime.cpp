@@ -11,6 +11,7 @@
 #include "components/mesh_instance.h"
 #include "components/particle_set.h"
 #include "components/render_settings.h"
+#include "components/stereo_camera.h"
 #include "engine/core/rng.h"
 #include "engine/io/png_file.h"
 #include "engine/math/footprint.h"
@@ -18,6 +19,8 @@
 #include "systems/billboard_render/billboard_render_system.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/camera/camera_system.h"
+#include "systems/composite/composite_systems.h"
+#include "systems/composite/frame_targets.h"
 #include "systems/emitter/cloud_emitter_system.h"
 #include "systems/mesh_render/mesh_render_system.h"
 #include "systems/output/frame_readback_system.h"
@@ -41,6 +44,9 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   settings.light_direction = scene.light.direction;
   settings.light_color = scene.light.color;
   settings.ambient = scene.light.ambient;
+  settings.alignment = options.alignment.value_or(scene.render.billboards);
+  settings.layer_scale = options.layer_scale.value_or(scene.render.layer_scale);
+  settings.stereo_mode = options.stereo_mode;
   world_.set_resource<RenderSettings>(settings);
   FrameClock clock;
   clock.dt = 1.0f / scene.frames_per_second;
@@ -54,6 +60,11 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   cam.fov_y_deg = scene.camera.fov_y_deg;
   cam.near = scene.camera.near;
   cam.far = scene.camera.far;
+  StereoCamera stereo;
+  stereo.parameters.interocular = options.interocular.value_or(scene.camera.interocular);
+  stereo.parameters.zero_parallax_distance =
+      options.zero_parallax_distance.value_or(scene.camera.zero_parallax_distance);
+  world_.emplace<StereoCamera>(camera, stereo);
   if (scene.camera.orbit_deg_per_second != 0.0f)
     world_.emplace<CameraOrbit>(camera, CameraOrbit{scene.camera.position, scene.camera.orbit_deg_per_second});
 
@@ -77,9 +88,7 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     world_.emplace<MeshInstance>(world_.create(), MeshInstance{m.kind, m.position, m.scale, m.color});
   }
 
-  GpuFrame frame;
-  frame.target = std::make_unique<gpu::RenderTarget>(settings.width, settings.height);
-  world_.set_resource<GpuFrame>(std::move(frame));
+  world_.set_resource<GpuFrame>(make_gpu_frame(settings));
   world_.set_resource<BillboardRenderer>(
       make_footprint_table(scene.footprint.size, scene.footprint.intervals));
 
@@ -90,6 +99,8 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   schedule_.add(camera_system());
   schedule_.add(mesh_render_system());
   schedule_.add(billboard_render_system());
+  schedule_.add(layer_composite_system());
+  schedule_.add(stereo_compose_system());
   if (options.readback) schedule_.add(frame_readback_system());
 }
 
@@ -109,9 +120,34 @@ const FrameImage& SceneRuntime::image() {
   return *img;
 }
 
-void SceneRuntime::write_png(const std::string& path) {
-  const FrameImage& img = image();
-  pyro::write_png(path, img.width, img.height, 3, linear_rgba_to_srgb8(img.rgba, img.width, img.height));
+const RenderSettings& SceneRuntime::settings() { return world_.resource<RenderSettings>(); }
+
+std::vector<std::string> SceneRuntime::write_png(const std::string& stem) {
+  const gpu::RenderTarget& out = *world_.resource<GpuFrame>().output;
+  const std::vector<uint8_t> rgba = out.read_rgba8();
+  const int w = out.width(), h = out.height();
+  // Drop alpha; in left-right mode the output holds both views side by side: split it.
+  auto rgb_columns = [&](int x0, int width) {
+    std::vector<uint8_t> rgb(static_cast<size_t>(width) * h * 3);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < width; ++x)
+        for (int c = 0; c < 3; ++c)
+          rgb[(static_cast<size_t>(y) * width + x) * 3 + c] =
+              rgba[(static_cast<size_t>(y) * w + x0 + x) * 4 + c];
+    return rgb;
+  };
+  std::vector<std::string> written;
+  if (settings().stereo_mode == StereoMode::left_right) {
+    const int half = w / 2;
+    pyro::write_png(stem + "_left.png", half, h, 3, rgb_columns(0, half));
+    written.push_back(stem + "_left.png");
+    pyro::write_png(stem + "_right.png", half, h, 3, rgb_columns(half, half));
+    written.push_back(stem + "_right.png");
+  } else {
+    pyro::write_png(stem + ".png", w, h, 3, rgb_columns(0, w));
+    written.push_back(stem + ".png");
+  }
+  return written;
 }
 
 }  // namespace pyro

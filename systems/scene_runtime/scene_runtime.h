@@ -3,14 +3,19 @@
 // per cloud and per mesh, the resources) and the standard schedule of systems:
 //   spawn:     emitter
 //   simulate:  animation, camera_orbit
-//   sort:      sorting
-//   camera:    camera
-//   render:    mesh_render, billboard_render
-//   output:    readback (optional)
-// Frame f shows the state after f simulation steps of dt = 1 / fps.
+//   sort:      sorting (one draw list per view)
+//   camera:    camera (mono frame and eye frames)
+//   render:    mesh_render, billboard_render (per view; particles into a layer when reduced)
+//   composite: composite (layer upsampling), stereo_compose (output image for the stereo mode)
+//   output:    readback (optional: the first view, linear, for tests)
+// Frame f shows the state after f simulation steps of dt = 1 / fps. Both eyes of a stereo pair
+// render the same simulation state: simulation runs once per frame.
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "components/render_settings.h"
 #include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
 #include "engine/gpu/gl_context.h"
@@ -21,9 +26,14 @@ namespace pyro {
 struct FrameImage;
 
 struct RuntimeOptions {
-  bool readback = true;     // read each frame back into the FrameImage resource
-  int width_override = 0;   // > 0: replaces the scene's output size
+  bool readback = true;     // read each frame's first view back into the FrameImage resource
+  int width_override = 0;   // > 0: replaces the scene's output size (per eye)
   int height_override = 0;
+  StereoMode stereo_mode = StereoMode::mono;
+  std::optional<BillboardAlignment> alignment;  // replaces the scene's choice
+  std::optional<float> layer_scale;             // replaces the scene's choice
+  std::optional<float> interocular;
+  std::optional<float> zero_parallax_distance;
 };
 
 // The process-wide headless context (made on first use).
@@ -40,10 +50,12 @@ class SceneRuntime {
   ecs::World& world() { return world_; }
   const ecs::Schedule& schedule() const { return schedule_; }
   const SceneDescription& scene() const { return scene_; }
-  // The last frame read back (requires options.readback).
+  const RenderSettings& settings();
+  // The last frame's first view, linear (requires options.readback).
   const FrameImage& image();
-  // Writes the last frame as an sRGB PNG (temporary name, then renamed).
-  void write_png(const std::string& path);
+  // Writes the last composed frame as sRGB PNG: `stem`.png, or `stem`_left.png and
+  // `stem`_right.png in left-right mode. Returns the paths written.
+  std::vector<std::string> write_png(const std::string& stem);
 
  private:
   SceneDescription scene_;

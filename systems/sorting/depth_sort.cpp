@@ -6,6 +6,9 @@
 
 #include "components/camera.h"
 #include "components/particle_set.h"
+#include "components/render_settings.h"
+#include "components/stereo_camera.h"
+#include "systems/camera/camera_views.h"
 #include "engine/ecs/world.h"
 
 namespace pyro {
@@ -25,7 +28,7 @@ struct SortScratch {
 }  // namespace
 
 void build_draw_list(ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
-                     DrawList& list) {
+                     SortKeyKind kind, DrawList& list) {
   if (!world.has_resource<SortScratch>()) world.set_resource<SortScratch>();
   SortScratch& s = world.resource<SortScratch>();
   s.sets.clear();
@@ -36,8 +39,11 @@ void build_draw_list(ecs::World& world, const glm::vec3& eye, const glm::vec3& f
   for (size_t set = 0; set < s.sets.size(); ++set) {
     const ParticlePool& p = *s.sets[set].second;
     for (size_t i = 0; i < p.size(); ++i) {
-      const float depth = (p.px[i] - eye.x) * forward.x + (p.py[i] - eye.y) * forward.y +
-                          (p.pz[i] - eye.z) * forward.z;
+      const float dx = p.px[i] - eye.x, dy = p.py[i] - eye.y, dz = p.pz[i] - eye.z;
+      // Squared distance orders like distance and needs no square root.
+      const float depth = kind == SortKeyKind::view_depth
+                              ? dx * forward.x + dy * forward.y + dz * forward.z
+                              : dx * dx + dy * dy + dz * dz;
       s.keys.push_back({depth, static_cast<uint32_t>(set), p.id[i], static_cast<uint32_t>(i)});
     }
   }
@@ -53,19 +59,28 @@ void build_draw_list(ecs::World& world, const glm::vec3& eye, const glm::vec3& f
 }
 
 ecs::SystemDesc depth_sort_system() {
-  return {"sorting", ecs::Phase::sort, ecs::access<Camera, ParticleSet>(),
-          ecs::access<DrawList>(), [](ecs::World& world) {
-            glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, -1.0f};
-            bool found = false;
-            world.each<Camera>([&](Camera& c) {
-              if (found) return;  // the first camera decides the order
-              eye = c.position;
-              forward = glm::normalize(c.target - c.position);
-              found = true;
+  return {"sorting", ecs::Phase::sort,
+          ecs::access<Camera, StereoCamera, RenderSettings, ParticleSet>(),
+          ecs::access<EyeDrawLists>(), [](ecs::World& world) {
+            const RenderSettings* settings = world.try_resource<RenderSettings>();
+            const RenderSettings defaults;
+            const RenderSettings& rs = settings ? *settings : defaults;
+            std::vector<CameraFrame> views;
+            world.each<Camera>([&](ecs::Entity e, Camera& c) {
+              if (views.empty()) views = rendered_views(c, world.try_get<StereoCamera>(e), rs);
             });
-            DrawList& list = world.has_resource<DrawList>() ? world.resource<DrawList>()
-                                                            : world.set_resource<DrawList>();
-            build_draw_list(world, eye, forward, list);
+            if (views.empty()) return;
+            EyeDrawLists& lists = world.has_resource<EyeDrawLists>() ? world.resource<EyeDrawLists>()
+                                                                     : world.set_resource<EyeDrawLists>();
+            lists.eyes.resize(views.size());
+            if (rs.alignment == BillboardAlignment::viewplane) {
+              // Parallel view axes: one view-depth order serves every eye.
+              build_draw_list(world, views[0].eye, views[0].forward, SortKeyKind::view_depth, lists.eyes[0]);
+              for (size_t v = 1; v < views.size(); ++v) lists.eyes[v] = lists.eyes[0];
+            } else {
+              for (size_t v = 0; v < views.size(); ++v)
+                build_draw_list(world, views[v].eye, views[v].forward, SortKeyKind::eye_distance, lists.eyes[v]);
+            }
           }};
 }
 

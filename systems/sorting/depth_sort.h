@@ -1,8 +1,10 @@
 #pragma once
-// Sort phase: gathers every particle of every ParticleSet into the frame's DrawList, back to
-// front along the camera's view axis (billboards facing the viewplane are composited in view
-// depth order). The order is a strict total order: depth descending, then the set's entity
-// index, then the particle's id, so equal depths never swap between frames or runs.
+// Sort phase: gathers every particle of every ParticleSet into one DrawList per rendered view,
+// back to front. Billboards facing the viewplane are ordered by view depth (the distance along
+// the view axis), which is the same for both eyes of a parallel-axis stereo pair, so the eyes
+// share one sort. Billboards facing the viewpoint are ordered by distance to each eye.
+// The order is a strict total order: key descending, then the set's entity index, then the
+// particle's id, so equal keys never swap between frames or runs.
 #include <cstdint>
 #include <vector>
 
@@ -31,9 +33,12 @@ inline bool back_to_front(const SortKey& a, const SortKey& b) {
 // the input order).
 void sort_back_to_front(std::vector<SortKey>& keys);
 
-// Fills `list` from every ParticleSet in the world, sorted for the given view.
+enum class SortKeyKind { view_depth, eye_distance };
+
+// Fills `list` from every ParticleSet in the world, sorted for an eye at `eye` looking along
+// `forward`.
 void build_draw_list(ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
-                     DrawList& list);
+                     SortKeyKind kind, DrawList& list);
 
 ecs::SystemDesc depth_sort_system();
 

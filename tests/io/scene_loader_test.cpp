@@ -441,7 +441,7 @@ TEST(SceneLoader, UnknownKeyWithoutSuggestionListsKnownKeys) {
   expect_error(R"({"frobnicate": 1})", "/frobnicate",
                {"unknown key \"frobnicate\"; expected one of \"name\", \"seed\", \"output\", "
                 "\"background\", "
-                "\"camera\", \"light\", \"footprint\", \"clouds\", \"meshes\""});
+                "\"camera\", \"light\", \"footprint\", \"render\", \"clouds\", \"meshes\""});
 }
 
 TEST(SceneLoader, UnknownKeyPointerIsEscaped) {
@@ -503,6 +503,28 @@ TEST(SceneLoader, UpMustBeNonZeroAndNotParallelToView) {
 TEST(SceneLoader, CameraPositionMustDifferFromTarget) {
   expect_error(R"({"camera": {"position": [1, 2, 3], "target": [1, 2, 3]}})", "/camera/target",
                {"expected a target different from the camera position [1, 2, 3], found [1, 2, 3]"});
+}
+
+}  // namespace
+}  // namespace pyro
+
+namespace pyro {
+namespace {
+
+TEST(SceneLoader, RenderAndStereoSettings) {
+  const SceneDescription s = parse_scene(
+      R"({"render": {"billboards": "viewpoint", "layer_scale": 0.25},
+          "camera": {"stereo": {"interocular": 0.3, "zero_parallax_distance": 6}}})", "r.json");
+  EXPECT_EQ(s.render.billboards, BillboardAlignment::viewpoint);
+  EXPECT_FLOAT_EQ(s.render.layer_scale, 0.25f);
+  EXPECT_FLOAT_EQ(s.camera.interocular, 0.3f);
+  EXPECT_FLOAT_EQ(s.camera.zero_parallax_distance, 6.0f);
+  expect_error(R"({"render": {"billboards": "viewpiont"}})", "/render/billboards",
+               {"unknown value \"viewpiont\"", "did you mean \"viewpoint\""});
+  expect_error(R"({"render": {"layer_scale": 0.3}})", "/render/layer_scale",
+               {"expected one of 1, 0.5, 0.25, 0.125"});
+  expect_error(R"({"camera": {"stereo": {"interocular": -1}}})", "/camera/stereo/interocular",
+               {"expected a number in"});
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ TEST(DepthSort, FarthestFirstAlongTheViewAxis) {
   std::uniform_real_distribution<float> u(-10, 10);
   for (int i = 0; i < 100; ++i) s.pool.spawn(at(u(rng), u(rng), u(rng) - 20, static_cast<float>(i)));
   run_sort(w);
-  const DrawList& list = w.resource<DrawList>();
+  const DrawList& list = w.resource<EyeDrawLists>().eyes.at(0);
   ASSERT_EQ(list.size(), 100u);
   for (size_t k = 1; k < list.size(); ++k)
     EXPECT_LE(list.center_radius[k - 1].z, list.center_radius[k].z);  // -z is forward: far = small z
@@ -51,7 +51,7 @@ TEST(DepthSort, DepthIsAlongTheViewAxisNotDistance) {
   s.pool.spawn(at(0, 0, -10, 1));   // distance 10, depth 10
   s.pool.spawn(at(30, 0, -9, 2));   // distance 31, depth 9: nearest in depth
   run_sort(w);
-  const DrawList& list = w.resource<DrawList>();
+  const DrawList& list = w.resource<EyeDrawLists>().eyes.at(0);
   EXPECT_EQ(list.color_density[0].w, 0.0f);  // equal depth: lower id first
   EXPECT_EQ(list.color_density[1].w, 1.0f);
   EXPECT_EQ(list.color_density[2].w, 2.0f);
@@ -83,7 +83,7 @@ TEST(DepthSort, EqualDepthsKeepOneOrderWhateverTheStorageOrder) {
       }
     }
     run_sort(w);
-    return w.resource<DrawList>().color_density;
+    return w.resource<EyeDrawLists>().eyes.at(0).color_density;
   };
   const auto first = build(false);
   const auto second = build(true);
@@ -97,10 +97,10 @@ TEST(DepthSort, RepeatedFramesGiveTheSameOrder) {
   ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(200)});
   for (int i = 0; i < 200; ++i) s.pool.spawn(at(0, 0, -static_cast<float>(i % 3) - 1, static_cast<float>(i)));
   run_sort(w);
-  const auto first = w.resource<DrawList>().color_density;
+  const auto first = w.resource<EyeDrawLists>().eyes.at(0).color_density;
   for (int f = 0; f < 5; ++f) {
     run_sort(w);
-    const auto& again = w.resource<DrawList>().color_density;
+    const auto& again = w.resource<EyeDrawLists>().eyes.at(0).color_density;
     for (size_t k = 0; k < first.size(); ++k) ASSERT_EQ(first[k].w, again[k].w);
   }
 }

@@ -8,12 +8,12 @@
 #include <nlohmann/json.hpp>
 
 #include "components/draw_list.h"
-#include "components/frame_image.h"
 #include "engine/core/user_error.h"
 #include "engine/io/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
+#include "tools/pyro/render_options.h"
 
 namespace pyro::cli {
 
@@ -25,11 +25,12 @@ struct RenderArgs {
   int width = 0, height = 0;
   int frames = 1;
   bool json = false;
+  RuntimeOptions runtime;
 };
 
 std::string frame_name(int f) {
   char name[32];
-  std::snprintf(name, sizeof name, "frame_%04d.png", f);
+  std::snprintf(name, sizeof name, "frame_%04d", f);
   return name;
 }
 
@@ -42,7 +43,8 @@ void run_render(const RenderArgs& a) {
     throw UserError(a.out, "--out", "expected a folder for the frames, found a file");
 
   const auto t0 = std::chrono::steady_clock::now();
-  RuntimeOptions options;
+  RuntimeOptions options = a.runtime;
+  options.readback = false;
   options.width_override = a.width;
   options.height_override = a.height;
   SceneRuntime runtime(scene, options);
@@ -53,15 +55,19 @@ void run_render(const RenderArgs& a) {
   Progress progress("render " + scene.name, static_cast<size_t>(a.frames));
   for (int f = 0; f < a.frames; ++f) {
     runtime.step();
-    const std::string path = (fs::path(a.out) / frame_name(f)).string();
-    runtime.write_png(path);
-    files.push_back(path);
+    for (const std::string& path : runtime.write_png((fs::path(a.out) / frame_name(f)).string()))
+      files.push_back(path);
     progress.update(static_cast<size_t>(f + 1));
   }
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  const auto* list = runtime.world().try_resource<DrawList>();
+  const auto* lists = runtime.world().try_resource<EyeDrawLists>();
+  const size_t particles = lists && !lists->eyes.empty() ? lists->eyes[0].size() : 0;
+  const RenderSettings& rs = runtime.settings();
+  std::string stereo;
+  for (const auto& [name, mode] : stereo_mode_names())
+    if (mode == rs.stereo_mode) stereo = name;
   nlohmann::json systems = nlohmann::json::array();
   for (const auto& s : runtime.schedule().stats())
     systems.push_back({{"name", s.name}, {"phase", ecs::phase_name(s.phase)}, {"mean_ms", s.mean_ms()}});
@@ -70,9 +76,12 @@ void run_render(const RenderArgs& a) {
       {"name", scene.name},
       {"out", a.out},
       {"frames", a.frames},
-      {"width", runtime.image().width},
-      {"height", runtime.image().height},
-      {"particles", list ? list->size() : 0},
+      {"width", rs.width},
+      {"height", rs.height},
+      {"stereo", stereo},
+      {"billboards", rs.alignment == BillboardAlignment::viewplane ? "viewplane" : "viewpoint"},
+      {"layer_scale", rs.layer_scale},
+      {"particles", particles},
       {"files", files},
       {"seconds", seconds},
       {"ms_per_frame", seconds * 1000.0 / a.frames},
@@ -81,9 +90,9 @@ void run_render(const RenderArgs& a) {
   if (a.json) {
     std::printf("%s\n", summary.dump().c_str());
   } else {
-    std::printf("rendered %d frame(s) of %s (%dx%d, %zu particles) into %s in %.2f s\n", a.frames,
-                scene.file.c_str(), runtime.image().width, runtime.image().height,
-                list ? list->size() : size_t{0}, a.out.c_str(), seconds);
+    std::printf("rendered %d frame(s) of %s (%dx%d %s, %zu particles) into %s in %.2f s\n",
+                a.frames, scene.file.c_str(), rs.width, rs.height, stereo.c_str(), particles,
+                a.out.c_str(), seconds);
   }
 }
 
@@ -100,6 +109,7 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::Range(1, 8192));
   cmd->add_option("--frames", args->frames, "Number of frames")->check(CLI::Range(1, 1000000));
   cmd->add_flag("--json", args->json, "Print a JSON summary as the last line");
+  add_render_options(cmd, args->runtime);
   cmd->callback([args] { run_render(*args); });
 }
 

@@ -1,0 +1,31 @@
+#include "systems/composite/frame_targets.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pyro {
+
+int layer_extent(int full, float scale) {
+  return std::max(1, static_cast<int>(std::lround(full * static_cast<double>(scale))));
+}
+
+GpuFrame make_gpu_frame(const RenderSettings& s) {
+  GpuFrame f;
+  const size_t views = is_stereo(s.stereo_mode) ? 2 : 1;
+  for (size_t v = 0; v < views; ++v) {
+    EyeTargets t;
+    t.scene = std::make_unique<gpu::RenderTarget>(s.width, s.height);
+    if (s.layer_scale < 1.0f)
+      t.layer = std::make_unique<gpu::RenderTarget>(layer_extent(s.width, s.layer_scale),
+                                                    layer_extent(s.height, s.layer_scale));
+    f.eyes.push_back(std::move(t));
+  }
+  const bool two_wide = s.stereo_mode == StereoMode::side_by_side ||
+                        s.stereo_mode == StereoMode::side_by_side_crossed ||
+                        s.stereo_mode == StereoMode::left_right;
+  f.output = std::make_unique<gpu::RenderTarget>(two_wide ? 2 * s.width : s.width, s.height,
+                                                 GL_SRGB8_ALPHA8);
+  return f;
+}
+
+}  // namespace pyro
