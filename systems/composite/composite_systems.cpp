@@ -14,17 +14,8 @@ Compositor& compositor(ecs::World& world) {
 }
 }  // namespace
 
-ecs::SystemDesc layer_composite_system() {
-  return {"composite", ecs::Phase::composite, ecs::access<GpuFrame>(), ecs::access<GpuFrame>(),
-          [](ecs::World& world) {
-            GpuFrame& frame = world.resource<GpuFrame>();
-            for (EyeTargets& eye : frame.eyes)
-              if (eye.layer) compositor(world).upsample_layer(*eye.layer, *eye.scene);
-          }};
-}
-
 ecs::SystemDesc stereo_compose_system() {
-  return {"stereo_compose", ecs::Phase::composite, ecs::access<GpuFrame, RenderSettings>(),
+  return {"composite", ecs::Phase::composite, ecs::access<GpuFrame, RenderSettings>(),
           ecs::access<GpuFrame>(), [](ecs::World& world) {
             compositor(world).compose(world.resource<RenderSettings>().stereo_mode,
                                       world.resource<GpuFrame>());

@@ -27,13 +27,17 @@ void Compositor::upsample_layer(const gpu::RenderTarget& layer, const gpu::Rende
   glDepthMask(GL_TRUE);
 }
 
-void Compositor::draw_view(GLuint left, GLuint right, const float* left_matrix,
-                           const float* right_matrix, int x, int y, int width, int height) {
+void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_matrix, int x,
+                           int y, int width, int height) {
+  const glm::mat3 zero(0.0f);
   glViewport(x, y, width, height);
-  glBindTextureUnit(0, left);
-  glBindTextureUnit(1, right);
-  glUniformMatrix3fv(gpu::uniform_location(compose_, "u_left_matrix"), 1, GL_FALSE, left_matrix);
-  glUniformMatrix3fv(gpu::uniform_location(compose_, "u_right_matrix"), 1, GL_FALSE, right_matrix);
+  glUniformMatrix3fv(gpu::uniform_location(compose_, "u_left_matrix"), 1, GL_FALSE, glm::value_ptr(left_matrix));
+  glUniformMatrix3fv(gpu::uniform_location(compose_, "u_right_matrix"), 1, GL_FALSE, glm::value_ptr(right_matrix));
+  glUniform1i(gpu::uniform_location(compose_, "u_use_left"), left_matrix != zero ? 1 : 0);
+  glUniform1i(gpu::uniform_location(compose_, "u_use_right"), right_matrix != zero ? 1 : 0);
+  glUniform2i(gpu::uniform_location(compose_, "u_origin"), x, y);
+  glUniform2f(gpu::uniform_location(compose_, "u_view_size"), static_cast<float>(width),
+              static_cast<float>(height));
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -45,24 +49,30 @@ void Compositor::compose(StereoMode mode, const GpuFrame& frame) {
   glDisable(GL_BLEND);
   glUseProgram(compose_.get());
   glBindVertexArray(empty_.get());
-  const glm::mat3 identity(1.0f), zero(0.0f);
-  const GLuint left = frame.eyes[0].scene->color_texture();
-  const GLuint right = frame.eyes.size() > 1 ? frame.eyes[1].scene->color_texture() : left;
-  const int w = frame.eyes[0].scene->width(), h = frame.eyes[0].scene->height();
-  const float* I = glm::value_ptr(identity);
-  const float* Z = glm::value_ptr(zero);
+  const EyeTargets& l = frame.eyes[0];
+  const EyeTargets& r = frame.eyes.size() > 1 ? frame.eyes[1] : frame.eyes[0];
+  glBindTextureUnit(0, l.scene->color_texture());
+  glBindTextureUnit(1, r.scene->color_texture());
+  const bool layers = l.layer != nullptr;
+  glUniform1i(gpu::uniform_location(compose_, "u_has_layers"), layers ? 1 : 0);
+  if (layers) {
+    glBindTextureUnit(2, l.layer->color_texture());
+    glBindTextureUnit(3, r.layer->color_texture());
+  }
+  const int w = l.scene->width(), h = l.scene->height();
+  const glm::mat3 I(1.0f), Z(0.0f);
   switch (mode) {
     case StereoMode::mono:
-      draw_view(left, left, I, Z, 0, 0, w, h);
+      draw_view(I, Z, 0, 0, w, h);
       break;
     case StereoMode::left_right:
     case StereoMode::side_by_side:
-      draw_view(left, right, I, Z, 0, 0, w, h);
-      draw_view(left, right, Z, I, w, 0, w, h);
+      draw_view(I, Z, 0, 0, w, h);
+      draw_view(Z, I, w, 0, w, h);
       break;
     case StereoMode::side_by_side_crossed:
-      draw_view(left, right, Z, I, 0, 0, w, h);
-      draw_view(left, right, I, Z, w, 0, w, h);
+      draw_view(Z, I, 0, 0, w, h);
+      draw_view(I, Z, w, 0, w, h);
       break;
     case StereoMode::anaglyph:
     case StereoMode::anaglyph_color:
@@ -71,7 +81,7 @@ void Compositor::compose(StereoMode mode, const GpuFrame& frame) {
                                 : mode == StereoMode::anaglyph_color ? AnaglyphKind::color
                                                                      : AnaglyphKind::half_color;
       const AnaglyphMatrices m = anaglyph_matrices(kind);
-      draw_view(left, right, glm::value_ptr(m.left), glm::value_ptr(m.right), 0, 0, w, h);
+      draw_view(m.left, m.right, 0, 0, w, h);
       break;
     }
   }

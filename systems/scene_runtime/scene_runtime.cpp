@@ -1,5 +1,7 @@
 #include "systems/scene_runtime/scene_runtime.h"
 
+#include <epoxy/gl.h>
+
 #include <stdexcept>
 
 #include "components/camera.h"
@@ -92,16 +94,20 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   world_.set_resource<BillboardRenderer>(
       make_footprint_table(scene.footprint.size, scene.footprint.intervals));
 
-  schedule_.add(cloud_emitter_system());
-  schedule_.add(drift_system());
-  schedule_.add(camera_orbit_system());
-  schedule_.add(depth_sort_system());
-  schedule_.add(camera_system());
-  schedule_.add(mesh_render_system());
-  schedule_.add(billboard_render_system());
-  schedule_.add(layer_composite_system());
-  schedule_.add(stereo_compose_system());
-  if (options.readback) schedule_.add(frame_readback_system());
+  std::vector<ecs::SystemDesc> systems = {
+      cloud_emitter_system(), drift_system(),           camera_orbit_system(),
+      depth_sort_system(),    camera_system(),          mesh_render_system(),
+      billboard_render_system(), stereo_compose_system()};
+  if (options.readback) systems.push_back(frame_readback_system());
+  for (ecs::SystemDesc& d : systems) {
+    if (options.sync_timing) {
+      d.run = [run = std::move(d.run)](ecs::World& w) {
+        run(w);
+        glFinish();
+      };
+    }
+    schedule_.add(std::move(d));
+  }
 }
 
 void SceneRuntime::step() {

@@ -6,8 +6,8 @@
 //   sort:      sorting (one draw list per view)
 //   camera:    camera (mono frame and eye frames)
 //   render:    mesh_render, billboard_render (per view; particles into a layer when reduced)
-//   composite: composite (layer upsampling), stereo_compose (output image for the stereo mode)
-//   output:    readback (optional: the first view, linear, for tests)
+//   composite: composite (particle layers over the scene, views into the output image)
+//   output:    readback (optional: every view, linear, for tests and measurements)
 // Frame f shows the state after f simulation steps of dt = 1 / fps. Both eyes of a stereo pair
 // render the same simulation state: simulation runs once per frame.
 #include <memory>
@@ -34,6 +34,9 @@ struct RuntimeOptions {
   std::optional<float> layer_scale;             // replaces the scene's choice
   std::optional<float> interocular;
   std::optional<float> zero_parallax_distance;
+  // Finish the GPU's work after every system, so each system's timing includes the GPU work it
+  // issued (profiling; it removes CPU/GPU overlap, so frames get slower).
+  bool sync_timing = false;
 };
 
 // The process-wide headless context (made on first use).

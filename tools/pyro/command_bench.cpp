@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tools/pyro/bench_ecs.h"
+#include "tools/pyro/bench_johnson.h"
 #include "tools/pyro/bench_render.h"
 #include "tools/pyro/commands.h"
 
@@ -50,6 +51,23 @@ void add_bench_commands(CLI::App& app) {
       ->check(CLI::Range(1, 10000));
   render_cmd->add_flag("--json", render->json, "Print one JSON object");
   render_cmd->callback([render] { print(bench_render(render->options), render->json); });
+
+  struct JohnsonArgs { JohnsonBenchOptions options; bool json = false; };
+  auto johnson = std::make_shared<JohnsonArgs>();
+  CLI::App* johnson_cmd = bench->add_subcommand(
+      "johnson", "The paper's performance test: anaglyph stereo at 1024x768 moving through the volume");
+  johnson_cmd->add_option("--frames", johnson->options.frames, "Frames along the path per scene")
+      ->check(CLI::Range(2, 100000));
+  johnson_cmd->add_option("--layer-scale", johnson->options.layer_scale,
+                          "Particle layer resolution: 1, 0.5, 0.25, 0.125")
+      ->check(CLI::IsMember({1.0f, 0.5f, 0.25f, 0.125f}));
+  johnson_cmd->add_option("--error-samples", johnson->options.error_samples,
+                          "Frames where the layer's RMSE against full resolution is measured")
+      ->check(CLI::Range(0, 1000));
+  johnson_cmd->add_flag("--sync-timing", johnson->options.sync_timing,
+                        "Finish GPU work after each system so per-system times include it");
+  johnson_cmd->add_flag("--json", johnson->json, "Print one JSON object");
+  johnson_cmd->callback([johnson] { print(bench_johnson(johnson->options), johnson->json); });
 }
 
 }  // namespace pyro::cli
