@@ -66,6 +66,7 @@ void add_analyze_commands(CLI::App& app) {
   cmd->add_option("--rule", fp->rule, "Composite rule: trapezoid, simpson or midpoint");
   cmd->add_flag("--json", fp->json, "Print one JSON object");
   cmd->callback([fp] { run_footprint(*fp); });
+  add_billboard_mode_analysis(*analyze);
 }
 
 }  // namespace pyro::cli

@@ -7,5 +7,7 @@ namespace pyro::cli {
 void add_render_command(CLI::App& app);
 void add_analyze_commands(CLI::App& app);
 void add_bench_commands(CLI::App& app);
+// Registered under `pyro analyze` by add_analyze_commands.
+void add_billboard_mode_analysis(CLI::App& analyze);
 
 }  // namespace pyro::cli
