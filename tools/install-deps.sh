@@ -7,6 +7,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libglm-dev libepoxy-dev libegl-dev libegl1 libgl1-mesa-dri libegl-mesa0
   nlohmann-json3-dev libcli11-dev libstb-dev
+  libopenvdb-dev libopenvdb-tools libtbb-dev libboost-dev libboost-iostreams-dev
+  libblosc-dev zlib1g-dev libimath-dev
 )
 missing=()
 for p in "${packages[@]}"; do

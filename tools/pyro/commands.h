@@ -7,7 +7,10 @@ namespace pyro::cli {
 void add_render_command(CLI::App& app);
 void add_analyze_commands(CLI::App& app);
 void add_bench_commands(CLI::App& app);
+void add_import_command(CLI::App& app);
 // Registered under `pyro analyze` by add_analyze_commands.
 void add_billboard_mode_analysis(CLI::App& analyze);
+// `pyro bench vdb`, registered by add_bench_commands.
+void add_bench_vdb_command(CLI::App& bench);
 
 }  // namespace pyro::cli

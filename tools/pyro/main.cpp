@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   pyro::cli::add_render_command(app);
   pyro::cli::add_analyze_commands(app);
   pyro::cli::add_bench_commands(app);
+  pyro::cli::add_import_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,139 @@
+#include "systems/reference/particle_reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "systems/reference/grid_sampling.h"
+#include "systems/reference/parallel_rows.h"
+#include "systems/reference/pixel_ray.h"
+
+namespace pyro {
+
+namespace {
+
+constexpr double kExtent = 3.0;
+
+struct Gaussian {
+  glm::dvec3 c, col;
+  double s = 1, k = 0;
+};
+
+Gaussian make_gaussian(const glm::dvec3& c, double radius, double density, const glm::dvec3& col) {
+  Gaussian g;
+  g.c = c;
+  g.col = col;
+  g.s = radius / kExtent;
+  const double rho = std::min(density, 1.0 - 1e-12);
+  const double tau0 = -std::log1p(-rho);
+  // Optical depth through the centre of the clamped kernel: k s sqrt(2 pi) erf(3 / sqrt 2).
+  g.k = tau0 / (g.s * std::sqrt(2.0 * std::numbers::pi) * std::erf(kExtent / std::numbers::sqrt2));
+  return g;
+}
+
+// Where the ray o + t w is inside the particle's cube; false if nowhere.
+bool cube_span(const Gaussian& g, const glm::dvec3& o, const glm::dvec3& w, double& a, double& b) {
+  const double h = kExtent * g.s;
+  const double oo[3] = {o.x, o.y, o.z}, ww[3] = {w.x, w.y, w.z};
+  const double lo[3] = {g.c.x - h, g.c.y - h, g.c.z - h}, hi[3] = {g.c.x + h, g.c.y + h, g.c.z + h};
+  return intersect_box(oo, ww, lo, hi, a, b);
+}
+
+double depth_between(const Gaussian& g, const glm::dvec3& o, const glm::dvec3& w, double a, double b) {
+  const glm::dvec3 oc = g.c - o;
+  const double tc = glm::dot(oc, w);
+  const double d2 = glm::dot(oc, oc) - tc * tc;
+  const double q = 1.0 / (g.s * std::numbers::sqrt2);
+  return g.k * std::exp(-std::max(d2, 0.0) / (2.0 * g.s * g.s)) * g.s *
+         std::sqrt(std::numbers::pi / 2.0) * (std::erf((b - tc) * q) - std::erf((a - tc) * q));
+}
+
+}  // namespace
+
+double particle_optical_depth(const glm::dvec3& centre, double radius, double density,
+                              const glm::dvec3& o, const glm::dvec3& w, double a, double b) {
+  const Gaussian g = make_gaussian(centre, radius, density, glm::dvec3(0));
+  double ca, cb;
+  if (!cube_span(g, o, w, ca, cb)) return 0.0;
+  a = std::max(a, ca);
+  b = std::min(b, cb);
+  return b > a ? depth_between(g, o, w, a, b) : 0.0;
+}
+
+RgbImage render_particles_reference(const ParticlePool& p, const CameraFrame& camera,
+                                    const glm::dvec3& background, int threads,
+                                    double max_piece_depth) {
+  std::vector<Gaussian> gs;
+  gs.reserve(p.size());
+  for (size_t i = 0; i < p.size(); ++i)
+    if (p.density[i] > 0.0f)
+      gs.push_back(make_gaussian({p.px[i], p.py[i], p.pz[i]}, p.radius[i], p.density[i],
+                                 {p.r[i], p.g[i], p.b[i]}));
+  RgbImage img;
+  img.width = camera.width;
+  img.height = camera.height;
+  img.rgb.assign(size_t(3) * img.width * img.height, 0.0f);
+  const glm::dvec3 eye(camera.eye);
+  parallel_rows(img.height, threads, [&](int y) {
+    struct Hit {
+      double a, b;
+      const Gaussian* g;
+    };
+    std::vector<Hit> hits;
+    std::vector<double> cuts;
+    for (int x = 0; x < img.width; ++x) {
+      const glm::dvec3 w = pixel_ray_direction(camera, x + 0.5, y + 0.5);
+      hits.clear();
+      cuts.clear();
+      for (const Gaussian& g : gs) {
+        double a, b;
+        if (!cube_span(g, eye, w, a, b)) continue;
+        a = std::max(a, 0.0);
+        if (b <= a) continue;
+        hits.push_back({a, b, &g});
+        cuts.push_back(a);
+        cuts.push_back(b);
+        const double tc = glm::dot(g.c - eye, w);
+        if (tc > a && tc < b) cuts.push_back(tc);
+      }
+      glm::dvec3 L(0.0);
+      double T = 1.0;
+      std::sort(cuts.begin(), cuts.end());
+      for (size_t c = 0; c + 1 < cuts.size() && T > 1e-7; ++c) {
+        const double a = cuts[c], b = cuts[c + 1];
+        if (b <= a) continue;
+        // Optical depth of the whole piece decides how finely it is split for colour mixing.
+        double total = 0.0;
+        for (const Hit& h : hits)
+          if (h.a <= a && h.b >= b) total += depth_between(*h.g, eye, w, a, b);
+        const int parts = std::max(1, int(std::ceil(total / max_piece_depth)));
+        for (int k = 0; k < parts; ++k) {
+          const double pa = a + (b - a) * k / parts, pb = a + (b - a) * (k + 1) / parts;
+          double dtau = 0.0;
+          glm::dvec3 col(0.0);
+          for (const Hit& h : hits)
+            if (h.a <= a && h.b >= b) {
+              const double t = depth_between(*h.g, eye, w, pa, pb);
+              dtau += t;
+              col += t * h.g->col;
+            }
+          if (dtau <= 0.0) continue;
+          const double alpha = -std::expm1(-dtau);
+          L += T * alpha * (col / dtau);
+          T *= 1.0 - alpha;
+        }
+      }
+      L += T * background;
+      float* px = img.at(x, y);
+      px[0] = float(L.x);
+      px[1] = float(L.y);
+      px[2] = float(L.z);
+    }
+  });
+  return img;
+}
+
+}  // namespace pyro
