@@ -1,7 +1,8 @@
 #pragma once
 // Resource: the frame's offscreen targets, shared by the render and composite passes.
-// Per rendered view: the scene target (opaque geometry, then particles, linear RGBA16F with
-// depth) and, when particles render at reduced resolution, their layer. One output target
+// Per rendered view: the scene target (opaque geometry with depth, then the particles: linear
+// RGBA16F) and, when particles render at reduced resolution, their layer (RGBA16F; the scene
+// target is then 8-bit sRGB, since only opaque geometry is drawn into it). One output target
 // holds the composed sRGB image (two views side by side for side-by-side and left-right).
 #include <memory>
 #include <vector>

@@ -9,22 +9,28 @@
 namespace pyro {
 
 Compositor::Compositor()
-    : upsample_(gpu::load_program("fullscreen.vert", "layer_upsample.frag")),
-      compose_(gpu::load_program("fullscreen.vert", "stereo_compose.frag")),
+    : compose_(gpu::load_program("fullscreen.vert", "stereo_compose.frag")),
       empty_(gpu::make_vertex_array()) {}
 
-void Compositor::upsample_layer(const gpu::RenderTarget& layer, const gpu::RenderTarget& scene) {
-  scene.bind();
+void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  glUseProgram(upsample_.get());
-  glBindTextureUnit(0, layer.color_texture());
-  glBindVertexArray(empty_.get());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
   glDisable(GL_BLEND);
-  glDepthMask(GL_TRUE);
+  glUseProgram(compose_.get());
+  glBindVertexArray(empty_.get());
+  glBindTextureUnit(0, l.scene->color_texture());
+  glBindTextureUnit(1, r.scene->color_texture());
+  const bool layers = l.layer != nullptr;
+  glUniform1i(gpu::uniform_location(compose_, "u_has_layers"), layers ? 1 : 0);
+  if (layers) {
+    glBindTextureUnit(2, l.layer->color_texture());
+    glBindTextureUnit(3, r.layer->color_texture());
+  }
+}
+
+void Compositor::resolve_linear(const EyeTargets& view, const gpu::RenderTarget& out) {
+  glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
+  bind_views(view, view);
+  draw_view(glm::mat3(1.0f), glm::mat3(0.0f), 0, 0, out.width(), out.height());
 }
 
 void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_matrix, int x,
@@ -44,21 +50,10 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
 void Compositor::compose(StereoMode mode, const GpuFrame& frame) {
   const gpu::RenderTarget& out = *frame.output;
   glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
-  glEnable(GL_FRAMEBUFFER_SRGB);  // linear in, sRGB-encoded bytes out
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glUseProgram(compose_.get());
-  glBindVertexArray(empty_.get());
+  glEnable(GL_FRAMEBUFFER_SRGB);  // linear in, sRGB-encoded bytes out (on for every pass)
   const EyeTargets& l = frame.eyes[0];
   const EyeTargets& r = frame.eyes.size() > 1 ? frame.eyes[1] : frame.eyes[0];
-  glBindTextureUnit(0, l.scene->color_texture());
-  glBindTextureUnit(1, r.scene->color_texture());
-  const bool layers = l.layer != nullptr;
-  glUniform1i(gpu::uniform_location(compose_, "u_has_layers"), layers ? 1 : 0);
-  if (layers) {
-    glBindTextureUnit(2, l.layer->color_texture());
-    glBindTextureUnit(3, r.layer->color_texture());
-  }
+  bind_views(l, r);
   const int w = l.scene->width(), h = l.scene->height();
   const glm::mat3 I(1.0f), Z(0.0f);
   switch (mode) {
@@ -85,7 +80,6 @@ void Compositor::compose(StereoMode mode, const GpuFrame& frame) {
       break;
     }
   }
-  glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
 }  // namespace pyro

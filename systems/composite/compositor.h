@@ -12,17 +12,18 @@ namespace pyro {
 class Compositor {
  public:
   Compositor();
-  // Blends `layer` (premultiplied) over `scene`, upsampled bilinearly (for readback; the final
-  // composition does the same on the fly).
-  void upsample_layer(const gpu::RenderTarget& layer, const gpu::RenderTarget& scene);
+  // Writes one view, its layer composited, into the linear float target `out` (same size):
+  // the final composition's arithmetic without the sRGB encoding, for readback.
+  void resolve_linear(const EyeTargets& view, const gpu::RenderTarget& out);
   // Writes frame.output from the views in frame.eyes (left, right) for `mode`, compositing each
   // view's particle layer over its scene on the way: one full-screen pass in all.
   void compose(StereoMode mode, const GpuFrame& frame);
 
  private:
+  void bind_views(const EyeTargets& left, const EyeTargets& right);
   void draw_view(const glm::mat3& left_matrix, const glm::mat3& right_matrix, int x, int y,
                  int width, int height);
-  gpu::Program upsample_, compose_;
+  gpu::Program compose_;
   gpu::VertexArray empty_;
 };
 

@@ -7,6 +7,13 @@
 
 namespace pyro {
 
+namespace {
+// Scratch target for resolving a layered view to linear floats.
+struct LinearResolveTarget {
+  std::unique_ptr<gpu::RenderTarget> target;
+};
+}  // namespace
+
 ecs::SystemDesc frame_readback_system() {
   return {"readback", ecs::Phase::output, ecs::access<GpuFrame>(), ecs::access<FrameImage>(),
           [](ecs::World& world) {
@@ -15,13 +22,23 @@ ecs::SystemDesc frame_readback_system() {
                                                                  : world.set_resource<FrameImage>();
             for (size_t v = 0; v < frame.eyes.size(); ++v) {
               EyeTargets& eye = frame.eyes[v];
-              // The final composition folds the layer in on the fly; a linear copy of the view
-              // needs it blended into the scene target first.
-              if (eye.layer) {
-                if (!world.has_resource<Compositor>()) world.set_resource<Compositor>();
-                world.resource<Compositor>().upsample_layer(*eye.layer, *eye.scene);
+              std::vector<float>& out = v == 0 ? image.rgba : image.right_rgba;
+              if (!eye.layer) {
+                out = eye.scene->read_rgba();
+                continue;
               }
-              (v == 0 ? image.rgba : image.right_rgba) = eye.scene->read_rgba();
+              // The final composition folds the layer in on the fly; resolve the same
+              // arithmetic into a linear float target to read it.
+              if (!world.has_resource<Compositor>()) world.set_resource<Compositor>();
+              if (!world.has_resource<LinearResolveTarget>() ||
+                  world.resource<LinearResolveTarget>().target->width() != eye.scene->width() ||
+                  world.resource<LinearResolveTarget>().target->height() != eye.scene->height()) {
+                world.set_resource<LinearResolveTarget>(LinearResolveTarget{
+                    std::make_unique<gpu::RenderTarget>(eye.scene->width(), eye.scene->height(), GL_RGBA32F)});
+              }
+              const gpu::RenderTarget& resolve = *world.resource<LinearResolveTarget>().target;
+              world.resource<Compositor>().resolve_linear(eye, resolve);
+              out = resolve.read_rgba();
             }
             image.width = frame.eyes[0].scene->width();
             image.height = frame.eyes[0].scene->height();

@@ -38,6 +38,9 @@ gpu::HeadlessContext& shared_headless_context() {
 SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& options)
     : scene_(scene) {
   shared_headless_context().make_current();
+  // Every pass works in linear light: writes to sRGB targets are encoded and reads decoded.
+  // (It changes nothing for float targets.)
+  glEnable(GL_FRAMEBUFFER_SRGB);
 
   RenderSettings settings;
   settings.width = options.width_override > 0 ? options.width_override : scene.width;
