@@ -7,6 +7,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libglm-dev libepoxy-dev libegl-dev libegl1 libgl1-mesa-dri libegl-mesa0
   nlohmann-json3-dev libcli11-dev libstb-dev
+  python3 python3-matplotlib  # tools/plots (run with /usr/bin/python3, not a pyenv python3)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -8,4 +8,8 @@ void add_render_command(CLI::App& app);
 void add_analyze_commands(CLI::App& app);
 void add_bench_commands(CLI::App& app);
 
+// Subcommands of `pyro analyze`, registered by add_analyze_commands.
+void add_analyze_projection_error_command(CLI::App& analyze);  // command_analyze_alignment.cpp
+void add_analyze_stereo_command(CLI::App& analyze);            // command_analyze_stereo.cpp
+
 }  // namespace pyro::cli
