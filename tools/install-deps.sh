@@ -9,6 +9,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libstb-dev
   libopenvdb-dev libopenvdb-tools libtbb-dev libboost-dev libboost-iostreams-dev
   libblosc-dev zlib1g-dev libimath-dev
+  python3 python3-matplotlib  # tools/plots (run with /usr/bin/python3, not a pyenv python3)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -27,10 +27,27 @@ CameraFrame make_camera_frame(const glm::vec3& eye, const glm::vec3& target, con
   return f;
 }
 
+namespace {
+
+// Clip space to pixels: x right, y down, the viewport covering [0, width] x [0, height].
+template <typename T>
+glm::vec<2, T> clip_to_pixels(const glm::mat<4, 4, T>& view_projection, int width, int height,
+                              const glm::vec<3, T>& p) {
+  const glm::vec<4, T> clip = view_projection * glm::vec<4, T>(p, T(1));
+  const T nx = clip.x / clip.w, ny = clip.y / clip.w;
+  return {(nx * T(0.5) + T(0.5)) * static_cast<T>(width),
+          (T(0.5) - ny * T(0.5)) * static_cast<T>(height)};
+}
+
+}  // namespace
+
 glm::vec2 project_to_pixels(const CameraFrame& f, const glm::vec3& p) {
-  const glm::vec4 clip = f.view_projection * glm::vec4(p, 1.0f);
-  const float nx = clip.x / clip.w, ny = clip.y / clip.w;
-  return {(nx * 0.5f + 0.5f) * f.width, (0.5f - ny * 0.5f) * f.height};
+  return clip_to_pixels(f.view_projection, f.width, f.height, p);
+}
+
+glm::dvec2 project_to_pixels(const glm::dmat4& view_projection, int width, int height,
+                             const glm::dvec3& p) {
+  return clip_to_pixels(view_projection, width, height, p);
 }
 
 }  // namespace pyro

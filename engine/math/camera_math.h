@@ -1,6 +1,7 @@
 #pragma once
 // Camera frames and projections (right-handed, camera looks down -z, GL clip depth [-1, 1]).
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace pyro {
@@ -30,5 +31,9 @@ inline float view_depth(const CameraFrame& f, const glm::vec3& p) {
 
 // Pixel coordinates (x right, y down, pixel centres at +0.5) of world point p.
 glm::vec2 project_to_pixels(const CameraFrame& f, const glm::vec3& p);
+// The same mapping in double precision through a double view-projection matrix (for analyses,
+// e.g. with make_eye_matrices in stereo_projection.h).
+glm::dvec2 project_to_pixels(const glm::dmat4& view_projection, int width, int height,
+                             const glm::dvec3& p);
 
 }  // namespace pyro

@@ -1,4 +1,6 @@
 // pyro analyze footprint --size N --intervals K [--rule R] [--json]
+// and the registration of the other analyses: projection-error (command_analyze_alignment.cpp)
+// and stereo (command_analyze_stereo.cpp).
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -67,6 +69,8 @@ void add_analyze_commands(CLI::App& app) {
   cmd->add_flag("--json", fp->json, "Print one JSON object");
   cmd->callback([fp] { run_footprint(*fp); });
   add_billboard_mode_analysis(*analyze);
+  add_analyze_projection_error_command(*analyze);
+  add_analyze_stereo_command(*analyze);
 }
 
 }  // namespace pyro::cli

@@ -13,4 +13,8 @@ void add_billboard_mode_analysis(CLI::App& analyze);
 // `pyro bench vdb`, registered by add_bench_commands.
 void add_bench_vdb_command(CLI::App& bench);
 
+// Subcommands of `pyro analyze`, registered by add_analyze_commands.
+void add_analyze_projection_error_command(CLI::App& analyze);  // command_analyze_alignment.cpp
+void add_analyze_stereo_command(CLI::App& analyze);            // command_analyze_stereo.cpp
+
 }  // namespace pyro::cli

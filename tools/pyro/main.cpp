@@ -1,6 +1,6 @@
 // pyro: the Pyrocumulus command line. Exit status: 0 success, 1 internal error, 2 a user error
 // (bad scene file, bad argument; the message names the file and the place), 3 no usable GPU
-// context.
+// context; a missing or failing helper program (the plotting script) is a 1 with its own message.
 #include <cstdio>
 #include <exception>
 
@@ -9,6 +9,7 @@
 #include "engine/core/user_error.h"
 #include "engine/gpu/gpu_error.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/external_tool_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Pyrocumulus: real-time gaseous phenomena (clouds, fog, mist) splatted as "
@@ -29,6 +30,9 @@ int main(int argc, char** argv) {
   } catch (const pyro::gpu::GpuError& e) {
     std::fprintf(stderr, "pyro: GPU error: %s\n", e.what());
     return 3;
+  } catch (const pyro::cli::ExternalToolError& e) {
+    std::fprintf(stderr, "pyro: error: %s\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pyro: internal error: %s\n", e.what());
     return 1;
