@@ -4,8 +4,10 @@
 //  - facing the viewplane: every billboard of an eye shares the camera's right and up axes;
 //  - facing the viewpoint: each billboard turns to the eye. Its right axis is the camera's up
 //    crossed with the direction to the eye, u = up x (V - C) normalised (paper section 3.1),
-//    and its up axis completes the frame. The same construction is in
-//    engine/math/billboard_alignment (viewpoint_billboard_basis) and tested there.
+//    and its up axis completes the frame. The same construction is
+//    engine/math/billboard_alignment.h's viewpoint_facing_axes (reference up = the camera's up,
+//    fallback = the camera's right), tested there and, against this shader's images, in
+//    tests/render/billboard_alignment_render_test.cpp.
 layout(location = 0) in vec4 a_center_radius;  // world xyz, radius
 layout(location = 1) in vec4 a_color_density;  // linear rgb, density rho
 
@@ -28,12 +30,15 @@ void main() {
   vec3 up = u_up;
   if (u_face_viewpoint != 0) {
     vec3 to_eye = u_eye - center;
-    vec3 r = cross(u_up, to_eye);
-    float len = length(r);
-    // A particle at the eye, or straight above or below it, keeps the viewplane axes.
-    if (len > 1e-6 * max(length(to_eye), 1e-30)) {
-      right = r / len;
-      up = normalize(cross(to_eye, right));
+    float distance = length(to_eye);
+    // A particle at the eye itself keeps the viewplane axes.
+    if (distance > 0.0) {
+      vec3 n = to_eye / distance;
+      vec3 r = cross(u_up, to_eye);
+      // Straight above or below the eye: the camera's right, made normal to n.
+      if (length(r) <= 64.0 * 1.1920929e-7 * distance) r = u_right - dot(u_right, n) * n;
+      right = normalize(r);
+      up = cross(n, right);
     }
   }
   vec3 world = center + (right * corner.x + up * corner.y) * a_center_radius.w;
