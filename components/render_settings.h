@@ -27,6 +27,7 @@ struct RenderSettings {
   glm::vec3 light_color{1.0f, 1.0f, 1.0f};
   glm::vec3 ambient{0.35f, 0.38f, 0.45f};
   BillboardAlignment alignment = BillboardAlignment::viewplane;
+  ParticleShape particles = ParticleShape::gaussian;
   float layer_scale = 1.0f;  // particle layer size as a fraction of the frame
   StereoMode stereo_mode = StereoMode::mono;
 };

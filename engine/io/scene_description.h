@@ -27,8 +27,16 @@ struct CameraDescription {
 // viewplane (one rotation per eye) or each facing the viewpoint (one rotation per particle).
 enum class BillboardAlignment { viewplane, viewpoint };
 
+// What a particle is when drawn: a Gaussian splat (Johnson & McAllister 2005: density is the
+// opacity at the kernel's centre), or a sphere of homogeneous medium (Umenhoffer et al. 2006:
+// density is the extinction coefficient tau, per unit length) drawn as a spherical billboard
+// (opacity from the real path length, clipped by the scene and the near plane) or as the planar
+// billboard it replaces (for comparison: it clips against geometry and pops at the near plane).
+enum class ParticleShape { gaussian, spherical, planar };
+
 struct RenderDescription {
   BillboardAlignment billboards = BillboardAlignment::viewplane;
+  ParticleShape particles = ParticleShape::gaussian;
   // Particles are drawn into a layer of this fraction of the frame's size, then upsampled and
   // composited over the opaque scene: 1, 0.5, 0.25 or 0.125.
   float layer_scale = 1.0f;

@@ -614,6 +614,8 @@ std::size_t read_choice(ObjectReader& r, std::string_view key,
 void read_render(ObjectReader& r, RenderDescription& d) {
   d.billboards = static_cast<BillboardAlignment>(
       read_choice(r, "billboards", {"viewplane", "viewpoint"}, static_cast<std::size_t>(d.billboards)));
+  d.particles = static_cast<ParticleShape>(read_choice(
+      r, "particles", {"gaussian", "spherical", "planar"}, static_cast<std::size_t>(d.particles)));
   r.number("layer_scale", Range{0.0, 1.0, true, false}, d.layer_scale);
   if (d.layer_scale != 1.0f && d.layer_scale != 0.5f && d.layer_scale != 0.25f &&
       d.layer_scale != 0.125f) {

@@ -6,6 +6,9 @@
 #include "components/view.h"
 #include "engine/ecs/world.h"
 #include "systems/billboard_render/billboard_renderer.h"
+#include "systems/billboard_render/sphere_billboard_renderer.h"
+
+#include <algorithm>
 
 namespace pyro {
 
@@ -16,6 +19,11 @@ void draw_particles_for_view(BillboardRenderer& renderer, const DrawList& list,
     renderer.draw(list, frame, *targets.scene, alignment, shading);
     return;
   }
+  prepare_layer(targets);
+  renderer.draw(list, frame, *targets.layer, alignment, shading);
+}
+
+void prepare_layer(EyeTargets& targets) {
   // Reduced resolution (Umenhoffer et al. 2006, section 4): the layer starts transparent, with
   // the scene's depth point-sampled down so opaque geometry still hides particles.
   const gpu::RenderTarget& scene = *targets.scene;
@@ -25,7 +33,6 @@ void draw_particles_for_view(BillboardRenderer& renderer, const DrawList& list,
                          GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearNamedFramebufferfv(layer.framebuffer(), GL_COLOR, 0, clear);
-  renderer.draw(list, frame, layer, alignment, shading);
 }
 
 ecs::SystemDesc billboard_render_system() {
@@ -36,11 +43,24 @@ ecs::SystemDesc billboard_render_system() {
             if (!lists) return;
             const View& view = world.resource<View>();
             GpuFrame& frame = world.resource<GpuFrame>();
-            const BillboardAlignment alignment = world.resource<RenderSettings>().alignment;
-            BillboardRenderer& renderer = world.resource<BillboardRenderer>();
-            for (size_t v = 0; v < view.eyes.size() && v < frame.eyes.size() && v < lists->eyes.size(); ++v)
-              draw_particles_for_view(renderer, lists->eyes[v], view.eyes[v], frame.eyes[v], alignment,
-                                      BillboardShading::kernel);
+            const RenderSettings& settings = world.resource<RenderSettings>();
+            const size_t views = std::min({view.eyes.size(), frame.eyes.size(), lists->eyes.size()});
+            if (settings.particles == ParticleShape::gaussian) {
+              BillboardRenderer& renderer = world.resource<BillboardRenderer>();
+              for (size_t v = 0; v < views; ++v)
+                draw_particles_for_view(renderer, lists->eyes[v], view.eyes[v], frame.eyes[v],
+                                        settings.alignment, BillboardShading::kernel);
+              return;
+            }
+            if (!world.has_resource<SphereBillboardRenderer>()) world.set_resource<SphereBillboardRenderer>();
+            SphereBillboardRenderer& spheres = world.resource<SphereBillboardRenderer>();
+            for (size_t v = 0; v < views; ++v) {
+              EyeTargets& t = frame.eyes[v];
+              if (t.layer) prepare_layer(t);
+              spheres.draw(lists->eyes[v], view.eyes[v], t.layer ? *t.layer : *t.scene,
+                           t.scene->depth_texture(), t.scene->width(), t.scene->height(),
+                           settings.particles == ParticleShape::planar);
+            }
           }};
 }
 

@@ -13,6 +13,10 @@ void draw_particles_for_view(BillboardRenderer& renderer, const DrawList& list,
                              const CameraFrame& frame, EyeTargets& targets,
                              BillboardAlignment alignment, BillboardShading shading);
 
+// Readies a view's reduced-resolution layer: transparent, with the scene's depth point-sampled
+// down so that opaque geometry still hides depth-tested particles.
+void prepare_layer(EyeTargets& targets);
+
 ecs::SystemDesc billboard_render_system();
 
 }  // namespace pyro

@@ -20,9 +20,6 @@ BillboardRenderer::BillboardRenderer(const FootprintTable& table)
   glTextureParameteri(kernel_texture_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(kernel_texture_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(kernel_texture_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-
-  instances_ = gpu::make_buffer();
-  vao_ = gpu::make_vertex_array();
 }
 
 void BillboardRenderer::draw(const DrawList& list, const CameraFrame& frame,
@@ -30,28 +27,7 @@ void BillboardRenderer::draw(const DrawList& list, const CameraFrame& frame,
                              BillboardShading shading) {
   const size_t n = list.size();
   if (n == 0) return;
-  const size_t half = n * sizeof(glm::vec4);
-  if (n > instance_capacity_) {
-    instances_ = gpu::make_buffer();
-    instance_capacity_ = n + n / 2;
-    glNamedBufferStorage(instances_.get(),
-                         static_cast<GLsizeiptr>(2 * instance_capacity_ * sizeof(glm::vec4)),
-                         nullptr, GL_DYNAMIC_STORAGE_BIT);
-  }
-  const size_t color_offset = instance_capacity_ * sizeof(glm::vec4);
-  glNamedBufferSubData(instances_.get(), 0, static_cast<GLsizeiptr>(half), list.center_radius.data());
-  glNamedBufferSubData(instances_.get(), static_cast<GLintptr>(color_offset),
-                       static_cast<GLsizeiptr>(half), list.color_density.data());
-  const GLuint vao = vao_.get();
-  glVertexArrayVertexBuffer(vao, 0, instances_.get(), 0, sizeof(glm::vec4));
-  glVertexArrayVertexBuffer(vao, 1, instances_.get(), static_cast<GLintptr>(color_offset),
-                            sizeof(glm::vec4));
-  for (GLuint a = 0; a < 2; ++a) {
-    glEnableVertexArrayAttrib(vao, a);
-    glVertexArrayAttribFormat(vao, a, 4, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao, a, a);
-    glVertexArrayBindingDivisor(vao, a, 1);
-  }
+  const GLuint vao = instances_.upload(list);
 
   target.bind();
   glEnable(GL_DEPTH_TEST);

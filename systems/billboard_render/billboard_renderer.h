@@ -8,6 +8,7 @@
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
 #include "engine/math/footprint.h"
+#include "systems/billboard_render/instance_buffer.h"
 
 namespace pyro {
 
@@ -28,9 +29,7 @@ class BillboardRenderer {
   FootprintTable table_;
   gpu::Program kernel_program_, trivial_program_;
   gpu::Texture kernel_texture_;
-  gpu::Buffer instances_;
-  size_t instance_capacity_ = 0;
-  gpu::VertexArray vao_;
+  InstanceBuffer instances_;
 };
 
 }  // namespace pyro

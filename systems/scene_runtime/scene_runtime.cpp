@@ -50,6 +50,7 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   settings.light_color = scene.light.color;
   settings.ambient = scene.light.ambient;
   settings.alignment = options.alignment.value_or(scene.render.billboards);
+  settings.particles = options.particles.value_or(scene.render.particles);
   settings.layer_scale = options.layer_scale.value_or(scene.render.layer_scale);
   settings.stereo_mode = options.stereo_mode;
   world_.set_resource<RenderSettings>(settings);

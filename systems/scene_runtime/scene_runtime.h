@@ -31,6 +31,7 @@ struct RuntimeOptions {
   int height_override = 0;
   StereoMode stereo_mode = StereoMode::mono;
   std::optional<BillboardAlignment> alignment;  // replaces the scene's choice
+  std::optional<ParticleShape> particles;       // replaces the scene's choice
   std::optional<float> layer_scale;             // replaces the scene's choice
   std::optional<float> interocular;
   std::optional<float> zero_parallax_distance;

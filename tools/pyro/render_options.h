@@ -28,7 +28,14 @@ inline const std::map<std::string, BillboardAlignment>& alignment_names() {
   return names;
 }
 
-// Adds --stereo, --billboards, --layer-scale, --interocular, --zero-parallax to `cmd`.
+inline const std::map<std::string, ParticleShape>& particle_shape_names() {
+  static const std::map<std::string, ParticleShape> names = {{"gaussian", ParticleShape::gaussian},
+                                                             {"spherical", ParticleShape::spherical},
+                                                             {"planar", ParticleShape::planar}};
+  return names;
+}
+
+// Adds --stereo, --billboards, --particles, --layer-scale, --interocular, --zero-parallax.
 inline void add_render_options(CLI::App* cmd, RuntimeOptions& o) {
   cmd->add_option("--stereo", o.stereo_mode,
                   "Stereo output: mono, left-right (two files per frame), side-by-side, "
@@ -40,6 +47,11 @@ inline void add_render_options(CLI::App* cmd, RuntimeOptions& o) {
          [&o](const std::string& v) { o.alignment = alignment_names().at(v); },
          "Billboard alignment: viewplane or viewpoint (default: the scene's)")
       ->check(CLI::IsMember(alignment_names()));
+  cmd->add_option_function<std::string>(
+         "--particles",
+         [&o](const std::string& v) { o.particles = particle_shape_names().at(v); },
+         "Particles as gaussian splats, spherical billboards or planar billboards (default: the scene's)")
+      ->check(CLI::IsMember(particle_shape_names()));
   cmd->add_option_function<float>(
          "--layer-scale", [&o](float v) { o.layer_scale = v; },
          "Particle layer resolution as a fraction of the frame: 1, 0.5, 0.25, 0.125")

@@ -1,0 +1,32 @@
+#include "systems/billboard_render/instance_buffer.h"
+
+namespace pyro {
+
+InstanceBuffer::InstanceBuffer() : buffer_(gpu::make_buffer()), vao_(gpu::make_vertex_array()) {}
+
+GLuint InstanceBuffer::upload(const DrawList& list) {
+  const size_t n = list.size();
+  if (n > capacity_) {
+    buffer_ = gpu::make_buffer();
+    capacity_ = n + n / 2;
+    glNamedBufferStorage(buffer_.get(), static_cast<GLsizeiptr>(2 * capacity_ * sizeof(glm::vec4)),
+                         nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  const size_t bytes = n * sizeof(glm::vec4);
+  const size_t second = capacity_ * sizeof(glm::vec4);
+  glNamedBufferSubData(buffer_.get(), 0, static_cast<GLsizeiptr>(bytes), list.center_radius.data());
+  glNamedBufferSubData(buffer_.get(), static_cast<GLintptr>(second), static_cast<GLsizeiptr>(bytes),
+                       list.color_density.data());
+  const GLuint vao = vao_.get();
+  glVertexArrayVertexBuffer(vao, 0, buffer_.get(), 0, sizeof(glm::vec4));
+  glVertexArrayVertexBuffer(vao, 1, buffer_.get(), static_cast<GLintptr>(second), sizeof(glm::vec4));
+  for (GLuint a = 0; a < 2; ++a) {
+    glEnableVertexArrayAttrib(vao, a);
+    glVertexArrayAttribFormat(vao, a, 4, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao, a, a);
+    glVertexArrayBindingDivisor(vao, a, 1);
+  }
+  return vao;
+}
+
+}  // namespace pyro
