@@ -72,6 +72,37 @@ struct MeshDescription {
   glm::vec3 color{0.5f, 0.5f, 0.5f};         // linear albedo, each in [0, 1]
 };
 
+// A volume read from a file: an OpenVDB grid imported as Gaussian particles when the scene is
+// loaded (systems/cloud_import), or a particle file (.pyrop, docs/particle_format.md) made by
+// `pyro import-vdb`. Paths are resolved against the scene file's folder by the loader, which also
+// chooses between `file` and `fallback` (the first that exists).
+enum class VolumeFileKind { vdb, particles };
+
+struct VolumeDescription {
+  std::string name;                          // optional, for reports
+  std::string file;                          // as written in the scene
+  std::string fallback;                      // as written; empty: none
+  std::string path;                          // resolved: the file that will be read
+  VolumeFileKind kind = VolumeFileKind::vdb; // of `path`, from its extension
+  bool used_fallback = false;                // `file` was absent and `fallback` was found
+  std::string pointer;                       // JSON pointer of the entry, e.g. "/volumes/0"
+  // VDB only: which grid (as `pyro import-vdb --grid / --grid-index`), the image error target
+  // that sets the particle count, and the extinction per unit density (0: automatic, see
+  // default_extinction in systems/cloud_import/cloud_import.h).
+  std::string grid;                          // empty: "density", else the first float grid
+  int grid_index = -1;                       // >= 0: overrides `grid`
+  float error = 0.03f;                       // (0, 1]
+  float extinction = 0.0f;                   // >= 0, world units^-1 per unit density
+  // Placement: p_scene = position + scale * (p_file - anchor), where anchor is the centre of the
+  // particles' bounding box (anchor "center") or the file's origin (anchor "origin"). `size`,
+  // when given, sets scale so that the bounding box's longest side is `size` world units. Radii
+  // scale too; opacities do not (a change of units: the volume looks the same at any size).
+  bool anchor_center = true;
+  glm::vec3 position{0.0f, 0.0f, 0.0f};
+  float scale = 1.0f;                        // > 0
+  float size = 0.0f;                         // > 0 when given; excludes `scale`
+};
+
 struct FootprintDescription {
   int size = 64;        // table is size x size, 2 .. 4096 (Johnson & McAllister eq. 4)
   int intervals = 100;  // composite quadrature intervals along z, 1 .. 100000
@@ -91,6 +122,7 @@ struct SceneDescription {
   RenderDescription render;
   std::vector<CloudDescription> clouds;
   std::vector<MeshDescription> meshes;
+  std::vector<VolumeDescription> volumes;
 };
 
 }  // namespace pyro

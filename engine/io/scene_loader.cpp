@@ -623,6 +623,109 @@ void read_render(ObjectReader& r, RenderDescription& d) {
   }
 }
 
+// Volume files: a path ending in .vdb or .pyrop (any case).
+bool ends_with_ci(std::string_view s, std::string_view suffix) {
+  if (s.size() < suffix.size()) return false;
+  for (std::size_t i = 0; i < suffix.size(); ++i) {
+    char c = s[s.size() - suffix.size() + i];
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    if (c != suffix[i]) return false;
+  }
+  return true;
+}
+
+std::string read_volume_path(ObjectReader& r, std::string_view key, const json& v,
+                             VolumeFileKind& kind) {
+  const std::string expected =
+      "expected the path of a volume file ending in \".vdb\" (OpenVDB) or \".pyrop\" (particles), "
+      "relative to the scene file's folder";
+  if (!v.is_string() || v.get<std::string>().empty())
+    r.at(key).fail(expected + ", found " + describe(v));
+  const std::string path = v.get<std::string>();
+  if (ends_with_ci(path, ".vdb"))
+    kind = VolumeFileKind::vdb;
+  else if (ends_with_ci(path, ".pyrop"))
+    kind = VolumeFileKind::particles;
+  else
+    r.at(key).fail(expected + ", found " + describe(v));
+  return path;
+}
+
+// `relative` against the scene file's folder (absolute paths stay as they are).
+std::string resolve_against(const std::string& scene_file, const std::string& relative) {
+  namespace fs = std::filesystem;
+  const fs::path p(relative);
+  if (p.is_absolute()) return p.lexically_normal().string();
+  return (fs::path(scene_file).parent_path() / p).lexically_normal().string();
+}
+
+bool is_regular_file(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene_file) {
+  v.pointer = r.where().pointer;
+  r.string("name", v.name);
+  VolumeFileKind file_kind = VolumeFileKind::vdb, fallback_kind = VolumeFileKind::vdb;
+  v.file = read_volume_path(
+      r, "file",
+      r.require("file", "the path of a volume file (.vdb or .pyrop), relative to the scene file's folder"),
+      file_kind);
+  bool has_fallback = false;
+  if (const json* f = r.find("fallback")) {
+    v.fallback = read_volume_path(r, "fallback", *f, fallback_kind);
+    has_fallback = true;
+  }
+  const bool any_vdb = file_kind == VolumeFileKind::vdb ||
+                       (has_fallback && fallback_kind == VolumeFileKind::vdb);
+  // Keys that only mean something for an OpenVDB file.
+  const auto vdb_only = [&](std::string_view key) {
+    if (!any_vdb && r.find(key) != nullptr) {
+      r.at(key).fail("unexpected key " + in_quotes(key) + ": it applies to OpenVDB (.vdb) volumes, "
+                     "and " + in_quotes(v.file) + (has_fallback ? " and its fallback are" : " is") +
+                     " a particle file (.pyrop)");
+    }
+  };
+  for (std::string_view key : {"grid", "grid_index", "error", "extinction"}) vdb_only(key);
+  r.string("grid", v.grid);
+  if (r.find("grid_index") != nullptr) {
+    r.integer("grid_index", 0, 1'000'000, v.grid_index);
+    if (r.find("grid") != nullptr)
+      r.at("grid_index").fail("expected either \"grid\" or \"grid_index\", found both");
+  }
+  r.number("error", Range{0.0, 1.0, true, false}, v.error);
+  r.number("extinction", kPositive, v.extinction);
+  v.anchor_center = read_choice(r, "anchor", {"center", "origin"}, 0) == 0;
+  r.vec3("position", kAnyRange, v.position);
+  r.number("scale", kPositive, v.scale);
+  if (r.find("size") != nullptr) {
+    r.number("size", kPositive, v.size);
+    if (r.find("scale") != nullptr)
+      r.at("size").fail("expected either \"scale\" or \"size\", found both");
+  }
+
+  // The file, else the fallback: the first that exists.
+  const std::string file_path = resolve_against(scene_file, v.file);
+  if (is_regular_file(file_path)) {
+    v.path = file_path;
+    v.kind = file_kind;
+  } else if (has_fallback) {
+    const std::string fallback_path = resolve_against(scene_file, v.fallback);
+    if (!is_regular_file(fallback_path)) {
+      r.at("file").fail("expected an existing volume file, found neither " + in_quotes(file_path) +
+                        " nor its fallback " + in_quotes(fallback_path) +
+                        " (paths are relative to the scene file's folder)");
+    }
+    v.path = fallback_path;
+    v.kind = fallback_kind;
+    v.used_fallback = true;
+  } else {
+    r.at("file").fail("expected an existing volume file, found no file at " + in_quotes(file_path) +
+                      " (paths are relative to the scene file's folder)");
+  }
+}
+
 SceneDescription read_scene(ObjectReader& r) {
   SceneDescription s;
   r.string("name", s.name);
@@ -644,6 +747,9 @@ SceneDescription read_scene(ObjectReader& r) {
             [&](ObjectReader& c, std::size_t) { read_cloud(c, s.clouds.emplace_back()); });
   r.objects("meshes", "an object describing a mesh",
             [&](ObjectReader& m, std::size_t) { read_mesh(m, s.meshes.emplace_back()); });
+  r.objects("volumes", "an object describing a volume", [&](ObjectReader& v, std::size_t) {
+    read_volume(v, s.volumes.emplace_back(), *r.where().file);
+  });
   r.finish();
   return s;
 }

@@ -68,8 +68,17 @@ std::vector<GaussianParticle> import_cloud(const DenseGrid& grid, const CloudImp
 
   // Lighting: transmittance to the light at every voxel.
   auto t0 = Clock::now();
-  std::vector<float> lit = light_optical_depth_sweep(grid, med);
-  for (float& v : lit) v = std::exp(-v);
+  std::vector<float> lit = light_optical_depth_sweep(grid, med, opt.threads);
+  // Transmittance, only where there is density (elsewhere it is never read: every use is
+  // weighted by the density).
+  {
+    const int planes = grid.dims[2];
+    const size_t plane = size_t(grid.dims[0]) * grid.dims[1];
+    parallel_rows(planes, opt.threads, [&](int z) {
+      for (size_t i = size_t(z) * plane, e = i + plane; i < e; ++i)
+        lit[i] = grid.values[i] != 0.0f ? std::exp(-lit[i]) : 1.0f;
+    });
+  }
   rep.light_seconds = seconds_since(t0);
 
   t0 = Clock::now();

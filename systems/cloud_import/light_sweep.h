@@ -14,6 +14,8 @@
 
 namespace pyro {
 
-std::vector<float> light_optical_depth_sweep(const DenseGrid& grid, const VolumeMedium& medium);
+// threads: 0 for the hardware concurrency; the result is the same for every thread count.
+std::vector<float> light_optical_depth_sweep(const DenseGrid& grid, const VolumeMedium& medium,
+                                             int threads = 0);
 
 }  // namespace pyro

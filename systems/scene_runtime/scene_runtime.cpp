@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "components/camera.h"
@@ -14,6 +15,7 @@
 #include "components/particle_set.h"
 #include "components/render_settings.h"
 #include "components/stereo_camera.h"
+#include "components/volume_source.h"
 #include "engine/core/rng.h"
 #include "engine/io/png_file.h"
 #include "engine/math/footprint.h"
@@ -21,6 +23,7 @@
 #include "systems/billboard_render/billboard_render_system.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/camera/camera_system.h"
+#include "systems/cloud_import/scene_volume.h"
 #include "systems/composite/composite_systems.h"
 #include "systems/composite/frame_targets.h"
 #include "systems/emitter/cloud_emitter_system.h"
@@ -89,6 +92,33 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     c.jitter = d.jitter;
     world_.emplace<CloudVolume>(e, c);
     world_.emplace<ParticleSet>(e, ParticleSet{ParticlePool(d.count)});
+  }
+  // Volumes: particles read or imported now (errors name the scene, the entry and the file), then
+  // fixed; the sorting and billboard systems draw them like any other ParticleSet.
+  for (const VolumeDescription& v : scene.volumes) {
+    if (v.used_fallback) {
+      std::fprintf(stderr, "pyro: %s: %s: volume file \"%s\" not found; using the fallback \"%s\"\n",
+                   scene.file.c_str(), v.pointer.c_str(), v.file.c_str(), v.path.c_str());
+    } else {
+      std::fprintf(stderr, "pyro: %s: %s: using volume file \"%s\"\n", scene.file.c_str(),
+                   v.pointer.c_str(), v.path.c_str());
+    }
+    SceneVolume loaded = load_scene_volume(scene, v);
+    if (!loaded.note.empty())
+      std::fprintf(stderr, "pyro: %s: %s\n", v.path.c_str(), loaded.note.c_str());
+    const ecs::Entity e = world_.create();
+    ParticlePool pool(loaded.particles.size());
+    for (const GaussianParticle& p : loaded.particles) {
+      ParticleInit init;
+      init.position = {p.x, p.y, p.z};
+      init.radius = p.radius;
+      init.density = p.density;
+      init.color = {p.r, p.g, p.b};
+      pool.spawn(init);
+    }
+    world_.emplace<ParticleSet>(e, ParticleSet{std::move(pool)});
+    world_.emplace<VolumeSource>(
+        e, VolumeSource{v.path, v.used_fallback, loaded.active_voxels, loaded.particles.size()});
   }
   for (const MeshDescription& m : scene.meshes) {
     world_.emplace<MeshInstance>(world_.create(), MeshInstance{m.kind, m.position, m.scale, m.color});

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "systems/cloud_import/cloud_import.h"
@@ -78,6 +79,47 @@ TEST(CloudImport, EmptyGridGivesNoParticles) {
   CloudImportReport rep;
   EXPECT_TRUE(import_cloud(g, {}, &rep).empty());
   EXPECT_EQ(rep.particles, 0u);
+}
+
+}  // namespace
+}  // namespace pyro
+
+namespace pyro {
+namespace {
+
+// The light sweep shares each slice's rows among threads and the octree its top slabs: the
+// particles must be bit-for-bit the same whatever the thread count, for every sweep axis.
+TEST(CloudImport, ResultsDoNotDependOnTheThreadCount) {
+  DenseGrid g;
+  g.dims = {37, 29, 23};
+  g.values.assign(size_t(37) * 29 * 23, 0.0f);
+  uint64_t state = 12345;
+  for (float& v : g.values) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    const float r = float(state >> 40) / float(1 << 24);
+    v = r < 0.5f ? 0.0f : r;
+  }
+  g.index_to_world = glm::dmat4(0.5);
+  g.index_to_world[3] = glm::dvec4(1.0, 2.0, 3.0, 1.0);
+  g.active_voxels = g.values.size() / 2;
+  g.max_value = 1.0f;
+  const glm::dvec3 directions[] = {{-0.4, -1.0, -0.3}, {1.0, 0.2, -0.5}, {0.1, 0.3, 1.0}, {-0.7, 0.7, 0.1}};
+  for (const glm::dvec3& dir : directions) {
+    CloudImportOptions opt;
+    opt.medium.extinction = 0.8;
+    opt.medium.light_direction = dir;
+    opt.tau_tolerance = 0.1;
+    opt.threads = 1;
+    const std::vector<GaussianParticle> one = import_cloud(g, opt);
+    ASSERT_FALSE(one.empty());
+    for (int t : {2, 3, 7}) {
+      opt.threads = t;
+      const std::vector<GaussianParticle> many = import_cloud(g, opt);
+      ASSERT_EQ(many.size(), one.size()) << "threads " << t;
+      EXPECT_EQ(std::memcmp(many.data(), one.data(), one.size() * sizeof(GaussianParticle)), 0)
+          << "threads " << t << " light " << dir.x << " " << dir.y << " " << dir.z;
+    }
+  }
 }
 
 }  // namespace

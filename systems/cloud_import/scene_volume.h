@@ -1,0 +1,31 @@
+#pragma once
+// A scene's `volumes[]` entry made into Gaussian particles: a particle file is read as it is, an
+// OpenVDB grid is imported (cloud_import.h) with the scene's light, then the placement
+// (position, scale or size, anchor; engine/io/scene_description.h) is applied.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "components/gaussian_particle.h"
+#include "engine/io/scene_description.h"
+
+namespace pyro {
+
+struct SceneVolume {
+  std::vector<GaussianParticle> particles;
+  uint64_t active_voxels = 0;  // of the imported grid (0 for a particle file)
+  std::string grid;            // the grid imported (empty for a particle file)
+  std::string note;            // the reader's note when the grid was chosen by default
+};
+
+// Throws UserError(scene file, entry pointer + "/file" or "/fallback", why) when the file cannot
+// be read or holds no usable grid; the message names the volume file. `threads` as in
+// CloudImportOptions (0: hardware concurrency).
+SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescription& volume,
+                              int threads = 0);
+
+// p' = position + s (p - anchor), radius' = s radius; opacities stay: placement is a change of
+// units, so a volume looks the same at any size (set `extinction` to change how dense it looks).
+void place_volume_particles(std::vector<GaussianParticle>& particles, const VolumeDescription& volume);
+
+}  // namespace pyro

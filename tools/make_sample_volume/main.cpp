@@ -1,0 +1,68 @@
+// make_sample_volume [--seed N] [--width N] [--voxel-size S] [--half] --out FILE.vdb
+// Writes the project's own procedural cloud (engine/volume/procedural_cloud.h) as an OpenVDB float
+// fog volume named "density" through engine/io's writer, so this file never sees OpenVDB's
+// headers. The committed content/volumes/sample_cloud.vdb is this tool's output with the defaults
+// (`cmake --build build --target regenerate_sample_volume`); a test checks that they agree.
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "engine/core/user_error.h"
+#include "engine/volume/procedural_cloud.h"
+
+namespace {
+
+int usage(const char* why) {
+  std::fprintf(stderr,
+               "make_sample_volume: %s\n"
+               "usage: make_sample_volume [--seed N] [--width N] [--voxel-size S] [--half] --out FILE.vdb\n",
+               why);
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  pyro::ProceduralCloudOptions opt;
+  std::string out;
+  bool half = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool has_value = i + 1 < argc;
+    char* end = nullptr;
+    if (a == "--out" && has_value) {
+      out = argv[++i];
+    } else if (a == "--seed" && has_value) {
+      opt.seed = std::strtoull(argv[++i], &end, 10);
+      if (*end != '\0') return usage("--seed expects a non-negative integer");
+    } else if (a == "--width" && has_value) {
+      opt.width = int(std::strtol(argv[++i], &end, 10));
+      if (*end != '\0' || opt.width < 8 || opt.width > 1024) return usage("--width expects an integer in [8, 1024]");
+    } else if (a == "--voxel-size" && has_value) {
+      opt.voxel_size = std::strtod(argv[++i], &end);
+      if (*end != '\0' || !(opt.voxel_size > 0.0 && opt.voxel_size < 1e6))
+        return usage("--voxel-size expects a number in (0, 1e6)");
+    } else if (a == "--half") {
+      half = true;
+    } else {
+      return usage(("unexpected argument \"" + a + "\"").c_str());
+    }
+  }
+  if (out.empty()) return usage("--out FILE.vdb is required");
+  try {
+    const pyro::DenseGrid g = pyro::make_procedural_cloud(opt);
+    const glm::dvec4 t = g.index_to_world[3];
+    pyro::write_vdb_fog_volume(out, g.name, g.origin, g.dims, g.values, opt.voxel_size, {t.x, t.y, t.z},
+                               half);
+    std::printf("{\"out\": \"%s\", \"seed\": %llu, \"dims\": [%d, %d, %d], \"active_voxels\": %llu}\n",
+                out.c_str(), static_cast<unsigned long long>(opt.seed), g.dims[0], g.dims[1], g.dims[2],
+                static_cast<unsigned long long>(g.active_voxels));
+  } catch (const pyro::UserError& e) {
+    std::fprintf(stderr, "make_sample_volume: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "make_sample_volume: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
