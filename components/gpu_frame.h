@@ -18,7 +18,9 @@ struct EyeTargets {
 
 struct GpuFrame {
   std::vector<EyeTargets> eyes;
-  std::unique_ptr<gpu::RenderTarget> output;  // GL_SRGB8_ALPHA8
+  std::unique_ptr<gpu::RenderTarget> output;   // GL_SRGB8_ALPHA8, at the views' size
+  std::unique_ptr<gpu::RenderTarget> display;  // the output upscaled to full size, when the
+                                               // frame scale is below 1 (else null)
 };
 
 }  // namespace pyro

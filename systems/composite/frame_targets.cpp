@@ -9,8 +9,11 @@ int layer_extent(int full, float scale) {
   return std::max(1, static_cast<int>(std::lround(full * static_cast<double>(scale))));
 }
 
-GpuFrame make_gpu_frame(const RenderSettings& s) {
+GpuFrame make_gpu_frame(const RenderSettings& settings) {
   GpuFrame f;
+  RenderSettings s = settings;  // the views' size
+  s.width = layer_extent(settings.width, settings.frame_scale);
+  s.height = layer_extent(settings.height, settings.frame_scale);
   const size_t views = is_stereo(s.stereo_mode) ? 2 : 1;
   for (size_t v = 0; v < views; ++v) {
     EyeTargets t;
@@ -29,6 +32,10 @@ GpuFrame make_gpu_frame(const RenderSettings& s) {
                         s.stereo_mode == StereoMode::left_right;
   f.output = std::make_unique<gpu::RenderTarget>(two_wide ? 2 * s.width : s.width, s.height,
                                                  GL_SRGB8_ALPHA8);
+  if (settings.frame_scale < 1.0f) {
+    f.display = std::make_unique<gpu::RenderTarget>(
+        two_wide ? 2 * settings.width : settings.width, settings.height, GL_SRGB8_ALPHA8);
+  }
   return f;
 }
 

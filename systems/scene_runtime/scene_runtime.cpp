@@ -55,6 +55,7 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   settings.alignment = options.alignment.value_or(scene.render.billboards);
   settings.particles = options.particles.value_or(scene.render.particles);
   settings.layer_scale = options.layer_scale.value_or(scene.render.layer_scale);
+  settings.frame_scale = options.frame_scale;
   settings.stereo_mode = options.stereo_mode;
   world_.set_resource<RenderSettings>(settings);
   FrameClock clock;
@@ -162,10 +163,16 @@ const FrameImage& SceneRuntime::image() {
 
 const RenderSettings& SceneRuntime::settings() { return world_.resource<RenderSettings>(); }
 
+SceneRuntime::OutputImage SceneRuntime::read_output() {
+  const GpuFrame& frame = world_.resource<GpuFrame>();
+  const gpu::RenderTarget& out = frame.display ? *frame.display : *frame.output;
+  return {out.width(), out.height(), out.read_rgba8()};
+}
+
 std::vector<std::string> SceneRuntime::write_png(const std::string& stem) {
-  const gpu::RenderTarget& out = *world_.resource<GpuFrame>().output;
-  const std::vector<uint8_t> rgba = out.read_rgba8();
-  const int w = out.width(), h = out.height();
+  const OutputImage image = read_output();
+  const std::vector<uint8_t>& rgba = image.rgba;
+  const int w = image.width, h = image.height;
   // Drop alpha; in left-right mode the output holds both views side by side: split it.
   auto rgb_columns = [&](int x0, int width) {
     std::vector<uint8_t> rgb(static_cast<size_t>(width) * h * 3);

@@ -33,6 +33,7 @@ struct RuntimeOptions {
   std::optional<BillboardAlignment> alignment;  // replaces the scene's choice
   std::optional<ParticleShape> particles;       // replaces the scene's choice
   std::optional<float> layer_scale;             // replaces the scene's choice
+  float frame_scale = 1.0f;                     // views at this fraction, output upscaled
   std::optional<float> interocular;
   std::optional<float> zero_parallax_distance;
   // Finish the GPU's work after every system, so each system's timing includes the GPU work it
@@ -57,6 +58,12 @@ class SceneRuntime {
   const RenderSettings& settings();
   // The last frame's first view, linear (requires options.readback).
   const FrameImage& image();
+  // The last composed frame as shown (upscaled when the frame scale is below 1), RGBA8 sRGB.
+  struct OutputImage {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgba;
+  };
+  OutputImage read_output();
   // Writes the last composed frame as sRGB PNG: `stem`.png, or `stem`_left.png and
   // `stem`_right.png in left-right mode. Returns the paths written.
   std::vector<std::string> write_png(const std::string& stem);

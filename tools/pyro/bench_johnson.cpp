@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "components/camera.h"
-#include "components/frame_image.h"
+#include "engine/math/color.h"
 #include "engine/io/scene_loader.h"
 #include "engine/core/content_path.h"
 #include "systems/scene_runtime/scene_runtime.h"
@@ -50,23 +50,17 @@ void place_viewer(SceneRuntime& r, double t) {
   });
 }
 
-double rmse(const std::vector<float>& a, const std::vector<float>& b) {
+// RMSE of two composed output images (the anaglyph as shown), decoded to linear RGB.
+double output_rmse(const SceneRuntime::OutputImage& a, const SceneRuntime::OutputImage& b) {
   double sum = 0.0;
   size_t n = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
+  for (size_t i = 0; i < a.rgba.size(); ++i) {
     if (i % 4 == 3) continue;  // alpha carries no image
-    const double d = std::clamp(a[i], 0.0f, 1.0f) - std::clamp(b[i], 0.0f, 1.0f);
+    const double d = srgb_to_linear(a.rgba[i] / 255.0f) - srgb_to_linear(b.rgba[i] / 255.0f);
     sum += d * d;
     ++n;
   }
   return std::sqrt(sum / n);
-}
-
-std::vector<float> both_eyes(SceneRuntime& r) {
-  const FrameImage& img = r.image();
-  std::vector<float> out = img.rgba;
-  out.insert(out.end(), img.right_rgba.begin(), img.right_rgba.end());
-  return out;
 }
 
 }  // namespace
@@ -81,6 +75,7 @@ nlohmann::json bench_johnson(const JohnsonBenchOptions& o) {
     ro.readback = false;
     ro.stereo_mode = StereoMode::anaglyph;
     ro.layer_scale = o.layer_scale;
+    ro.frame_scale = o.frame_scale;
     ro.sync_timing = o.sync_timing;
     SceneRuntime runtime(scene, ro);
     place_viewer(runtime, 0.0);
@@ -102,11 +97,11 @@ nlohmann::json bench_johnson(const JohnsonBenchOptions& o) {
     // What the reduced layer costs in accuracy: the same frames at full resolution.
     nlohmann::json errors = nlohmann::json::array();
     double max_rmse = 0.0;
-    if (o.layer_scale < 1.0f && o.error_samples > 0) {
+    if ((o.layer_scale < 1.0f || o.frame_scale < 1.0f) && o.error_samples > 0) {
       RuntimeOptions reduced = ro, full = ro;
-      reduced.readback = full.readback = true;
       reduced.sync_timing = full.sync_timing = false;
       full.layer_scale = 1.0f;
+      full.frame_scale = 1.0f;
       SceneRuntime measured(scene, reduced), reference(scene, full);
       for (int k = 0; k < o.error_samples; ++k) {
         const double t = (k + 0.5) / o.error_samples;
@@ -114,7 +109,7 @@ nlohmann::json bench_johnson(const JohnsonBenchOptions& o) {
         place_viewer(reference, t);
         measured.step();
         reference.step();
-        const double e = rmse(both_eyes(measured), both_eyes(reference));
+        const double e = output_rmse(measured.read_output(), reference.read_output());
         max_rmse = std::max(max_rmse, e);
         errors.push_back({{"path_t", t}, {"rmse", e}});
       }
@@ -129,6 +124,7 @@ nlohmann::json bench_johnson(const JohnsonBenchOptions& o) {
                       {"paper_avg_fps", p.paper_avg_fps},
                       {"ratio_to_paper", 1000.0 * o.frames / total / p.paper_avg_fps},
                       {"layer_scale", o.layer_scale},
+                      {"frame_scale", o.frame_scale},
                       {"max_rmse_vs_full_resolution", max_rmse},
                       {"rmse_samples", errors}});
   }

@@ -59,9 +59,16 @@ void add_bench_commands(CLI::App& app) {
       "johnson", "The paper's performance test: anaglyph stereo at 1024x768 moving through the volume");
   johnson_cmd->add_option("--frames", johnson->options.frames, "Frames along the path per scene")
       ->check(CLI::Range(2, 100000));
+  johnson_cmd->add_option("--width", johnson->options.width, "Width per eye (the paper: 1024)")
+      ->check(CLI::Range(16, 8192));
+  johnson_cmd->add_option("--height", johnson->options.height, "Height (the paper: 768)")
+      ->check(CLI::Range(16, 8192));
   johnson_cmd->add_option("--layer-scale", johnson->options.layer_scale,
                           "Particle layer resolution: 1, 0.5, 0.25, 0.125")
       ->check(CLI::IsMember({1.0f, 0.5f, 0.25f, 0.125f}));
+  johnson_cmd->add_option("--frame-scale", johnson->options.frame_scale,
+                          "Render the views at this fraction of the output and upscale: 1, 0.5, 0.25")
+      ->check(CLI::IsMember({1.0f, 0.5f, 0.25f}));
   johnson_cmd->add_option("--error-samples", johnson->options.error_samples,
                           "Frames where the layer's RMSE against full resolution is measured")
       ->check(CLI::Range(0, 1000));

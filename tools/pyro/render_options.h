@@ -56,6 +56,9 @@ inline void add_render_options(CLI::App* cmd, RuntimeOptions& o) {
          "--layer-scale", [&o](float v) { o.layer_scale = v; },
          "Particle layer resolution as a fraction of the frame: 1, 0.5, 0.25, 0.125")
       ->check(CLI::IsMember({1.0f, 0.5f, 0.25f, 0.125f}));
+  cmd->add_option("--frame-scale", o.frame_scale,
+                  "Render the views at this fraction of the output size, then upscale: 1, 0.5, 0.25")
+      ->check(CLI::IsMember({1.0f, 0.5f, 0.25f}));
   cmd->add_option_function<float>(
          "--interocular", [&o](float v) { o.interocular = v; },
          "Eye separation in world units (default: the scene's)")
