@@ -7,6 +7,10 @@
 
 #include <glm/vec3.hpp>
 
+#include "components/emitter.h"
+#include "components/particle_dynamics.h"
+#include "components/simulation_environment.h"
+
 namespace pyro {
 
 struct CameraDescription {
@@ -108,6 +112,14 @@ struct FootprintDescription {
   int intervals = 100;  // composite quadrature intervals along z, 1 .. 100000
 };
 
+// An explosion emitter (issue 4): what it spawns (components/emitter.h; its state fields stay at
+// their defaults) and how its particles move (components/particle_dynamics.h). The plain-data
+// components double as the description, so scene keys and component fields cannot drift apart.
+struct EmitterDescription {
+  Emitter emitter;            // emitter.seed is the file's seed, not yet mixed
+  ParticleDynamics dynamics;
+};
+
 struct SceneDescription {
   std::string file;                          // where it was read from
   std::string name;
@@ -123,6 +135,10 @@ struct SceneDescription {
   std::vector<CloudDescription> clouds;
   std::vector<MeshDescription> meshes;
   std::vector<VolumeDescription> volumes;
+  // Shared by every emitter: gravity, wind, ambient temperature, colliders, scene budget.
+  SimulationEnvironment environment;
+  float prewarm = 0.0f;                      // seconds run before frame 0, >= 0
+  std::vector<EmitterDescription> emitters;
 };
 
 }  // namespace pyro

@@ -726,6 +726,156 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
   }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Explosion emitters (issue 4)
+
+bool read_bool(const json& v, const Where& at) {
+  if (!v.is_boolean()) at.fail("expected true or false, found " + describe(v));
+  return v.get<bool>();
+}
+
+// A number (constant), {"min", "max"} (uniform) or {"mean", "stddev"[, "min", "max"]} (normal,
+// clamped to [min, max], by default mean ± 3 stddev).
+Distribution read_distribution(const json& v, const Where& at, const Range& range) {
+  if (v.is_number()) return Distribution::constant(read_number(v, at, range));
+  ObjectReader r(v, at,
+                 "a number, {\"min\": a, \"max\": b} (uniform) or {\"mean\": m, \"stddev\": s} (normal)");
+  Distribution d;
+  const json* mean = r.find("mean");
+  const json* stddev = r.find("stddev");
+  const json* lo = r.find("min");
+  const json* hi = r.find("max");
+  r.finish();
+  if (mean || stddev) {
+    if (!mean || !stddev)
+      at.fail("expected both \"mean\" and \"stddev\" for a normal distribution");
+    const float m = read_number(*mean, at.child("mean"), range);
+    const float sd = read_number(*stddev, at.child("stddev"), kNonNegative);
+    const float a = lo ? read_number(*lo, at.child("min"), range) : std::max<float>(m - 3 * sd, range.lo);
+    const float b = hi ? read_number(*hi, at.child("max"), range) : std::min<float>(m + 3 * sd, range.hi);
+    if (!(a <= m && m <= b))
+      at.fail("expected min <= mean <= max, found " + format_float(a) + ", " + format_float(m) + ", " +
+              format_float(b));
+    return Distribution::normal(m, sd, a, b);
+  }
+  if (!lo || !hi) at.fail("expected \"min\" and \"max\" (uniform) or \"mean\" and \"stddev\" (normal)");
+  const float a = read_number(*lo, at.child("min"), range), b = read_number(*hi, at.child("max"), range);
+  if (!(a <= b)) at.fail("expected min <= max, found " + format_float(a) + " > " + format_float(b));
+  return Distribution::uniform(a, b);
+}
+
+// [[t, value], ...] with t in [0, 1] increasing; value a number or [r, g, b].
+LifeCurve read_curve(const json& v, const Where& at, const Range& range, bool color) {
+  const std::string what = color ? "[t, [r, g, b]]" : "[t, value]";
+  if (!v.is_array() || v.empty())
+    at.fail("expected a non-empty array of keys " + what + " with t in [0, 1] increasing, found " + describe(v));
+  LifeCurve c;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Where k = at.child(i);
+    if (!v[i].is_array() || v[i].size() != 2) k.fail("expected a key " + what + ", found " + describe(v[i]));
+    CurveKey key;
+    key.t = read_number(v[i][0], k.child(std::size_t{0}), kUnit);
+    key.value = color ? read_vec3(v[i][1], k.child(1), range) : glm::vec3(read_number(v[i][1], k.child(1), range));
+    if (!c.keys.empty() && !(key.t > c.keys.back().t))
+      k.child(std::size_t{0}).fail("expected t greater than the previous key's " + format_float(c.keys.back().t) +
+                                   ", found " + format_float(key.t));
+    c.keys.push_back(key);
+  }
+  return c;
+}
+
+void read_dynamics(ObjectReader& r, ParticleDynamics& d) {
+  r.number("gravity_scale", kAnyRange, d.gravity_scale);
+  r.number("buoyancy", kAnyRange, d.buoyancy);
+  r.number("drag", kNonNegative, d.drag);
+  r.number("turbulence", kNonNegative, d.turbulence);
+  r.number("turbulence_frequency", kPositive, d.turbulence_frequency);
+  r.number("turbulence_speed", kAnyRange, d.turbulence_speed);
+  r.integer("turbulence_seed", 0, std::numeric_limits<std::uint64_t>::max(), d.turbulence_seed);
+  r.number("cooling", kNonNegative, d.cooling);
+  r.number("smoke_below", kNonNegative, d.smoke_below);
+  if (const json* v = r.find("collide")) d.collide = read_bool(*v, r.at("collide"));
+  r.number("restitution", kUnit, d.restitution);
+  r.number("friction", kUnit, d.friction);
+  r.object("curves", [&](ObjectReader& c) {
+    if (const json* v = c.find("size")) d.size = read_curve(*v, c.at("size"), kNonNegative, false);
+    if (const json* v = c.find("opacity")) d.opacity = read_curve(*v, c.at("opacity"), kUnit, false);
+    if (const json* v = c.find("temperature"))
+      d.temperature = read_curve(*v, c.at("temperature"), kNonNegative, false);
+    if (const json* v = c.find("color")) d.color = read_curve(*v, c.at("color"), kNonNegative, true);
+  });
+}
+
+void read_emitter(ObjectReader& r, EmitterDescription& out) {
+  Emitter& e = out.emitter;
+  r.string("name", e.name);
+  e.medium = static_cast<ParticleMedium>(
+      read_choice(r, "medium", {"dust", "smoke", "fire"}, static_cast<std::size_t>(e.medium)));
+  r.object("shape", [&](ObjectReader& s) {
+    e.shape = static_cast<EmitterShape>(
+        read_choice(s, "type", {"point", "sphere", "box", "disc"}, static_cast<std::size_t>(e.shape)));
+    s.vec3("position", kAnyRange, e.position);
+    s.number("radius", kNonNegative, e.radius);
+    if (const json* v = s.find("surface")) e.surface = read_bool(*v, s.at("surface"));
+    s.vec3("half_extent", kNonNegative, e.half_extent);
+    s.vec3("axis", kAnyRange, e.axis);
+    require_nonzero(e.axis, s.at("axis"), "disc axis");
+  });
+  r.number("rate", kNonNegative, e.rate);
+  r.number("start", kNonNegative, e.start);
+  r.number("duration", kNonNegative, e.duration);
+  r.objects("bursts", "an object {\"time\": seconds, \"count\": n}", [&](ObjectReader& b, std::size_t) {
+    EmitterBurst burst;
+    b.number("time", kNonNegative, burst.time);
+    burst.count = static_cast<std::uint32_t>(
+        read_integer(b.require("count", "the number of particles, an integer in [0, 10000000]"), b.at("count"), 0,
+                     10'000'000));
+    e.bursts.push_back(burst);
+  });
+  std::stable_sort(e.bursts.begin(), e.bursts.end(),
+                   [](const EmitterBurst& a, const EmitterBurst& b) { return a.time < b.time; });
+  r.vec3("direction", kAnyRange, e.direction);
+  require_nonzero(e.direction, r.at("direction"), "direction");
+  r.number("cone_deg", Range{0.0, 180.0}, e.cone_deg);
+  if (const json* v = r.find("radial")) e.radial = read_bool(*v, r.at("radial"));
+  const std::pair<std::string_view, std::pair<Distribution*, Range>> dists[] = {
+      {"speed", {&e.speed, kNonNegative}},       {"size", {&e.size, kPositive}},
+      {"lifetime", {&e.lifetime, kPositive}},    {"density", {&e.density, kNonNegative}},
+      {"temperature", {&e.temperature, kNonNegative}}};
+  for (const auto& [key, target] : dists)
+    if (const json* v = r.find(key)) *target.first = read_distribution(*v, r.at(key), target.second);
+  r.vec3("color", kNonNegative, e.color);
+  r.integer("budget", 1, 10'000'000, e.budget);
+  r.integer("seed", 0, std::numeric_limits<std::uint64_t>::max(), e.seed);
+  r.object("dynamics", [&](ObjectReader& d) { read_dynamics(d, out.dynamics); });
+}
+
+void read_environment(ObjectReader& r, SimulationEnvironment& env, float& prewarm) {
+  r.vec3("gravity", kAnyRange, env.gravity);
+  r.vec3("wind", kAnyRange, env.wind);
+  r.number("ambient_temperature", kPositive, env.ambient_temperature);
+  r.object("ground", [&](ObjectReader& g) {
+    env.ground = true;
+    g.number("height", kAnyRange, env.ground_height);
+  });
+  r.objects("spheres", "an object {\"center\": [x, y, z], \"radius\": r}", [&](ObjectReader& s, std::size_t) {
+    SphereCollider c;
+    s.vec3("center", kAnyRange, c.center);
+    s.number("radius", kPositive, c.radius);
+    env.spheres.push_back(c);
+  });
+  r.objects("boxes", "an object {\"min\": [x, y, z], \"max\": [x, y, z]}", [&](ObjectReader& b, std::size_t) {
+    BoxCollider c;
+    b.vec3("min", kAnyRange, c.min);
+    b.vec3("max", kAnyRange, c.max);
+    for (glm::length_t i = 0; i < 3; ++i)
+      if (!(c.min[i] < c.max[i])) b.at("max").fail("expected \"min\" < \"max\" on every axis");
+    env.boxes.push_back(c);
+  });
+  r.integer("particle_budget", 1, 100'000'000, env.particle_budget);
+  r.number("prewarm", Range{0.0, 3600.0}, prewarm);
+}
+
 SceneDescription read_scene(ObjectReader& r) {
   SceneDescription s;
   r.string("name", s.name);
@@ -750,6 +900,9 @@ SceneDescription read_scene(ObjectReader& r) {
   r.objects("volumes", "an object describing a volume", [&](ObjectReader& v, std::size_t) {
     read_volume(v, s.volumes.emplace_back(), *r.where().file);
   });
+  r.object("environment", [&](ObjectReader& e) { read_environment(e, s.environment, s.prewarm); });
+  r.objects("emitters", "an object describing an emitter",
+            [&](ObjectReader& e, std::size_t) { read_emitter(e, s.emitters.emplace_back()); });
   r.finish();
   return s;
 }

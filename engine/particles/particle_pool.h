@@ -29,6 +29,8 @@ struct ParticleInit {
   glm::vec3 color{1.0f};
   float lifetime = std::numeric_limits<float>::infinity();
   float temperature = 0.0f;
+  float opacity = 1.0f;       // multiplies density's effect; curves over life drive it
+  uint8_t medium = 0;         // a ParticleMedium (components/particle_medium.h): dust, smoke, fire
 };
 
 class ParticlePool {
@@ -43,6 +45,11 @@ class ParticlePool {
   std::vector<float> radius, density;
   std::vector<float> r, g, b;
   std::vector<float> age, lifetime, temperature;
+  // Explosion media (systems/emitter, systems/animation): opacity in [0, 1] from the opacity
+  // curve over life (1 when none); size0 the radius at birth (the size curve scales it);
+  // medium a ParticleMedium, fire turning to smoke when it cools below its threshold.
+  std::vector<float> opacity, size0;
+  std::vector<uint8_t> medium;
   // Unique within the pool (until 2^32 spawns wrap it): a stable tie-breaker for sorting.
   std::vector<uint32_t> id;
 
@@ -75,6 +82,9 @@ class ParticlePool {
     age[i] = 0.0f;
     lifetime[i] = p.lifetime;
     temperature[i] = p.temperature;
+    opacity[i] = p.opacity;
+    size0[i] = p.radius;
+    medium[i] = p.medium;
     id[i] = next_id_++;
     return i;
   }
@@ -108,17 +118,17 @@ class ParticlePool {
   // Removes all particles. Ids keep counting and rejected() keeps its total.
   void clear() { size_ = 0; }
 
-  // Applies f to every attribute array (14 float arrays, then id), e.g. to permute after a
-  // sort or to check that nothing reallocated.
+  // Applies f to every attribute array (16 float arrays, medium, then id), e.g. to permute
+  // after a sort or to check that nothing reallocated.
   template <class F>
   void for_each_array(F&& f) {
     f(px), f(py), f(pz), f(vx), f(vy), f(vz), f(radius), f(density), f(r), f(g), f(b), f(age),
-        f(lifetime), f(temperature), f(id);
+        f(lifetime), f(temperature), f(opacity), f(size0), f(medium), f(id);
   }
   template <class F>
   void for_each_array(F&& f) const {
     f(px), f(py), f(pz), f(vx), f(vy), f(vz), f(radius), f(density), f(r), f(g), f(b), f(age),
-        f(lifetime), f(temperature), f(id);
+        f(lifetime), f(temperature), f(opacity), f(size0), f(medium), f(id);
   }
 
  private:

@@ -3,10 +3,14 @@
 #include <epoxy/gl.h>
 
 #include <cstdio>
+#include <cmath>
 #include <stdexcept>
 
 #include "components/camera.h"
 #include "components/camera_orbit.h"
+#include "components/emitter.h"
+#include "components/particle_dynamics.h"
+#include "components/simulation_environment.h"
 #include "components/cloud_volume.h"
 #include "components/frame_clock.h"
 #include "components/frame_image.h"
@@ -20,6 +24,8 @@
 #include "engine/io/png_file.h"
 #include "engine/math/footprint.h"
 #include "systems/animation/drift_system.h"
+#include "systems/animation/particle_animation_system.h"
+#include "systems/animation/particle_prewarm.h"
 #include "systems/billboard_render/billboard_render_system.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/camera/camera_system.h"
@@ -27,6 +33,7 @@
 #include "systems/composite/composite_systems.h"
 #include "systems/composite/frame_targets.h"
 #include "systems/emitter/cloud_emitter_system.h"
+#include "systems/emitter/emitter_system.h"
 #include "systems/mesh_render/mesh_render_system.h"
 #include "systems/output/frame_readback_system.h"
 #include "systems/sorting/depth_sort.h"
@@ -121,6 +128,19 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     world_.emplace<VolumeSource>(
         e, VolumeSource{v.path, v.used_fallback, loaded.active_voxels, loaded.particles.size()});
   }
+  world_.set_resource<SimulationEnvironment>(scene.environment);
+  for (size_t k = 0; k < scene.emitters.size(); ++k) {
+    const EmitterDescription& d = scene.emitters[k];
+    const ecs::Entity e = world_.create();
+    Emitter em = d.emitter;
+    // Its own stream: the scene seed mixed with the emitter's seed and its place in the file
+    // (a different odd constant from the clouds', so an emitter and a cloud never share one).
+    em.seed = mix_seeds(scene.seed, d.emitter.seed * 2654435761ull + k + 0x5EEDull);
+    em.rng = Rng(em.seed);
+    world_.emplace<Emitter>(e, std::move(em));
+    world_.emplace<ParticleDynamics>(e, d.dynamics);
+    world_.emplace<ParticleSet>(e, ParticleSet{ParticlePool(d.emitter.budget)});
+  }
   for (const MeshDescription& m : scene.meshes) {
     world_.emplace<MeshInstance>(world_.create(), MeshInstance{m.kind, m.position, m.scale, m.color});
   }
@@ -129,8 +149,12 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   world_.set_resource<BillboardRenderer>(
       make_footprint_table(scene.footprint.size, scene.footprint.intervals));
 
+  if (scene.prewarm > 0.0f)
+    prewarm_particles(world_, static_cast<uint64_t>(std::llround(scene.prewarm / clock.dt)));
+
   std::vector<ecs::SystemDesc> systems = {
-      cloud_emitter_system(), drift_system(),           camera_orbit_system(),
+      cloud_emitter_system(), particle_emitter_system(), drift_system(), particle_animation_system(),
+      camera_orbit_system(),
       depth_sort_system(),    camera_system(),          mesh_render_system(),
       billboard_render_system(), stereo_compose_system()};
   if (options.readback) systems.push_back(frame_readback_system());

@@ -1,14 +1,15 @@
 #pragma once
 // A scene brought to life: the world built from a SceneDescription (a camera entity, one entity
 // per cloud and per mesh, the resources) and the standard schedule of systems:
-//   spawn:     emitter
-//   simulate:  animation, camera_orbit
+//   spawn:     emitter (clouds), particle_emitter (explosion emitters)
+//   simulate:  animation (cloud drift), particle_animation (explosion particles), camera_orbit
 //   sort:      sorting (one draw list per view)
 //   camera:    camera (mono frame and eye frames)
 //   render:    mesh_render, billboard_render (per view; particles into a layer when reduced)
 //   composite: composite (particle layers over the scene, views into the output image)
 //   output:    readback (optional: every view, linear, for tests and measurements)
-// Frame f shows the state after f simulation steps of dt = 1 / fps. Both eyes of a stereo pair
+// Frame f shows the state after f simulation steps of dt = 1 / fps (after prewarm + f steps when
+// the scene asks for a prewarm: those steps run in the constructor). Both eyes of a stereo pair
 // render the same simulation state: simulation runs once per frame.
 #include <memory>
 #include <optional>

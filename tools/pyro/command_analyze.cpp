@@ -1,6 +1,6 @@
 // pyro analyze footprint --size N --intervals K [--rule R] [--json]
 // and the registration of the other analyses: projection-error (command_analyze_alignment.cpp)
-// and stereo (command_analyze_stereo.cpp).
+// stereo (command_analyze_stereo.cpp), blackbody and phase (command_analyze_media.cpp).
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -71,6 +71,7 @@ void add_analyze_commands(CLI::App& app) {
   add_billboard_mode_analysis(*analyze);
   add_analyze_projection_error_command(*analyze);
   add_analyze_stereo_command(*analyze);
+  add_analyze_media_commands(*analyze);
 }
 
 }  // namespace pyro::cli

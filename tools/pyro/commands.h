@@ -16,5 +16,6 @@ void add_bench_vdb_command(CLI::App& bench);
 // Subcommands of `pyro analyze`, registered by add_analyze_commands.
 void add_analyze_projection_error_command(CLI::App& analyze);  // command_analyze_alignment.cpp
 void add_analyze_stereo_command(CLI::App& analyze);            // command_analyze_stereo.cpp
+void add_analyze_media_commands(CLI::App& analyze);  // blackbody, phase: command_analyze_media.cpp
 
 }  // namespace pyro::cli

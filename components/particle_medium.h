@@ -1,0 +1,12 @@
+#pragma once
+// What a particle is a sample of (Umenhoffer et al. 2006, section 3): dust and smoke scatter
+// light (albedo a, density τ, a phase function), fire emits as a black body. Stored per particle
+// in ParticlePool::medium, so a fire particle that cools below its emitter's threshold becomes
+// smoke in place.
+#include <cstdint>
+
+namespace pyro {
+
+enum class ParticleMedium : uint8_t { dust = 0, smoke = 1, fire = 2 };
+
+}  // namespace pyro

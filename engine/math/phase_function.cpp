@@ -1,0 +1,92 @@
+#include "engine/math/phase_function.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace pyro {
+
+namespace {
+constexpr double inv_4pi = 0.25 * std::numbers::inv_pi;
+}
+
+double henyey_greenstein(double mu, double g) {
+  const double d = 1.0 + g * g - 2.0 * g * mu;
+  return inv_4pi * (1.0 - g * g) / (d * std::sqrt(d));
+}
+
+double cornette_shanks(double mu, double g) {
+  const double d = 1.0 + g * g - 2.0 * g * mu;
+  return inv_4pi * 3.0 * (1.0 - g * g) * (1.0 + mu * mu) / (2.0 * (2.0 + g * g) * d * std::sqrt(d));
+}
+
+double cornette_shanks_mean_cosine(double g) {
+  return 3.0 * g * (4.0 + g * g) / (5.0 * (2.0 + g * g));
+}
+
+double phase(PhaseFunction f, double mu, double g) {
+  return f == PhaseFunction::henyey_greenstein ? henyey_greenstein(mu, g) : cornette_shanks(mu, g);
+}
+
+const char* phase_function_name(PhaseFunction f) {
+  return f == PhaseFunction::henyey_greenstein ? "henyey-greenstein" : "cornette-shanks";
+}
+
+bool parse_phase_function(std::string_view name, PhaseFunction& out) {
+  if (name == "henyey-greenstein") out = PhaseFunction::henyey_greenstein;
+  else if (name == "cornette-shanks") out = PhaseFunction::cornette_shanks;
+  else return false;
+  return true;
+}
+
+SphereIntegral integrate_over_sphere(PhaseFunction f, double g, int cos_intervals, int azimuth_steps) {
+  if (cos_intervals < 2 || cos_intervals % 2 != 0 || azimuth_steps < 1)
+    throw std::invalid_argument("integrate_over_sphere: cos_intervals must be even and >= 2");
+  // An oblique incoming direction, unit length.
+  const double in_len = std::sqrt(0.3 * 0.3 + 0.5 * 0.5 + 0.8 * 0.8);
+  const double wx = 0.3 / in_len, wy = -0.5 / in_len, wz = 0.8 / in_len;
+  const double h = 2.0 / cos_intervals;
+  const double dphi = 2.0 * std::numbers::pi / azimuth_steps;
+  SphereIntegral s;
+  for (int i = 0; i <= cos_intervals; ++i) {
+    const double cz = -1.0 + i * h;
+    const double sz = std::sqrt(std::max(0.0, 1.0 - cz * cz));
+    const double simpson = (i == 0 || i == cos_intervals) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    double ring = 0.0, ring_mu = 0.0;
+    for (int k = 0; k < azimuth_steps; ++k) {
+      const double phi = (k + 0.5) * dphi;
+      const double mu = wx * sz * std::cos(phi) + wy * sz * std::sin(phi) + wz * cz;
+      const double p = phase(f, mu, g);
+      ring += p;
+      ring_mu += p * mu;
+    }
+    s.integral += simpson * ring;
+    s.mean_cosine += simpson * ring_mu;
+  }
+  s.integral *= h / 3.0 * dphi;
+  s.mean_cosine *= h / 3.0 * dphi;
+  return s;
+}
+
+PhaseTable make_phase_table(PhaseFunction f, int cos_size, int g_size, double g_min, double g_max) {
+  if (cos_size < 2 || g_size < 2 || !(g_min > -1.0) || !(g_max < 1.0) || !(g_max >= g_min))
+    throw std::invalid_argument("make_phase_table: need sizes >= 2 and -1 < g_min <= g_max < 1");
+  PhaseTable t;
+  t.function = f;
+  t.cos_size = cos_size;
+  t.g_size = g_size;
+  t.g_min = g_min;
+  t.g_max = g_max;
+  t.values.resize(static_cast<std::size_t>(cos_size) * g_size);
+  for (int r = 0; r < g_size; ++r) {
+    const double g = g_min + (g_max - g_min) * r / (g_size - 1);
+    for (int c = 0; c < cos_size; ++c) {
+      const double mu = -1.0 + 2.0 * c / (cos_size - 1);
+      t.values[static_cast<std::size_t>(r) * cos_size + c] = static_cast<float>(phase(f, mu, g));
+    }
+  }
+  return t;
+}
+
+}  // namespace pyro

@@ -1,0 +1,128 @@
+#include "systems/animation/particle_animation_system.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "components/emitter.h"
+#include "components/frame_clock.h"
+#include "components/particle_dynamics.h"
+#include "components/particle_medium.h"
+#include "components/particle_set.h"
+#include "components/simulation_environment.h"
+#include "engine/ecs/world.h"
+#include "systems/animation/curl_noise.h"
+#include "systems/animation/life_curve_eval.h"
+#include "systems/animation/particle_integrator.h"
+
+namespace pyro {
+
+namespace {
+
+// Reflects the velocity's component into the surface (outward normal n): normal part reversed
+// and scaled by restitution, tangential part scaled by (1 − friction).
+void respond(glm::vec3& v, const glm::vec3& n, float restitution, float friction) {
+  const float vn = glm::dot(v, n);
+  if (vn >= 0.0f) return;
+  const glm::vec3 vt = v - vn * n;
+  v = vt * (1.0f - friction) - restitution * vn * n;
+}
+
+}  // namespace
+
+bool collide_particle(glm::vec3& x, glm::vec3& v, const SimulationEnvironment& env, float restitution,
+                      float friction) {
+  bool hit = false;
+  if (env.ground && x.y < env.ground_height) {
+    x.y = env.ground_height;
+    respond(v, {0.0f, 1.0f, 0.0f}, restitution, friction);
+    hit = true;
+  }
+  for (const SphereCollider& s : env.spheres) {
+    const glm::vec3 d = x - s.center;
+    const float len = glm::length(d);
+    if (len >= s.radius) continue;
+    const glm::vec3 n = len > 1e-6f ? d / len : glm::vec3(0.0f, 1.0f, 0.0f);
+    x = s.center + n * s.radius;
+    respond(v, n, restitution, friction);
+    hit = true;
+  }
+  for (const BoxCollider& b : env.boxes) {
+    if (x.x <= b.min.x || x.x >= b.max.x || x.y <= b.min.y || x.y >= b.max.y || x.z <= b.min.z ||
+        x.z >= b.max.z)
+      continue;
+    // Out through the nearest face.
+    float best = x.x - b.min.x;
+    glm::vec3 n(-1.0f, 0.0f, 0.0f);
+    const float cand[5] = {b.max.x - x.x, x.y - b.min.y, b.max.y - x.y, x.z - b.min.z, b.max.z - x.z};
+    const glm::vec3 normals[5] = {{1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    for (int i = 0; i < 5; ++i)
+      if (cand[i] < best) best = cand[i], n = normals[i];
+    x += n * best;
+    respond(v, n, restitution, friction);
+    hit = true;
+  }
+  return hit;
+}
+
+std::size_t animate_particles(ParticlePool& p, const ParticleDynamics& d, const SimulationEnvironment& env,
+                              float dt, double time) {
+  const std::size_t n = p.size();
+  const float ta = env.ambient_temperature;
+  const float k = d.drag;
+  const float e_drag = std::exp(-k * dt);
+  const float phi1 = exp_phi1(k, dt), phi2 = exp_phi2(k, dt);
+  const float e_cool = std::exp(-d.cooling * dt);
+  const glm::vec3 gravity = env.gravity * d.gravity_scale;
+  const bool turbulent = d.turbulence != 0.0f;
+  const glm::vec3 noise_shift = glm::vec3(0.0f, 1.0f, 0.5f) * static_cast<float>(time * d.turbulence_speed);
+  const bool t_curve = !d.temperature.keys.empty(), s_curve = !d.size.keys.empty(),
+             o_curve = !d.opacity.keys.empty(), c_curve = !d.color.keys.empty();
+  for (std::size_t i = 0; i < n; ++i) {
+    float temp = p.temperature[i];
+    // Cooling (exact exponential decay toward ambient) or the temperature curve.
+    temp = t_curve ? evaluate_curve(d.temperature, p.age[i] / p.lifetime[i]).x : ta + (temp - ta) * e_cool;
+    if (p.medium[i] == static_cast<uint8_t>(ParticleMedium::fire) && temp < d.smoke_below)
+      p.medium[i] = static_cast<uint8_t>(ParticleMedium::smoke);
+    p.temperature[i] = temp;
+
+    glm::vec3 x(p.px[i], p.py[i], p.pz[i]), v(p.vx[i], p.vy[i], p.vz[i]);
+    const glm::vec3 a = gravity + glm::vec3(0.0f, d.buoyancy * (temp - ta), 0.0f);
+    glm::vec3 w = env.wind;
+    if (turbulent) w += d.turbulence * curl_noise(x * d.turbulence_frequency + noise_shift, d.turbulence_seed);
+    const glm::vec3 forcing = a + k * w;
+    x += v * phi1 + forcing * phi2;
+    v = v * e_drag + forcing * phi1;
+    if (d.collide) collide_particle(x, v, env, d.restitution, d.friction);
+    p.px[i] = x.x, p.py[i] = x.y, p.pz[i] = x.z;
+    p.vx[i] = v.x, p.vy[i] = v.y, p.vz[i] = v.z;
+
+    p.age[i] += dt;
+    const float life = std::min(p.age[i] / p.lifetime[i], 1.0f);
+    if (s_curve) p.radius[i] = p.size0[i] * evaluate_curve(d.size, life).x;
+    if (o_curve) p.opacity[i] = std::clamp(evaluate_curve(d.opacity, life).x, 0.0f, 1.0f);
+    if (c_curve) {
+      const glm::vec3 c = evaluate_curve(d.color, life);
+      p.r[i] = c.x, p.g[i] = c.y, p.b[i] = c.z;
+    }
+  }
+  return p.kill_if([&](std::size_t i) { return p.age[i] >= p.lifetime[i]; });
+}
+
+ecs::SystemDesc particle_animation_system() {
+  return {"particle_animation", ecs::Phase::simulate,
+          ecs::access<FrameClock, SimulationEnvironment, ParticleDynamics>(), ecs::access<ParticleSet>(),
+          [](ecs::World& world) {
+            const FrameClock& clock = world.resource<FrameClock>();
+            const SimulationEnvironment& env = world.resource<SimulationEnvironment>();
+            // Step 0 shows the emitted state; after a prewarm of P steps frame 0 is step P.
+            if (clock.frame + env.prewarm_steps == 0) return;
+            const double t = static_cast<double>(clock.frame + env.prewarm_steps) * clock.dt;
+            world.each<ParticleDynamics, ParticleSet>([&](ParticleDynamics& d, ParticleSet& s) {
+              animate_particles(s.pool, d, env, clock.dt, t);
+            });
+          }};
+}
+
+}  // namespace pyro
