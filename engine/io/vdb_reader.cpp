@@ -4,6 +4,7 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
+#include <openvdb/tools/Dense.h>
 #include <openvdb/tools/LevelSetUtil.h>
 
 #include <cerrno>
@@ -128,24 +129,12 @@ DenseGrid densify(const GridT& grid) {
     d.origin[a] = box.min()[a];
     d.dims[a] = dim[a];
   }
+  // OpenVDB's dense copy walks the tree leaf by leaf (tiles included) on TBB's threads; the
+  // layout with x fastest matches DenseGrid's index (z * ny + y) * nx + x.
   d.values.assign(n, 0.0f);
-  const auto at = [&](const openvdb::Coord& c) -> float& {
-    return d.values[(size_t(c[2] - d.origin[2]) * d.dims[1] + size_t(c[1] - d.origin[1])) *
-                        d.dims[0] + size_t(c[0] - d.origin[0])];
-  };
-  for (auto it = grid.cbeginValueOn(); it; ++it) {
-    const float v = static_cast<float>(*it);
-    if (it.isVoxelValue()) {
-      at(it.getCoord()) = v;
-    } else {  // an active tile: every voxel it covers, clipped to the active box
-      openvdb::CoordBBox tile;
-      it.getBoundingBox(tile);
-      tile.intersect(box);
-      for (int z = tile.min()[2]; z <= tile.max()[2]; ++z)
-        for (int y = tile.min()[1]; y <= tile.max()[1]; ++y)
-          for (int x = tile.min()[0]; x <= tile.max()[0]; ++x) at(openvdb::Coord(x, y, z)) = v;
-    }
-  }
+  using Dense = openvdb::tools::Dense<float, openvdb::tools::LayoutXYZ>;
+  Dense dense(box, d.values.data());
+  openvdb::tools::copyToDense(grid, dense, /*serial=*/false);
   float mx = 0.0f;
   for (float v : d.values) mx = std::max(mx, v);
   d.max_value = mx;
