@@ -10,6 +10,10 @@ namespace pyro {
 struct DrawList {
   std::vector<glm::vec4> center_radius;  // xyz world position, w radius
   std::vector<glm::vec4> color_density;  // rgb linear colour, a density rho
+  // Explosion media (Umenhoffer et al. 2006): temperature (K), opacity (0-1), medium
+  // (components/particle_medium.h, as a float), and a per-particle detail-window key in [0, 1).
+  // Read only by the explosion shading; the Gaussian path does not upload it.
+  std::vector<glm::vec4> medium;
   size_t size() const { return center_radius.size(); }
 };
 

@@ -4,6 +4,7 @@
 // RGBA16F) and, when particles render at reduced resolution, their layer (RGBA16F; the scene
 // target is then 8-bit sRGB, since only opaque geometry is drawn into it). One output target
 // holds the composed sRGB image (two views side by side for side-by-side and left-right).
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -13,7 +14,10 @@ namespace pyro {
 
 struct EyeTargets {
   std::unique_ptr<gpu::RenderTarget> scene;
-  std::unique_ptr<gpu::RenderTarget> layer;  // null when the layer scale is 1
+  std::unique_ptr<gpu::RenderTarget> layer;  // null when the layer scale is 1 or with media
+  // Explosion shading (RenderSettings::media_layers()): dust, smoke and fire layers (RGBA16F,
+  // premultiplied) at the layer scale, any scale including 1; null otherwise.
+  std::array<std::unique_ptr<gpu::RenderTarget>, 3> media;
 };
 
 struct GpuFrame {

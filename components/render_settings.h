@@ -33,6 +33,11 @@ struct RenderSettings {
   // size and the composed image is upscaled to it: a shortcut whose error the benchmarks report.
   float frame_scale = 1.0f;
   StereoMode stereo_mode = StereoMode::mono;
+  // explosion: dust, smoke and fire each in its own layer at layer_scale (components/gpu_frame.h).
+  ParticleShading shading = ParticleShading::color;
+  bool media_layers() const {
+    return shading == ParticleShading::explosion && particles != ParticleShape::gaussian;
+  }
 };
 
 }  // namespace pyro

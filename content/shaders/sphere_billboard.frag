@@ -5,9 +5,22 @@
 // opaque scene's depth. Unlike the paper, which takes rays parallel to z inside a particle,
 // ds comes from the exact ray-sphere intersection of the perspective ray.
 // Output premultiplied; blending (ONE, ONE_MINUS_SRC_ALPHA), back to front.
+//
+// u_shading 1 and 2 shade explosion media (section 3) by eq. 1,
+// L = I (1 - alpha) + alpha a C + alpha (1 - a) L_e, written premultiplied as
+// (alpha a C + alpha (1 - a) L_e, alpha):
+//   1, dust and smoke: L_e = 0; C = E P(mu) T_light + ambient, P the Cornette-Shanks phase
+//      function from the table engine/math/phase_function.h makes (texture over cos theta and g),
+//      T_light the light's transmittance from the sphere's surface to the middle of the ray's
+//      segment; opacity perturbed by the detail noise;
+//   2, fire: a = 0; L_e from the black-body table engine/math/blackbody.h makes, at the
+//      temperature perturbed by the detail noise (the paper's T = T0 + T1 tex3D(...)).
+// The detail noise (engine/math/detail_noise.h) is sampled in each particle's own window: an
+// offset from its key, moving along the volume's time axis.
 flat in vec3 v_center;
 flat in float v_radius;
 flat in vec4 v_color_tau;
+flat in vec4 v_medium;  // temperature, opacity, medium, detail key
 
 layout(binding = 1) uniform sampler2D u_scene_depth;  // window depth of the opaque scene
 uniform vec2 u_depth_scale;     // scene-depth texels per target pixel
@@ -16,8 +29,30 @@ uniform vec4 u_projection_terms;  // P[0][0], P[1][1], P[2][0], P[2][1] (off-axi
 uniform float u_near;
 uniform float u_far;
 uniform int u_planar;
+uniform int u_shading;  // 0 the particle's colour; 1 dust or smoke; 2 fire
+
+layout(binding = 2) uniform sampler2D u_phase;      // p(mu, g): x over mu in [-1, 1], y over g
+layout(binding = 3) uniform sampler1D u_blackbody;  // emitted radiance over [T_min, T_max]
+layout(binding = 4) uniform sampler3D u_detail;     // periodic noise in [0, 1]
+uniform vec4 u_phase_range;     // g_min, g_max, cos texels, g texels
+uniform vec3 u_light_view;      // direction the light travels, view space, unit
+uniform vec3 u_light_irradiance;  // E, linear rgb
+uniform vec3 u_ambient;
+uniform float u_albedo;
+uniform float u_g;
+uniform float u_detail_amplitude;
+uniform float u_detail_frequency;
+uniform float u_detail_time;    // time times speed: periods of the volume's time axis
+uniform vec4 u_fire;            // T_min, T_max, scale, bias
+uniform float u_fire_detail_range;
 
 layout(location = 0) out vec4 o_color;
+
+// Texture coordinate of node value x on a table with `n` nodes over [lo, hi] (texel centres on
+// the nodes).
+float node_coord(float x, float lo, float hi, float n) {
+  return (clamp((x - lo) / (hi - lo), 0.0, 1.0) * (n - 1.0) + 0.5) / n;
+}
 
 float view_depth(float window_depth) {
   float z_ndc = window_depth * 2.0 - 1.0;
@@ -38,6 +73,7 @@ void main() {
   if (distance2 >= r * r) discard;
   float d = sqrt(distance2);
   float ds;
+  float enter_depth = 0.0, leave_depth = 0.0, scene_depth = 0.0;
   if (u_planar != 0) {
     // The planar billboard: the full chord, wherever the plane is.
     ds = 2.0 * sqrt(r * r - distance2);
@@ -45,9 +81,44 @@ void main() {
     float h = sqrt(max(b * b - a * c, 0.0));
     float enter = (b - h) / a, leave = (b + h) / a;  // view depths
     float scene = view_depth(texelFetch(u_scene_depth, ivec2(gl_FragCoord.xy * u_depth_scale), 0).r);
+    enter_depth = enter;
+    leave_depth = leave;
+    scene_depth = scene;
     float from = max(enter, u_near), to = min(leave, scene);
     ds = max(to - from, 0.0) * sqrt(a);  // view depth to path length
   }
-  float alpha = 1.0 - exp(-v_color_tau.a * (1.0 - d / r) * ds);
-  o_color = vec4(v_color_tau.rgb * alpha, alpha);
+  if (u_shading == 0) {
+    float alpha = 1.0 - exp(-v_color_tau.a * (1.0 - d / r) * ds);
+    o_color = vec4(v_color_tau.rgb * alpha, alpha);
+    return;
+  }
+  // The particle's detail window: the ray's closest point to the centre, in units of r,
+  // scaled, offset by the particle's key, moving in time.
+  float key = v_medium.w;
+  vec3 closest = dir * (b / a) - p;
+  vec3 window = vec3(closest.xy / r * u_detail_frequency + vec2(key, fract(key * 7.0)),
+                     fract(key * 13.0) + u_detail_time);
+  float n = texture(u_detail, window).r;
+  float tau = v_color_tau.a * v_medium.y;  // density times the opacity curve
+  float alpha = 1.0 - exp(-tau * (1.0 - d / r) * ds);
+  if (u_shading == 2) {
+    float T = u_fire.w + u_fire.z * (v_medium.x + u_fire_detail_range * (n - 0.5));
+    vec3 emitted = texture(u_blackbody, node_coord(T, u_fire.x, u_fire.y,
+                                                   float(textureSize(u_blackbody, 0)))).rgb;
+    o_color = vec4(emitted * alpha, alpha);  // a = 0: alpha L_e
+    return;
+  }
+  alpha = clamp(alpha * (1.0 + u_detail_amplitude * (2.0 * n - 1.0)), 0.0, 1.0);
+  vec3 to_eye = -normalize(dir);
+  float mu = dot(u_light_view, to_eye);  // photon's direction before and after scattering
+  float phase = texture(u_phase, vec2(node_coord(mu, -1.0, 1.0, u_phase_range.z),
+                                      node_coord(u_g, u_phase_range.x, u_phase_range.y,
+                                                 u_phase_range.w))).r;
+  // Light's path inside the sphere, from the middle of the visible segment towards the light.
+  float middle = u_planar != 0 ? b / a : 0.5 * (max(enter_depth, u_near) + min(leave_depth, scene_depth));
+  vec3 m = dir * middle - p;
+  float mb = dot(m, -u_light_view);
+  float chord = max(-mb + sqrt(max(mb * mb - dot(m, m) + r * r, 0.0)), 0.0);
+  vec3 C = u_light_irradiance * phase * exp(-tau * chord) + u_ambient;
+  o_color = vec4(alpha * u_albedo * C, alpha);  // L_e = 0
 }

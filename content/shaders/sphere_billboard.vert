@@ -11,6 +11,7 @@
 // viewplane, depth tested) for comparison.
 layout(location = 0) in vec4 a_center_radius;  // world xyz, radius
 layout(location = 1) in vec4 a_color_tau;      // linear rgb, extinction tau (1 / length)
+layout(location = 2) in vec4 a_medium;  // temperature K, opacity, medium, detail key (explosions)
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
@@ -19,6 +20,7 @@ uniform int u_planar;
 flat out vec3 v_center;  // view space
 flat out float v_radius;
 flat out vec4 v_color_tau;
+flat out vec4 v_medium;
 
 void main() {
   vec2 corner = vec2(float(gl_VertexID & 1), float((gl_VertexID >> 1) & 1)) * 2.0 - 1.0;
@@ -27,6 +29,7 @@ void main() {
   v_center = p;
   v_radius = r;
   v_color_tau = a_color_tau;
+  v_medium = a_medium;
   if (u_planar != 0) {
     gl_Position = u_projection * vec4(p + vec3(corner * r, 0.0), 1.0);
     return;

@@ -37,6 +37,9 @@ enum class BillboardAlignment { viewplane, viewpoint };
 // (opacity from the real path length, clipped by the scene and the near plane) or as the planar
 // billboard it replaces (for comparison: it clips against geometry and pops at the near plane).
 enum class ParticleShape { gaussian, spherical, planar };
+// color: each particle its own colour; explosion: dust, smoke and fire shaded by Umenhoffer et
+// al. 2006's eq. 1, each medium in its own layer (spherical or planar particles only).
+enum class ParticleShading { color, explosion };
 
 struct RenderDescription {
   BillboardAlignment billboards = BillboardAlignment::viewplane;
@@ -44,6 +47,7 @@ struct RenderDescription {
   // Particles are drawn into a layer of this fraction of the frame's size, then upsampled and
   // composited over the opaque scene: 1, 0.5, 0.25 or 0.125.
   float layer_scale = 1.0f;
+  ParticleShading shading = ParticleShading::color;
 };
 
 struct LightDescription {

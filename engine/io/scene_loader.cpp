@@ -616,6 +616,10 @@ void read_render(ObjectReader& r, RenderDescription& d) {
       read_choice(r, "billboards", {"viewplane", "viewpoint"}, static_cast<std::size_t>(d.billboards)));
   d.particles = static_cast<ParticleShape>(read_choice(
       r, "particles", {"gaussian", "spherical", "planar"}, static_cast<std::size_t>(d.particles)));
+  d.shading = static_cast<ParticleShading>(
+      read_choice(r, "shading", {"color", "explosion"}, static_cast<std::size_t>(d.shading)));
+  if (d.shading == ParticleShading::explosion && d.particles == ParticleShape::gaussian)
+    r.at("shading").fail("\"explosion\" shading needs \"particles\": \"spherical\" or \"planar\"");
   r.number("layer_scale", Range{0.0, 1.0, true, false}, d.layer_scale);
   if (d.layer_scale != 1.0f && d.layer_scale != 0.5f && d.layer_scale != 0.25f &&
       d.layer_scale != 0.125f) {

@@ -1,11 +1,14 @@
 #include "systems/billboard_render/billboard_render_system.h"
 
 #include "components/draw_list.h"
+#include "components/explosion_shading.h"
+#include "components/frame_clock.h"
 #include "components/gpu_frame.h"
 #include "components/render_settings.h"
 #include "components/view.h"
 #include "engine/ecs/world.h"
 #include "systems/billboard_render/billboard_renderer.h"
+#include "systems/billboard_render/explosion_renderer.h"
 #include "systems/billboard_render/sphere_billboard_renderer.h"
 
 #include <algorithm>
@@ -37,7 +40,7 @@ void prepare_layer(EyeTargets& targets) {
 
 ecs::SystemDesc billboard_render_system() {
   return {"billboard_render", ecs::Phase::render,
-          ecs::access<EyeDrawLists, View, RenderSettings>(), ecs::access<GpuFrame>(),
+          ecs::access<EyeDrawLists, View, RenderSettings, FrameClock, ExplosionShading>(), ecs::access<GpuFrame>(),
           [](ecs::World& world) {
             const EyeDrawLists* lists = world.try_resource<EyeDrawLists>();
             if (!lists) return;
@@ -50,6 +53,19 @@ ecs::SystemDesc billboard_render_system() {
               for (size_t v = 0; v < views; ++v)
                 draw_particles_for_view(renderer, lists->eyes[v], view.eyes[v], frame.eyes[v],
                                         settings.alignment, BillboardShading::kernel);
+              return;
+            }
+            if (settings.media_layers()) {
+              // Explosions (Umenhoffer et al. 2006, sections 3-4): each medium into its layer.
+              if (!world.has_resource<ExplosionShading>()) world.set_resource<ExplosionShading>();
+              if (!world.has_resource<ExplosionRenderer>())
+                world.set_resource<ExplosionRenderer>(world.resource<ExplosionShading>());
+              ExplosionRenderer& explosion = world.resource<ExplosionRenderer>();
+              const FrameClock* clock = world.try_resource<FrameClock>();
+              const double time = clock ? clock->time() : 0.0;
+              for (size_t v = 0; v < views; ++v)
+                explosion.draw(lists->eyes[v], view.eyes[v], settings, time, frame.eyes[v].media,
+                               *frame.eyes[v].scene);
               return;
             }
             if (!world.has_resource<SphereBillboardRenderer>()) world.set_resource<SphereBillboardRenderer>();

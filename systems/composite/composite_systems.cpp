@@ -1,6 +1,9 @@
 #include "systems/composite/composite_systems.h"
 
+#include "components/explosion_shading.h"
+#include "components/frame_clock.h"
 #include "components/gpu_frame.h"
+#include "components/view.h"
 #include "components/render_settings.h"
 #include "engine/ecs/world.h"
 #include "systems/composite/compositor.h"
@@ -15,9 +18,26 @@ Compositor& compositor(ecs::World& world) {
 }  // namespace
 
 ecs::SystemDesc stereo_compose_system() {
-  return {"composite", ecs::Phase::composite, ecs::access<GpuFrame, RenderSettings>(),
+  return {"composite", ecs::Phase::composite,
+          ecs::access<GpuFrame, RenderSettings, View, FrameClock, ExplosionShading>(),
           ecs::access<GpuFrame>(), [](ecs::World& world) {
             const GpuFrame& frame = world.resource<GpuFrame>();
+            if (!frame.eyes.empty() && frame.eyes[0].media[0]) {
+              MediaComposition m;
+              if (const View* view = world.try_resource<View>(); view && !view->eyes.empty()) {
+                m.near = view->eyes[0].near;
+                m.far = view->eyes[0].far;
+              }
+              if (const FrameClock* clock = world.try_resource<FrameClock>())
+                m.time = static_cast<float>(clock->time());
+              const ExplosionShading* shading = world.try_resource<ExplosionShading>();
+              m.shimmer = shading ? shading->shimmer : ExplosionShading{}.shimmer;
+              if (const MediaComposition* over = world.try_resource<MediaComposition>()) {
+                m.depth_aware = over->depth_aware;
+                m.depth_tolerance = over->depth_tolerance;
+              }
+              compositor(world).set_media(m);
+            }
             compositor(world).compose(world.resource<RenderSettings>().stereo_mode, frame);
             if (frame.display) {
               // The frame-scale shortcut: upscale the composed image bilinearly.

@@ -5,6 +5,7 @@
 
 #include "engine/gpu/shader_program.h"
 #include "engine/math/anaglyph.h"
+#include "engine/math/detail_noise.h"
 
 namespace pyro {
 
@@ -25,6 +26,34 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
     glBindTextureUnit(2, l.layer->color_texture());
     glBindTextureUnit(3, r.layer->color_texture());
   }
+  const bool media = l.media[0] != nullptr;
+  glUniform1i(gpu::uniform_location(compose_, "u_has_media"), media ? 1 : 0);
+  if (!media) return;
+  if (noise_.get() == 0) {
+    // The shimmer's noise field: the engine's periodic detail noise (its own seed).
+    const DetailNoise n = make_detail_noise(32, 4, 2, 0x5111eull);
+    noise_ = gpu::make_texture(GL_TEXTURE_3D);
+    glTextureStorage3D(noise_.get(), 1, GL_R16F, n.size, n.size, n.size);
+    glTextureSubImage3D(noise_.get(), 0, 0, 0, 0, n.size, n.size, n.size, GL_RED, GL_FLOAT, n.values.data());
+    glTextureParameteri(noise_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(noise_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+      glTextureParameteri(noise_.get(), w, GL_REPEAT);
+  }
+  glBindTextureUnit(4, l.scene->depth_texture());
+  glBindTextureUnit(5, r.scene->depth_texture());
+  for (int m = 0; m < 3; ++m) {
+    glBindTextureUnit(6 + m, l.media[m]->color_texture());
+    glBindTextureUnit(9 + m, r.media[m]->color_texture());
+  }
+  glBindTextureUnit(12, noise_.get());
+  auto loc = [&](const char* name) { return gpu::uniform_location(compose_, name); };
+  glUniform1i(loc("u_upsample"), media_.depth_aware ? 1 : 0);
+  glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
+  glUniform1f(loc("u_near"), media_.near);
+  glUniform1f(loc("u_far"), media_.far);
+  glUniform1f(loc("u_shimmer"), media_.shimmer);
+  glUniform1f(loc("u_time"), media_.time);
 }
 
 void Compositor::resolve_linear(const EyeTargets& view, const gpu::RenderTarget& out) {

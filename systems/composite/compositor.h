@@ -9,9 +9,19 @@
 
 namespace pyro {
 
+// How explosion media layers are composed (Umenhoffer et al. 2006, section 4).
+struct MediaComposition {
+  float near = 0.1f, far = 100.0f;  // the views' clip distances, for view depth
+  float time = 0.0f;                // seconds, animates the shimmer's noise
+  float shimmer = 0.0f;             // scene offset per unit fire opacity (fraction of the view)
+  bool depth_aware = true;          // nearest-depth upsampling at depth edges; false: bilinear
+  float depth_tolerance = 0.05f;    // relative view-depth spread still upsampled bilinearly
+};
+
 class Compositor {
  public:
   Compositor();
+  void set_media(const MediaComposition& m) { media_ = m; }
   // Writes one view, its layer composited, into the linear float target `out` (same size):
   // the final composition's arithmetic without the sRGB encoding, for readback.
   void resolve_linear(const EyeTargets& view, const gpu::RenderTarget& out);
@@ -25,6 +35,8 @@ class Compositor {
                  int width, int height);
   gpu::Program compose_;
   gpu::VertexArray empty_;
+  MediaComposition media_;
+  gpu::Texture noise_;  // made on first use
 };
 
 }  // namespace pyro

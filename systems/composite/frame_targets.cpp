@@ -20,9 +20,14 @@ GpuFrame make_gpu_frame(const RenderSettings& settings) {
     // Particles blend into the scene target only at full resolution; then it must be float.
     // With a layer, it holds opaque geometry alone: 8-bit sRGB keeps dark tones precise and
     // is about twice as fast to clear, shade and read on llvmpipe as RGBA16F.
-    const GLenum scene_format = s.layer_scale < 1.0f ? GL_SRGB8_ALPHA8 : GL_RGBA16F;
+    const bool media = s.media_layers();
+    const GLenum scene_format = s.layer_scale < 1.0f || media ? GL_SRGB8_ALPHA8 : GL_RGBA16F;
     t.scene = std::make_unique<gpu::RenderTarget>(s.width, s.height, scene_format);
-    if (s.layer_scale < 1.0f)
+    if (media) {
+      for (auto& m : t.media)
+        m = std::make_unique<gpu::RenderTarget>(layer_extent(s.width, s.layer_scale),
+                                                layer_extent(s.height, s.layer_scale));
+    } else if (s.layer_scale < 1.0f)
       t.layer = std::make_unique<gpu::RenderTarget>(layer_extent(s.width, s.layer_scale),
                                                     layer_extent(s.height, s.layer_scale));
     f.eyes.push_back(std::move(t));

@@ -64,6 +64,7 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   settings.layer_scale = options.layer_scale.value_or(scene.render.layer_scale);
   settings.frame_scale = options.frame_scale;
   settings.stereo_mode = options.stereo_mode;
+  settings.shading = options.shading.value_or(scene.render.shading);
   world_.set_resource<RenderSettings>(settings);
   FrameClock clock;
   clock.dt = 1.0f / scene.frames_per_second;

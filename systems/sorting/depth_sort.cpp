@@ -50,11 +50,17 @@ void build_draw_list(ecs::World& world, const glm::vec3& eye, const glm::vec3& f
   sort_back_to_front(s.keys);
   list.center_radius.resize(s.keys.size());
   list.color_density.resize(s.keys.size());
+  list.medium.resize(s.keys.size());
   for (size_t k = 0; k < s.keys.size(); ++k) {
     const ParticlePool& p = *s.sets[s.keys[k].set].second;
     const uint32_t i = s.keys[k].particle;
     list.center_radius[k] = {p.px[i], p.py[i], p.pz[i], p.radius[i]};
     list.color_density[k] = {p.r[i], p.g[i], p.b[i], p.density[i]};
+    // The detail key: the golden-ratio fraction of the particle id (mixed with its set's entity
+    // index), so consecutive ids spread evenly over [0, 1) and stay put for a particle's life.
+    const uint32_t ident = p.id[i] + (s.sets[s.keys[k].set].first << 20);
+    const float key = static_cast<float>((ident * 2654435769u) >> 8) * 0x1p-24f;
+    list.medium[k] = {p.temperature[i], p.opacity[i], static_cast<float>(p.medium[i]), key};
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "tools/pyro/bench_ecs.h"
 #include "tools/pyro/bench_johnson.h"
+#include "tools/pyro/bench_layers.h"
 #include "tools/pyro/bench_render.h"
 #include "tools/pyro/commands.h"
 
@@ -76,6 +77,26 @@ void add_bench_commands(CLI::App& app) {
                         "Finish GPU work after each system so per-system times include it");
   johnson_cmd->add_flag("--json", johnson->json, "Print one JSON object");
   johnson_cmd->callback([johnson] { print(bench_johnson(johnson->options), johnson->json); });
+
+  struct LayersArgs { LayersBenchOptions options; bool json = false; };
+  auto layers = std::make_shared<LayersArgs>();
+  CLI::App* layers_cmd = bench->add_subcommand(
+      "layers", "Explosion media layers at 1, 1/2, 1/4, 1/8: fps and RMSE against full resolution");
+  layers_cmd->add_option("scene", layers->options.scene, "Scene file (JSON)")->required();
+  layers_cmd->add_option("--width", layers->options.width, "Width")->check(CLI::Range(16, 8192));
+  layers_cmd->add_option("--height", layers->options.height, "Height")->check(CLI::Range(16, 8192));
+  layers_cmd->add_option("--frames", layers->options.frames, "Timed frames per scale")->check(CLI::Range(1, 100000));
+  layers_cmd->add_flag("--json", layers->json, "Print one JSON object");
+  layers_cmd->callback([layers] { print(bench_layers(layers->options), layers->json); });
+
+  struct Table1Args { Table1BenchOptions options; bool json = false; };
+  auto table1 = std::make_shared<Table1Args>();
+  CLI::App* table1_cmd = bench->add_subcommand(
+      "table1", "Umenhoffer et al. 2006 Table 1: 0-1578 particles, planar and spherical, half-resolution layers");
+  table1_cmd->add_option("--scene", table1->options.scene, "Explosion scene (JSON)");
+  table1_cmd->add_option("--frames", table1->options.frames, "Timed frames per row")->check(CLI::Range(1, 100000));
+  table1_cmd->add_flag("--json", table1->json, "Print one JSON object");
+  table1_cmd->callback([table1] { print(bench_table1(table1->options), table1->json); });
 }
 
 }  // namespace pyro::cli

@@ -1,0 +1,44 @@
+#pragma once
+// GPU state of explosion shading (Umenhoffer et al. 2006, sections 3 and 4): spherical (or, for
+// comparison, planar) billboards of dust, smoke and fire, each medium into its own layer, shaded
+// by eq. 1 through tables made in engine/math: the Cornette-Shanks phase table, the black-body
+// table and the detail-noise volume.
+#include <array>
+#include <memory>
+
+#include "components/draw_list.h"
+#include "components/explosion_shading.h"
+#include "components/render_settings.h"
+#include "engine/gpu/gl_objects.h"
+#include "engine/gpu/render_target.h"
+#include "engine/math/camera_math.h"
+#include "systems/billboard_render/instance_buffer.h"
+
+namespace pyro {
+
+// Splits a back-to-front draw list by medium (components/particle_medium.h), keeping the order.
+void split_by_medium(const DrawList& list, std::array<DrawList, 3>& out);
+
+class ExplosionRenderer {
+ public:
+  explicit ExplosionRenderer(const ExplosionShading& shading);
+  // Clears the three layers, then blends each medium's particles (back to front) into its layer.
+  // `scene` holds the opaque scene's colour and depth (the spherical shader clips against its
+  // full-resolution depth; planar billboards are depth tested against a point-sampled copy).
+  void draw(const DrawList& list, const CameraFrame& frame, const RenderSettings& settings,
+            double time, const std::array<std::unique_ptr<gpu::RenderTarget>, 3>& layers,
+            const gpu::RenderTarget& scene);
+  GLuint detail_texture() const { return detail_.get(); }
+  const ExplosionShading& shading() const { return shading_; }
+
+ private:
+  ExplosionShading shading_;
+  gpu::Program program_;
+  std::array<InstanceBuffer, 3> instances_;
+  std::array<DrawList, 3> split_;
+  gpu::Texture phase_, blackbody_, detail_;
+  float phase_g_min_ = 0.0f, phase_g_max_ = 0.0f;
+  int phase_cos_size_ = 0, phase_g_size_ = 0;
+};
+
+}  // namespace pyro

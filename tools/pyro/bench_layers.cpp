@@ -1,0 +1,133 @@
+#include "tools/pyro/bench_layers.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "components/frame_image.h"
+#include "components/particle_set.h"
+#include "engine/ecs/world.h"
+#include "engine/io/scene_loader.h"
+#include "systems/scene_runtime/scene_runtime.h"
+
+namespace pyro::cli {
+
+namespace {
+
+double time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames) {
+  SceneRuntime runtime(scene, options);
+  runtime.step();  // warm up: shaders, tables, targets
+  glFinish();
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int f = 0; f < frames; ++f) runtime.step();
+  glFinish();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return frames / seconds;
+}
+
+double rgb_rmse(const std::vector<float>& a, const std::vector<float>& b) {
+  double sum = 0.0;
+  size_t n = 0;
+  for (size_t i = 0; i + 3 < a.size() && i + 3 < b.size(); i += 4)
+    for (int c = 0; c < 3; ++c) {
+      const double d = static_cast<double>(a[i + c]) - b[i + c];
+      sum += d * d;
+      ++n;
+    }
+  return n ? std::sqrt(sum / n) : 0.0;
+}
+
+}  // namespace
+
+nlohmann::json bench_layers(const LayersBenchOptions& o) {
+  const SceneDescription scene = load_scene(o.scene);
+  RuntimeOptions base;
+  base.readback = false;
+  base.width_override = o.width;
+  base.height_override = o.height;
+  nlohmann::json scales = nlohmann::json::array();
+  double full_fps = 0.0;
+  for (float scale : {1.0f, 0.5f, 0.25f, 0.125f}) {
+    RuntimeOptions timed = base;
+    timed.layer_scale = scale;
+    const double fps = time_frames(scene, timed, o.frames);
+    if (scale == 1.0f) full_fps = fps;
+    // Error: the same frames rendered at this scale and at full resolution, linear views.
+    RuntimeOptions measured_options = timed, reference_options = base;
+    measured_options.readback = reference_options.readback = true;
+    reference_options.layer_scale = 1.0f;
+    SceneRuntime measured(scene, measured_options), reference(scene, reference_options);
+    double sum = 0.0;
+    int samples = 0;
+    const int every = std::max(1, o.frames / std::max(1, o.error_frames));
+    for (int f = 0; f < o.frames; ++f) {
+      measured.step();
+      reference.step();
+      if ((f + 1) % every == 0 && samples < o.error_frames) {
+        const double e = rgb_rmse(measured.image().rgba, reference.image().rgba);
+        sum += e * e;
+        ++samples;
+      }
+    }
+    scales.push_back({{"scale", scale},
+                      {"fps", fps},
+                      {"speedup_vs_full", full_fps > 0.0 ? fps / full_fps : 1.0},
+                      {"rmse_vs_full", samples ? std::sqrt(sum / samples) : 0.0}});
+  }
+  return {{"scene", o.scene}, {"width", o.width}, {"height", o.height}, {"frames", o.frames},
+          {"error_frames", o.error_frames}, {"scales", scales}};
+}
+
+nlohmann::json bench_table1(const Table1BenchOptions& o) {
+  const SceneDescription scene = load_scene(o.scene);
+  uint32_t base_count = 0;
+  for (const EmitterDescription& e : scene.emitters)
+    for (const EmitterBurst& b : e.emitter.bursts) base_count += b.count;
+  const std::array<int, 5> counts = {0, 263, 526, 1052, 1578};
+  const std::array<double, 5> paper_planar = {370, 80, 60, 45, 40};
+  const std::array<double, 5> paper_spherical = {370, 70, 56, 40, 35};
+  nlohmann::json rows = nlohmann::json::array();
+  for (size_t i = 0; i < counts.size(); ++i) {
+    SceneDescription s = scene;
+    const double k = base_count ? static_cast<double>(counts[i]) / base_count : 0.0;
+    if (counts[i] == 0) {
+      s.emitters.clear();
+    } else {
+      const float shrink = static_cast<float>(1.0 / std::sqrt(k));
+      for (EmitterDescription& e : s.emitters) {
+        for (EmitterBurst& b : e.emitter.bursts)
+          b.count = static_cast<uint32_t>(std::lround(b.count * k));
+        e.emitter.budget = static_cast<uint32_t>(std::lround(e.emitter.budget * k)) + 1;
+        Distribution& d = e.emitter.size;
+        d.value *= shrink, d.min *= shrink, d.max *= shrink, d.mean *= shrink, d.stddev *= shrink;
+      }
+      s.environment.particle_budget = static_cast<uint32_t>(counts[i]) + 64;
+    }
+    nlohmann::json row = {{"particles", counts[i]}, {"paper_planar_fps", paper_planar[i]},
+                          {"paper_spherical_fps", paper_spherical[i]}};
+    for (ParticleShape shape : {ParticleShape::planar, ParticleShape::spherical}) {
+      RuntimeOptions ro;
+      ro.readback = false;
+      ro.width_override = o.width;
+      ro.height_override = o.height;
+      ro.layer_scale = 0.5f;
+      ro.particles = shape;
+      ro.shading = ParticleShading::explosion;
+      SceneRuntime probe(s, ro);
+      probe.step();
+      size_t live = 0;
+      probe.world().each<ParticleSet>([&](ecs::Entity, ParticleSet& set) { live += set.pool.size(); });
+      row[shape == ParticleShape::planar ? "planar_fps" : "spherical_fps"] = time_frames(s, ro, o.frames);
+      row["live_particles"] = live;
+    }
+    rows.push_back(row);
+  }
+  return {{"scene", o.scene}, {"width", o.width}, {"height", o.height}, {"layer_scale", 0.5},
+          {"frames", o.frames}, {"rows", rows}};
+}
+
+}  // namespace pyro::cli

@@ -1,0 +1,34 @@
+#pragma once
+// Umenhoffer et al. 2006, section 4 and 5: what reduced-resolution media layers buy (Figure 12:
+// 35, 60, 110, 185 fps at 1, 1/2, 1/4, 1/8) and Table 1 (frame rates for 0 to 1578 particles,
+// planar and spherical, half-resolution layers).
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace pyro::cli {
+
+struct LayersBenchOptions {
+  std::string scene;
+  int width = 512, height = 512;
+  int frames = 60;        // timed frames per scale
+  int error_frames = 4;   // frames (spread over the timed ones) where RMSE is measured
+};
+
+// Per layer scale 1, 1/2, 1/4, 1/8: fps over the same frames, and the RMSE (linear rgb, the
+// composed view) against the full-resolution layers.
+nlohmann::json bench_layers(const LayersBenchOptions& options);
+
+struct Table1BenchOptions {
+  std::string scene = "content/scenes/explosion.json";
+  int width = 512, height = 512;
+  int frames = 60;
+};
+
+// The scene's emitters scaled to 0, 263, 526, 1052, 1578 particles (counts and budgets times
+// k = n / 263, radii times 1 / sqrt(k), so the covered screen area stays about constant: the
+// paper's "billboard sizes are decreased proportionally"), planar and spherical, half-resolution
+// layers; fps per row beside the paper's.
+nlohmann::json bench_table1(const Table1BenchOptions& options);
+
+}  // namespace pyro::cli
