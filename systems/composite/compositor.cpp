@@ -11,24 +11,26 @@ namespace pyro {
 
 Compositor::Compositor()
     : compose_(gpu::load_program("fullscreen.vert", "stereo_compose.frag")),
+      media_compose_(gpu::load_program("fullscreen.vert", "media_compose.frag")),
       empty_(gpu::make_vertex_array()) {}
 
 void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  glUseProgram(compose_.get());
+  const bool media = l.media[0] != nullptr;
+  current_ = media ? &media_compose_ : &compose_;
+  glUseProgram(current_->get());
   glBindVertexArray(empty_.get());
   glBindTextureUnit(0, l.scene->color_texture());
   glBindTextureUnit(1, r.scene->color_texture());
   const bool layers = l.layer != nullptr;
-  glUniform1i(gpu::uniform_location(compose_, "u_has_layers"), layers ? 1 : 0);
+  glUniform1i(gpu::uniform_location(*current_, "u_has_layers"), layers ? 1 : 0);
   if (layers) {
     glBindTextureUnit(2, l.layer->color_texture());
     glBindTextureUnit(3, r.layer->color_texture());
   }
-  const bool media = l.media[0] != nullptr;
-  glUniform1i(gpu::uniform_location(compose_, "u_has_media"), media ? 1 : 0);
   if (!media) return;
+  glUniform1i(gpu::uniform_location(*current_, "u_has_media"), 1);
   if (noise_.get() == 0) {
     // The shimmer's noise field: the engine's periodic detail noise (its own seed).
     const DetailNoise n = make_detail_noise(32, 4, 2, 0x5111eull);
@@ -47,7 +49,7 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
     glBindTextureUnit(9 + m, r.media[m]->color_texture());
   }
   glBindTextureUnit(12, noise_.get());
-  auto loc = [&](const char* name) { return gpu::uniform_location(compose_, name); };
+  auto loc = [&](const char* name) { return gpu::uniform_location(*current_, name); };
   glUniform1i(loc("u_upsample"), media_.depth_aware ? 1 : 0);
   glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
   glUniform1f(loc("u_near"), media_.near);
@@ -66,12 +68,12 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
                            int y, int width, int height) {
   const glm::mat3 zero(0.0f);
   glViewport(x, y, width, height);
-  glUniformMatrix3fv(gpu::uniform_location(compose_, "u_left_matrix"), 1, GL_FALSE, glm::value_ptr(left_matrix));
-  glUniformMatrix3fv(gpu::uniform_location(compose_, "u_right_matrix"), 1, GL_FALSE, glm::value_ptr(right_matrix));
-  glUniform1i(gpu::uniform_location(compose_, "u_use_left"), left_matrix != zero ? 1 : 0);
-  glUniform1i(gpu::uniform_location(compose_, "u_use_right"), right_matrix != zero ? 1 : 0);
-  glUniform2i(gpu::uniform_location(compose_, "u_origin"), x, y);
-  glUniform2f(gpu::uniform_location(compose_, "u_view_size"), static_cast<float>(width),
+  glUniformMatrix3fv(gpu::uniform_location(*current_, "u_left_matrix"), 1, GL_FALSE, glm::value_ptr(left_matrix));
+  glUniformMatrix3fv(gpu::uniform_location(*current_, "u_right_matrix"), 1, GL_FALSE, glm::value_ptr(right_matrix));
+  glUniform1i(gpu::uniform_location(*current_, "u_use_left"), left_matrix != zero ? 1 : 0);
+  glUniform1i(gpu::uniform_location(*current_, "u_use_right"), right_matrix != zero ? 1 : 0);
+  glUniform2i(gpu::uniform_location(*current_, "u_origin"), x, y);
+  glUniform2f(gpu::uniform_location(*current_, "u_view_size"), static_cast<float>(width),
               static_cast<float>(height));
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -33,7 +33,8 @@ class Compositor {
   void bind_views(const EyeTargets& left, const EyeTargets& right);
   void draw_view(const glm::mat3& left_matrix, const glm::mat3& right_matrix, int x, int y,
                  int width, int height);
-  gpu::Program compose_;
+  gpu::Program compose_, media_compose_;
+  const gpu::Program* current_ = nullptr;  // the program bind_views chose
   gpu::VertexArray empty_;
   MediaComposition media_;
   gpu::Texture noise_;  // made on first use
