@@ -45,48 +45,48 @@ float view_depth(float window_depth) {
   return 2.0 * u_near * u_far / (u_far + u_near - z_ndc * (u_far - u_near));
 }
 
-// Weights of the four layer texels around this pixel (lower-left texel `base`). Bilinear where
-// the scene depths those texels were rendered against (the full-resolution depth at the pixel
-// the spherical-billboard shader fetched for each: floor((t + 1/2) s)) agree with this pixel's
-// depth; otherwise all weight on the texel whose depth is nearest (nearest-depth upsampling), so
-// a particle layer does not bleed across a depth edge (no halos).
-vec4 upsample_weights(sampler2D depth, vec2 layer_size, ivec2 texel, vec2 uv, out ivec2 base) {
+// Nearest-depth upsampling (no halos at depth edges): the four layer texels around this pixel
+// were rendered against the full-resolution depth at their representative pixels
+// (floor((t + 1/2) s), as the spherical-billboard shader fetched it). Where those depths agree
+// with this pixel's (spread within u_depth_tolerance of its view depth) the layers are sampled
+// bilinearly by the texture unit; otherwise every layer takes the texel whose depth is nearest.
+// Returns true, and that texel, in the second case. Written straight-line: llvmpipe runs loops
+// over dynamically indexed vectors several times slower.
+bool nearest_depth_texel(sampler2D depth, vec2 layer_size, ivec2 texel, vec2 uv, out ivec2 pick) {
+  pick = ivec2(0);
+  if (u_upsample == 0) return false;
   vec2 f = uv * layer_size - 0.5;
-  base = ivec2(floor(f));
-  vec2 w = f - vec2(base);
-  vec4 bilinear = vec4((1.0 - w.x) * (1.0 - w.y), w.x * (1.0 - w.y), (1.0 - w.x) * w.y, w.x * w.y);
-  if (u_upsample == 0) return bilinear;
-  float z = view_depth(texelFetch(depth, texel, 0).r);
-  vec2 scale = u_view_size / layer_size;
+  ivec2 base = ivec2(floor(f));
   ivec2 last = ivec2(layer_size) - 1;
-  float nearest = 1e30, spread = 0.0;
-  int pick = 0;
-  for (int k = 0; k < 4; ++k) {
-    ivec2 t = clamp(base + ivec2(k & 1, k >> 1), ivec2(0), last);
-    ivec2 at = min(ivec2((vec2(t) + 0.5) * scale), ivec2(u_view_size) - 1);
-    float diff = abs(view_depth(texelFetch(depth, at, 0).r) - z);
-    spread = max(spread, diff);
-    if (diff < nearest) { nearest = diff; pick = k; }
-  }
-  if (spread <= u_depth_tolerance * z) return bilinear;
-  vec4 one = vec4(0.0);
-  one[pick] = 1.0;
-  return one;
+  vec2 scale = u_view_size / layer_size;
+  ivec2 edge = ivec2(u_view_size) - 1;
+  ivec2 t0 = clamp(base, ivec2(0), last);
+  ivec2 t1 = clamp(base + ivec2(1, 0), ivec2(0), last);
+  ivec2 t2 = clamp(base + ivec2(0, 1), ivec2(0), last);
+  ivec2 t3 = clamp(base + ivec2(1, 1), ivec2(0), last);
+  float z = view_depth(texelFetch(depth, texel, 0).r);
+  float d0 = abs(view_depth(texelFetch(depth, min(ivec2((vec2(t0) + 0.5) * scale), edge), 0).r) - z);
+  float d1 = abs(view_depth(texelFetch(depth, min(ivec2((vec2(t1) + 0.5) * scale), edge), 0).r) - z);
+  float d2 = abs(view_depth(texelFetch(depth, min(ivec2((vec2(t2) + 0.5) * scale), edge), 0).r) - z);
+  float d3 = abs(view_depth(texelFetch(depth, min(ivec2((vec2(t3) + 0.5) * scale), edge), 0).r) - z);
+  if (max(max(d0, d1), max(d2, d3)) <= u_depth_tolerance * z) return false;
+  ivec2 ta = d0 <= d1 ? t0 : t1;
+  float da = min(d0, d1);
+  ivec2 tb = d2 <= d3 ? t2 : t3;
+  float db = min(d2, d3);
+  pick = da <= db ? ta : tb;
+  return true;
 }
 
-vec4 fetch_layer(sampler2D layer, ivec2 base, vec4 w) {
-  ivec2 last = textureSize(layer, 0) - 1;
-  vec4 c = vec4(0.0);
-  for (int k = 0; k < 4; ++k)
-    if (w[k] > 0.0) c += w[k] * texelFetch(layer, clamp(base + ivec2(k & 1, k >> 1), ivec2(0), last), 0);
-  return c;
+vec4 layer_value(sampler2D layer, bool nearest, ivec2 pick, vec2 uv) {
+  return nearest ? texelFetch(layer, pick, 0) : textureLod(layer, uv, 0.0);
 }
 
 vec3 media_color(sampler2D scene, sampler2D depth, sampler2D dust, sampler2D smoke,
                  sampler2D fire, ivec2 texel, vec2 uv) {
-  ivec2 base;
-  vec4 w = upsample_weights(depth, vec2(textureSize(dust, 0)), texel, uv, base);
-  vec4 f = fetch_layer(fire, base, w);
+  ivec2 pick;
+  bool nearest = nearest_depth_texel(depth, vec2(textureSize(dust, 0)), texel, uv, pick);
+  vec4 f = layer_value(fire, nearest, pick, uv);
   // Heat shimmer: the scene seen through hot gas moves along a noise field, by an amount that
   // grows with the fire's opacity here.
   vec2 offset = vec2(0.0);
@@ -96,10 +96,10 @@ vec3 media_color(sampler2D scene, sampler2D depth, sampler2D dust, sampler2D smo
              * u_shimmer * f.a;
   }
   vec3 c = offset == vec2(0.0) ? texelFetch(scene, texel, 0).rgb : textureLod(scene, uv + offset, 0.0).rgb;
-  vec4 d = fetch_layer(dust, base, w);
+  vec4 d = layer_value(dust, nearest, pick, uv);
   c = c * (1.0 - d.a) + d.rgb;
   c = c * (1.0 - f.a) + f.rgb;
-  vec4 s = fetch_layer(smoke, base, w);
+  vec4 s = layer_value(smoke, nearest, pick, uv);
   return c * (1.0 - s.a) + s.rgb;
 }
 

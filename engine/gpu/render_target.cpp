@@ -19,6 +19,9 @@ RenderTarget::RenderTarget(int width, int height, GLenum color_format)
   glTextureStorage2D(color_.get(), 1, color_format, width, height);
   glTextureParameteri(color_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(color_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  // Upsampling a layer reads past its last texel at the border: clamp, never wrap around.
+  glTextureParameteri(color_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(color_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   depth_ = make_texture(GL_TEXTURE_2D);
   glTextureStorage2D(depth_.get(), 1, GL_DEPTH_COMPONENT32F, width, height);
   fbo_ = make_framebuffer();

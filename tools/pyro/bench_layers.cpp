@@ -18,7 +18,8 @@ namespace pyro::cli {
 
 namespace {
 
-double time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames) {
+double time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames,
+                   nlohmann::json* system_ms) {
   SceneRuntime runtime(scene, options);
   runtime.step();  // warm up: shaders, tables, targets
   glFinish();
@@ -26,6 +27,8 @@ double time_frames(const SceneDescription& scene, const RuntimeOptions& options,
   for (int f = 0; f < frames; ++f) runtime.step();
   glFinish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (system_ms)
+    for (const auto& st : runtime.schedule().stats()) (*system_ms)[st.name] = st.mean_ms();
   return frames / seconds;
 }
 
@@ -54,7 +57,9 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
   for (float scale : {1.0f, 0.5f, 0.25f, 0.125f}) {
     RuntimeOptions timed = base;
     timed.layer_scale = scale;
-    const double fps = time_frames(scene, timed, o.frames);
+    timed.sync_timing = o.sync_timing;
+    nlohmann::json system_ms = nlohmann::json::object();
+    const double fps = time_frames(scene, timed, o.frames, &system_ms);
     if (scale == 1.0f) full_fps = fps;
     // Error: the same frames rendered at this scale and at full resolution, linear views.
     RuntimeOptions measured_options = timed, reference_options = base;
@@ -76,7 +81,8 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     scales.push_back({{"scale", scale},
                       {"fps", fps},
                       {"speedup_vs_full", full_fps > 0.0 ? fps / full_fps : 1.0},
-                      {"rmse_vs_full", samples ? std::sqrt(sum / samples) : 0.0}});
+                      {"rmse_vs_full", samples ? std::sqrt(sum / samples) : 0.0},
+                      {"system_ms", system_ms}});
   }
   return {{"scene", o.scene}, {"width", o.width}, {"height", o.height}, {"frames", o.frames},
           {"error_frames", o.error_frames}, {"scales", scales}};
@@ -121,7 +127,7 @@ nlohmann::json bench_table1(const Table1BenchOptions& o) {
       probe.step();
       size_t live = 0;
       probe.world().each<ParticleSet>([&](ecs::Entity, ParticleSet& set) { live += set.pool.size(); });
-      row[shape == ParticleShape::planar ? "planar_fps" : "spherical_fps"] = time_frames(s, ro, o.frames);
+      row[shape == ParticleShape::planar ? "planar_fps" : "spherical_fps"] = time_frames(s, ro, o.frames, nullptr);
       row["live_particles"] = live;
     }
     rows.push_back(row);

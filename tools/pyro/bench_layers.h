@@ -13,6 +13,7 @@ struct LayersBenchOptions {
   int width = 512, height = 512;
   int frames = 60;        // timed frames per scale
   int error_frames = 4;   // frames (spread over the timed ones) where RMSE is measured
+  bool sync_timing = false;  // per-system times include their GPU work (slower frames)
 };
 
 // Per layer scale 1, 1/2, 1/4, 1/8: fps over the same frames, and the RMSE (linear rgb, the

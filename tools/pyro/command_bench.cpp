@@ -86,6 +86,8 @@ void add_bench_commands(CLI::App& app) {
   layers_cmd->add_option("--width", layers->options.width, "Width")->check(CLI::Range(16, 8192));
   layers_cmd->add_option("--height", layers->options.height, "Height")->check(CLI::Range(16, 8192));
   layers_cmd->add_option("--frames", layers->options.frames, "Timed frames per scale")->check(CLI::Range(1, 100000));
+  layers_cmd->add_flag("--sync-timing", layers->options.sync_timing,
+                       "Finish GPU work after each system so per-system times include it");
   layers_cmd->add_flag("--json", layers->json, "Print one JSON object");
   layers_cmd->callback([layers] { print(bench_layers(layers->options), layers->json); });
 
