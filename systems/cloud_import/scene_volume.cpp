@@ -63,4 +63,17 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
   return out;
 }
 
+ParticlePool to_particle_pool(const std::vector<GaussianParticle>& particles) {
+  ParticlePool pool(particles.size());
+  for (const GaussianParticle& p : particles) {
+    ParticleInit init;
+    init.position = {p.x, p.y, p.z};
+    init.radius = p.radius;
+    init.density = p.density;
+    init.color = {p.r, p.g, p.b};
+    pool.spawn(init);
+  }
+  return pool;
+}
+
 }  // namespace pyro

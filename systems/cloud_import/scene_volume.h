@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/particles/particle_pool.h"
+
 #include "components/gaussian_particle.h"
 #include "engine/io/scene_description.h"
 
@@ -26,6 +28,9 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
 
 // p' = position + s (p - anchor), radius' = s radius; opacities stay: placement is a change of
 // units, so a volume looks the same at any size (set `extinction` to change how dense it looks).
+// The particles as a pool (exactly sized) that the sorting and billboard systems draw.
+ParticlePool to_particle_pool(const std::vector<GaussianParticle>& particles);
+
 void place_volume_particles(std::vector<GaussianParticle>& particles, const VolumeDescription& volume);
 
 }  // namespace pyro

@@ -1,5 +1,7 @@
 #include "systems/scene_runtime/particle_snapshot.h"
 
+#include "systems/cloud_import/scene_volume.h"
+
 #include <algorithm>
 #include <chrono>
 
@@ -20,16 +22,7 @@ RgbImage render_particle_snapshot(const std::vector<GaussianParticle>& particles
   scene.camera = camera;
   SceneRuntime runtime(scene);
   ecs::World& world = runtime.world();
-  ParticlePool pool(particles.size());
-  for (const GaussianParticle& p : particles) {
-    ParticleInit init;
-    init.position = {p.x, p.y, p.z};
-    init.radius = p.radius;
-    init.density = p.density;
-    init.color = {p.r, p.g, p.b};
-    pool.spawn(init);
-  }
-  world.emplace<ParticleSet>(world.create(), ParticleSet{std::move(pool)});
+  world.emplace<ParticleSet>(world.create(), ParticleSet{to_particle_pool(particles)});
   double best = 1e300;
   for (int k = 0; k < std::max(1, repeats); ++k) {
     const auto t0 = std::chrono::steady_clock::now();

@@ -116,16 +116,7 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     if (!loaded.note.empty())
       std::fprintf(stderr, "pyro: %s: %s\n", v.path.c_str(), loaded.note.c_str());
     const ecs::Entity e = world_.create();
-    ParticlePool pool(loaded.particles.size());
-    for (const GaussianParticle& p : loaded.particles) {
-      ParticleInit init;
-      init.position = {p.x, p.y, p.z};
-      init.radius = p.radius;
-      init.density = p.density;
-      init.color = {p.r, p.g, p.b};
-      pool.spawn(init);
-    }
-    world_.emplace<ParticleSet>(e, ParticleSet{std::move(pool)});
+    world_.emplace<ParticleSet>(e, ParticleSet{to_particle_pool(loaded.particles)});
     world_.emplace<VolumeSource>(
         e, VolumeSource{v.path, v.used_fallback, loaded.active_voxels, loaded.particles.size()});
   }

@@ -5,6 +5,8 @@
 // really mix, and from the 8-bit-free but bilinearly sampled footprint table.
 #include <gtest/gtest.h>
 
+#include "systems/cloud_import/scene_volume.h"
+
 #include <cmath>
 #include <vector>
 
@@ -25,15 +27,7 @@ double splat_rmse(const std::vector<GaussianParticle>& ps, int size) {
   cam.far = 20.0f;
   const glm::vec3 background(0.55f, 0.65f, 0.8f);
   const RgbImage splat = render_particle_snapshot(ps, cam, size, size, background);
-  ParticlePool pool(ps.size());
-  for (const GaussianParticle& p : ps) {
-    ParticleInit init;
-    init.position = {p.x, p.y, p.z};
-    init.radius = p.radius;
-    init.density = p.density;
-    init.color = {p.r, p.g, p.b};
-    pool.spawn(init);
-  }
+  const ParticlePool pool = to_particle_pool(ps);
   const CameraFrame frame =
       make_camera_frame(cam.position, cam.target, cam.up, cam.fov_y_deg, cam.near, cam.far, size, size);
   const RgbImage ref = render_particles_reference(pool, frame, glm::dvec3(background));

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "components/camera.h"
-#include "engine/math/color.h"
+#include "engine/math/image_error.h"
 #include "engine/io/scene_loader.h"
 #include "engine/core/content_path.h"
 #include "systems/scene_runtime/scene_runtime.h"
@@ -50,18 +50,6 @@ void place_viewer(SceneRuntime& r, double t) {
   });
 }
 
-// RMSE of two composed output images (the anaglyph as shown), decoded to linear RGB.
-double output_rmse(const SceneRuntime::OutputImage& a, const SceneRuntime::OutputImage& b) {
-  double sum = 0.0;
-  size_t n = 0;
-  for (size_t i = 0; i < a.rgba.size(); ++i) {
-    if (i % 4 == 3) continue;  // alpha carries no image
-    const double d = srgb_to_linear(a.rgba[i] / 255.0f) - srgb_to_linear(b.rgba[i] / 255.0f);
-    sum += d * d;
-    ++n;
-  }
-  return std::sqrt(sum / n);
-}
 
 }  // namespace
 
@@ -109,7 +97,7 @@ nlohmann::json bench_johnson(const JohnsonBenchOptions& o) {
         place_viewer(reference, t);
         measured.step();
         reference.step();
-        const double e = output_rmse(measured.read_output(), reference.read_output());
+        const double e = srgb8_rmse(measured.read_output().rgba, reference.read_output().rgba);
         max_rmse = std::max(max_rmse, e);
         errors.push_back({{"path_t", t}, {"rmse", e}});
       }

@@ -1,5 +1,7 @@
 #include "tools/pyro/bench_layers.h"
 
+#include "engine/math/image_error.h"
+
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -32,17 +34,7 @@ double time_frames(const SceneDescription& scene, const RuntimeOptions& options,
   return frames / seconds;
 }
 
-double rgb_rmse(const std::vector<float>& a, const std::vector<float>& b) {
-  double sum = 0.0;
-  size_t n = 0;
-  for (size_t i = 0; i + 3 < a.size() && i + 3 < b.size(); i += 4)
-    for (int c = 0; c < 3; ++c) {
-      const double d = static_cast<double>(a[i + c]) - b[i + c];
-      sum += d * d;
-      ++n;
-    }
-  return n ? std::sqrt(sum / n) : 0.0;
-}
+
 
 }  // namespace
 
@@ -73,7 +65,7 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
       measured.step();
       reference.step();
       if ((f + 1) % every == 0 && samples < o.error_frames) {
-        const double e = rgb_rmse(measured.image().rgba, reference.image().rgba);
+        const double e = rgba_rmse(measured.image().rgba, reference.image().rgba);
         sum += e * e;
         ++samples;
       }

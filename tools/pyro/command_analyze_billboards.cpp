@@ -14,6 +14,7 @@
 
 #include "components/frame_image.h"
 #include "engine/io/scene_loader.h"
+#include "engine/math/image_error.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 
@@ -28,17 +29,7 @@ struct Args {
   bool json = false;
 };
 
-double rmse(const std::vector<float>& a, const std::vector<float>& b) {
-  double s = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (i % 4 == 3) continue;
-    const double d = std::clamp(a[i], 0.0f, 1.0f) - std::clamp(b[i], 0.0f, 1.0f);
-    s += d * d;
-    ++n;
-  }
-  return std::sqrt(s / std::max<size_t>(n, 1));
-}
+
 
 struct ModeRun {
   FrameImage image;
@@ -79,8 +70,8 @@ void run(const Args& a) {
       {"width", plane.image.width},
       {"height", plane.image.height},
       {"eyes",
-       {{{"eye", "left"}, {"rmse", rmse(plane.image.rgba, point.image.rgba)}},
-        {{"eye", "right"}, {"rmse", rmse(plane.image.right_rgba, point.image.right_rgba)}}}},
+       {{{"eye", "left"}, {"rmse", rgba_rmse(plane.image.rgba, point.image.rgba)}},
+        {{"eye", "right"}, {"rmse", rgba_rmse(plane.image.right_rgba, point.image.right_rgba)}}}},
       {"viewplane_ms_per_stereo_frame", plane.ms_per_frame},
       {"viewpoint_ms_per_stereo_frame", point.ms_per_frame}};
   if (a.json) {
