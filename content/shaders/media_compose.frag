@@ -17,12 +17,10 @@ uniform int u_has_layers;
 // composited in that order over the scene, whose lookup the fire layer distorts (heat shimmer).
 layout(binding = 4) uniform sampler2D u_left_depth;
 layout(binding = 5) uniform sampler2D u_right_depth;
-layout(binding = 6) uniform sampler2D u_left_dust;
-layout(binding = 7) uniform sampler2D u_left_smoke;
-layout(binding = 8) uniform sampler2D u_left_fire;
-layout(binding = 9) uniform sampler2D u_right_dust;
-layout(binding = 10) uniform sampler2D u_right_smoke;
-layout(binding = 11) uniform sampler2D u_right_fire;
+layout(binding = 6) uniform sampler2D u_left_media;        // media_prepare.frag: composited
+layout(binding = 7) uniform sampler2D u_left_media_depth;  // view depth, fire opacity
+layout(binding = 9) uniform sampler2D u_right_media;
+layout(binding = 10) uniform sampler2D u_right_media_depth;
 layout(binding = 12) uniform sampler3D u_noise;  // engine/math/detail_noise.h, periodic, [0, 1]
 uniform int u_has_media;
 uniform int u_upsample;          // 0 bilinear, 1 nearest-depth where the depths disagree
@@ -46,61 +44,42 @@ float view_depth(float window_depth) {
 }
 
 // Nearest-depth upsampling (no halos at depth edges): the four layer texels around this pixel
-// were rendered against the full-resolution depth at their representative pixels
-// (floor((t + 1/2) s), as the spherical-billboard shader fetched it). Where those depths agree
-// with this pixel's (spread within u_depth_tolerance of its view depth) the layers are sampled
-// bilinearly by the texture unit; otherwise every layer takes the texel whose depth is nearest.
-// Returns true, and that texel, in the second case. Written straight-line: llvmpipe runs loops
-// over dynamically indexed vectors several times slower.
-bool nearest_depth_texel(sampler2D depth, vec2 layer_size, ivec2 texel, vec2 uv, out ivec2 pick) {
-  pick = ivec2(0);
-  if (u_upsample == 0) return false;
-  vec2 f = uv * layer_size - 0.5;
-  ivec2 base = ivec2(floor(f));
-  ivec2 last = ivec2(layer_size) - 1;
-  vec2 scale = u_view_size / layer_size;
-  ivec2 edge = ivec2(u_view_size) - 1;
-  ivec2 t0 = clamp(base, ivec2(0), last);
-  ivec2 t1 = clamp(base + ivec2(1, 0), ivec2(0), last);
-  ivec2 t2 = clamp(base + ivec2(0, 1), ivec2(0), last);
-  ivec2 t3 = clamp(base + ivec2(1, 1), ivec2(0), last);
+// were rendered against the view depths in media_depth. Where those agree with this pixel's
+// depth (spread within u_depth_tolerance of it) the layer is sampled bilinearly by the texture
+// unit; otherwise the texel whose depth is nearest is taken. textureGather returns the four
+// texels bilinear filtering would use, as (i0, j1), (i1, j1), (i1, j0), (i0, j0).
+vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth, ivec2 texel, vec2 uv) {
+  if (u_upsample == 0) return textureLod(media, uv, 0.0);
+  vec4 g = textureGather(media_depth, uv, 0);
   float z = view_depth(texelFetch(depth, texel, 0).r);
-  float d0 = abs(view_depth(texelFetch(depth, min(ivec2((vec2(t0) + 0.5) * scale), edge), 0).r) - z);
-  float d1 = abs(view_depth(texelFetch(depth, min(ivec2((vec2(t1) + 0.5) * scale), edge), 0).r) - z);
-  float d2 = abs(view_depth(texelFetch(depth, min(ivec2((vec2(t2) + 0.5) * scale), edge), 0).r) - z);
-  float d3 = abs(view_depth(texelFetch(depth, min(ivec2((vec2(t3) + 0.5) * scale), edge), 0).r) - z);
-  if (max(max(d0, d1), max(d2, d3)) <= u_depth_tolerance * z) return false;
-  ivec2 ta = d0 <= d1 ? t0 : t1;
-  float da = min(d0, d1);
-  ivec2 tb = d2 <= d3 ? t2 : t3;
-  float db = min(d2, d3);
-  pick = da <= db ? ta : tb;
-  return true;
+  vec4 diff = abs(g - vec4(z));
+  if (max(max(diff.x, diff.y), max(diff.z, diff.w)) <= u_depth_tolerance * z)
+    return textureLod(media, uv, 0.0);
+  vec2 size = vec2(textureSize(media, 0));
+  ivec2 i0 = ivec2(floor(uv * size - 0.5));
+  ivec2 pick = diff.w <= diff.z ? i0 : i0 + ivec2(1, 0);
+  float best = min(diff.w, diff.z);
+  if (diff.x < best) { pick = i0 + ivec2(0, 1); best = diff.x; }
+  if (diff.y < best) pick = i0 + ivec2(1, 1);
+  return texelFetch(media, clamp(pick, ivec2(0), ivec2(size) - 1), 0);
 }
 
-vec4 layer_value(sampler2D layer, bool nearest, ivec2 pick, vec2 uv) {
-  return nearest ? texelFetch(layer, pick, 0) : textureLod(layer, uv, 0.0);
-}
-
-vec3 media_color(sampler2D scene, sampler2D depth, sampler2D dust, sampler2D smoke,
-                 sampler2D fire, ivec2 texel, vec2 uv) {
-  ivec2 pick;
-  bool nearest = nearest_depth_texel(depth, vec2(textureSize(dust, 0)), texel, uv, pick);
-  vec4 f = layer_value(fire, nearest, pick, uv);
+vec3 media_color(sampler2D scene, sampler2D depth, sampler2D media, sampler2D media_depth,
+                 ivec2 texel, vec2 uv) {
+  vec4 m = upsampled_media(depth, media, media_depth, texel, uv);
   // Heat shimmer: the scene seen through hot gas moves along a noise field, by an amount that
   // grows with the fire's opacity here.
   vec2 offset = vec2(0.0);
-  if (u_shimmer > 0.0 && f.a > 0.0) {
-    vec3 q = vec3(uv * 3.0, u_time);
-    offset = (vec2(texture(u_noise, q).r, texture(u_noise, q + vec3(0.5, 0.25, 0.5)).r) * 2.0 - 1.0)
-             * u_shimmer * f.a;
+  if (u_shimmer > 0.0 && m.a > 0.0) {
+    float fire = textureLod(media_depth, uv, 0.0).g;
+    if (fire > 0.0) {
+      vec3 q = vec3(uv * 3.0, u_time);
+      offset = (vec2(texture(u_noise, q).r, texture(u_noise, q + vec3(0.5, 0.25, 0.5)).r) * 2.0 - 1.0)
+               * u_shimmer * fire;
+    }
   }
   vec3 c = offset == vec2(0.0) ? texelFetch(scene, texel, 0).rgb : textureLod(scene, uv + offset, 0.0).rgb;
-  vec4 d = layer_value(dust, nearest, pick, uv);
-  c = c * (1.0 - d.a) + d.rgb;
-  c = c * (1.0 - f.a) + f.rgb;
-  vec4 s = layer_value(smoke, nearest, pick, uv);
-  return c * (1.0 - s.a) + s.rgb;
+  return c * (1.0 - m.a) + m.rgb;
 }
 
 vec3 eye_color(sampler2D scene, sampler2D layer, ivec2 texel, vec2 uv) {
@@ -118,9 +97,9 @@ void main() {
   vec3 c = vec3(0.0);
   if (u_has_media != 0) {
     if (u_use_left != 0)
-      c += u_left_matrix * media_color(u_left, u_left_depth, u_left_dust, u_left_smoke, u_left_fire, texel, uv);
+      c += u_left_matrix * media_color(u_left, u_left_depth, u_left_media, u_left_media_depth, texel, uv);
     if (u_use_right != 0)
-      c += u_right_matrix * media_color(u_right, u_right_depth, u_right_dust, u_right_smoke, u_right_fire, texel, uv);
+      c += u_right_matrix * media_color(u_right, u_right_depth, u_right_media, u_right_media_depth, texel, uv);
   } else {
     if (u_use_left != 0) c += u_left_matrix * eye_color(u_left, u_left_layer, texel, uv);
     if (u_use_right != 0) c += u_right_matrix * eye_color(u_right, u_right_layer, texel, uv);

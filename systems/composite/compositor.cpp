@@ -12,6 +12,8 @@ namespace pyro {
 Compositor::Compositor()
     : compose_(gpu::load_program("fullscreen.vert", "stereo_compose.frag")),
       media_compose_(gpu::load_program("fullscreen.vert", "media_compose.frag")),
+      media_prepare_(gpu::load_program("fullscreen.vert", "media_prepare.frag")),
+      prepare_fbo_(gpu::make_framebuffer()),
       empty_(gpu::make_vertex_array()) {}
 
 void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
@@ -44,10 +46,10 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   }
   glBindTextureUnit(4, l.scene->depth_texture());
   glBindTextureUnit(5, r.scene->depth_texture());
-  for (int m = 0; m < 3; ++m) {
-    glBindTextureUnit(6 + m, l.media[m]->color_texture());
-    glBindTextureUnit(9 + m, r.media[m]->color_texture());
-  }
+  glBindTextureUnit(6, l.media_combined->color_texture());
+  glBindTextureUnit(7, l.media_depth->color_texture());
+  glBindTextureUnit(9, r.media_combined->color_texture());
+  glBindTextureUnit(10, r.media_depth->color_texture());
   glBindTextureUnit(12, noise_.get());
   auto loc = [&](const char* name) { return gpu::uniform_location(*current_, name); };
   glUniform1i(loc("u_upsample"), media_.depth_aware ? 1 : 0);
@@ -56,6 +58,29 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glUniform1f(loc("u_far"), media_.far);
   glUniform1f(loc("u_shimmer"), media_.shimmer);
   glUniform1f(loc("u_time"), media_.time);
+}
+
+void Compositor::prepare_media(const EyeTargets& eye) {
+  const gpu::RenderTarget& combined = *eye.media_combined;
+  const GLuint fbo = prepare_fbo_.get();
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, combined.color_texture(), 0);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, eye.media_depth->color_texture(), 0);
+  const GLenum outputs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(fbo, 2, outputs);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glViewport(0, 0, combined.width(), combined.height());
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glUseProgram(media_prepare_.get());
+  glBindVertexArray(empty_.get());
+  for (int m = 0; m < 3; ++m) glBindTextureUnit(static_cast<GLuint>(m), eye.media[m]->color_texture());
+  glBindTextureUnit(3, eye.scene->depth_texture());
+  auto loc = [&](const char* name) { return gpu::uniform_location(media_prepare_, name); };
+  glUniform2f(loc("u_scale"), static_cast<float>(eye.scene->width()) / combined.width(),
+              static_cast<float>(eye.scene->height()) / combined.height());
+  glUniform1f(loc("u_near"), media_.near);
+  glUniform1f(loc("u_far"), media_.far);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void Compositor::resolve_linear(const EyeTargets& view, const gpu::RenderTarget& out) {
@@ -79,6 +104,8 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
 }
 
 void Compositor::compose(StereoMode mode, const GpuFrame& frame) {
+  for (const EyeTargets& eye : frame.eyes)
+    if (eye.media_combined) prepare_media(eye);
   const gpu::RenderTarget& out = *frame.output;
   glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
   glEnable(GL_FRAMEBUFFER_SRGB);  // linear in, sRGB-encoded bytes out (on for every pass)

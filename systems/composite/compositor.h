@@ -31,9 +31,12 @@ class Compositor {
 
  private:
   void bind_views(const EyeTargets& left, const EyeTargets& right);
+  // Explosion media: the three layers composited, and their depths, at layer size.
+  void prepare_media(const EyeTargets& eye);
   void draw_view(const glm::mat3& left_matrix, const glm::mat3& right_matrix, int x, int y,
                  int width, int height);
-  gpu::Program compose_, media_compose_;
+  gpu::Program compose_, media_compose_, media_prepare_;
+  gpu::Framebuffer prepare_fbo_;  // two outputs: media_combined and media_depth
   const gpu::Program* current_ = nullptr;  // the program bind_views chose
   gpu::VertexArray empty_;
   MediaComposition media_;

@@ -24,9 +24,10 @@ GpuFrame make_gpu_frame(const RenderSettings& settings) {
     const GLenum scene_format = s.layer_scale < 1.0f || media ? GL_SRGB8_ALPHA8 : GL_RGBA16F;
     t.scene = std::make_unique<gpu::RenderTarget>(s.width, s.height, scene_format);
     if (media) {
-      for (auto& m : t.media)
-        m = std::make_unique<gpu::RenderTarget>(layer_extent(s.width, s.layer_scale),
-                                                layer_extent(s.height, s.layer_scale));
+      const int lw = layer_extent(s.width, s.layer_scale), lh = layer_extent(s.height, s.layer_scale);
+      for (auto& m : t.media) m = std::make_unique<gpu::RenderTarget>(lw, lh);
+      t.media_combined = std::make_unique<gpu::RenderTarget>(lw, lh);
+      t.media_depth = std::make_unique<gpu::RenderTarget>(lw, lh, GL_RG32F);
     } else if (s.layer_scale < 1.0f)
       t.layer = std::make_unique<gpu::RenderTarget>(layer_extent(s.width, s.layer_scale),
                                                     layer_extent(s.height, s.layer_scale));
