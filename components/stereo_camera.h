@@ -5,8 +5,13 @@
 
 namespace pyro {
 
+// Which eye's view goes where the output expects the left one: the left eye (the usual), or
+// the right (glasses worn the other way round, a projector pair wired crossed).
+enum class EyeOrder { left_right, right_left };
+
 struct StereoCamera {
   StereoParameters parameters;
+  EyeOrder eye_order = EyeOrder::left_right;
 };
 
 }  // namespace pyro

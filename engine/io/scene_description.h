@@ -25,6 +25,7 @@ struct CameraDescription {
   // Stereo pair (used when a stereo output mode is chosen): off-axis, parallel view axes.
   float interocular = 0.065f;          // world units between the eyes, >= 0
   float zero_parallax_distance = 8.0f; // view depth where both eyes' images coincide, > 0
+  bool swap_eyes = false;              // "eye_order": "right-left" puts the right eye first
 };
 
 // How particle billboards are oriented (Johnson & McAllister 2005, section 3): all facing the

@@ -494,6 +494,23 @@ void require_nonzero(const glm::vec3& v, const Where& at, std::string_view what)
   }
 }
 
+// A string that must be one of `names`; returns its index.
+std::size_t read_choice(ObjectReader& r, std::string_view key,
+                        const std::vector<std::string_view>& names, std::size_t fallback) {
+  const json* v = r.find(key);
+  if (v == nullptr) return fallback;
+  if (!v->is_string())
+    r.at(key).fail("expected one of " + quoted_list(names) + ", found " + describe(*v));
+  const std::string name = v->get<std::string>();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return i;
+  std::string message = "unknown value " + in_quotes(name) + "; expected one of " + quoted_list(names);
+  const std::string hint = suggest(name, names);
+  if (hint.rfind("; did you mean", 0) == 0) message += hint;
+  r.at(key).fail(message);
+  return fallback;
+}
+
 void read_camera(ObjectReader& r, CameraDescription& c) {
   r.vec3("position", kAnyRange, c.position);
   r.vec3("target", kAnyRange, c.target);
@@ -505,6 +522,7 @@ void read_camera(ObjectReader& r, CameraDescription& c) {
   r.object("stereo", [&](ObjectReader& st) {
     st.number("interocular", kNonNegative, c.interocular);
     st.number("zero_parallax_distance", kPositive, c.zero_parallax_distance);
+    c.swap_eyes = read_choice(st, "eye_order", {"left-right", "right-left"}, c.swap_eyes ? 1 : 0) == 1;
   });
 
   if (!(c.far > c.near)) {
@@ -592,23 +610,6 @@ void read_mesh(ObjectReader& r, MeshDescription& m) {
   r.vec3("position", kAnyRange, m.position);
   r.number("scale", kPositive, m.scale);
   r.vec3("color", kUnit, m.color);
-}
-
-// A string that must be one of `names`; returns its index.
-std::size_t read_choice(ObjectReader& r, std::string_view key,
-                        const std::vector<std::string_view>& names, std::size_t fallback) {
-  const json* v = r.find(key);
-  if (v == nullptr) return fallback;
-  if (!v->is_string())
-    r.at(key).fail("expected one of " + quoted_list(names) + ", found " + describe(*v));
-  const std::string name = v->get<std::string>();
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return i;
-  std::string message = "unknown value " + in_quotes(name) + "; expected one of " + quoted_list(names);
-  const std::string hint = suggest(name, names);
-  if (hint.rfind("; did you mean", 0) == 0) message += hint;
-  r.at(key).fail(message);
-  return fallback;
 }
 
 void read_render(ObjectReader& r, RenderDescription& d) {

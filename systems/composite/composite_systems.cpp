@@ -5,6 +5,7 @@
 #include "components/gpu_frame.h"
 #include "components/view.h"
 #include "components/render_settings.h"
+#include "components/stereo_camera.h"
 #include "engine/ecs/world.h"
 #include "systems/composite/compositor.h"
 
@@ -19,7 +20,7 @@ Compositor& compositor(ecs::World& world) {
 
 ecs::SystemDesc stereo_compose_system() {
   return {"composite", ecs::Phase::composite,
-          ecs::access<GpuFrame, RenderSettings, View, FrameClock, ExplosionShading>(),
+          ecs::access<GpuFrame, RenderSettings, StereoCamera, View, FrameClock, ExplosionShading>(),
           ecs::access<GpuFrame>(), [](ecs::World& world) {
             const GpuFrame& frame = world.resource<GpuFrame>();
             if (!frame.eyes.empty() && frame.eyes[0].media[0]) {
@@ -38,7 +39,13 @@ ecs::SystemDesc stereo_compose_system() {
               }
               compositor(world).set_media(m);
             }
-            compositor(world).compose(world.resource<RenderSettings>().stereo_mode, frame);
+            bool swap_eyes = false;
+            bool found = false;
+            world.each<StereoCamera>([&](StereoCamera& s) {
+              if (!found) swap_eyes = s.eye_order == EyeOrder::right_left;
+              found = true;
+            });
+            compositor(world).compose(world.resource<RenderSettings>().stereo_mode, frame, swap_eyes);
             if (frame.display) {
               // The frame-scale shortcut: upscale the composed image bilinearly.
               const gpu::RenderTarget& from = *frame.output;

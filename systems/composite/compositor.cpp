@@ -103,14 +103,15 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void Compositor::compose(StereoMode mode, const GpuFrame& frame) {
+void Compositor::compose(StereoMode mode, const GpuFrame& frame, bool swap_eyes) {
   for (const EyeTargets& eye : frame.eyes)
     if (eye.media_combined) prepare_media(eye);
   const gpu::RenderTarget& out = *frame.output;
   glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
   glEnable(GL_FRAMEBUFFER_SRGB);  // linear in, sRGB-encoded bytes out (on for every pass)
-  const EyeTargets& l = frame.eyes[0];
-  const EyeTargets& r = frame.eyes.size() > 1 ? frame.eyes[1] : frame.eyes[0];
+  const size_t first = swap_eyes && frame.eyes.size() > 1 ? 1 : 0;
+  const EyeTargets& l = frame.eyes[first];
+  const EyeTargets& r = frame.eyes.size() > 1 ? frame.eyes[1 - first] : frame.eyes[0];
   bind_views(l, r);
   const int w = l.scene->width(), h = l.scene->height();
   const glm::mat3 I(1.0f), Z(0.0f);

@@ -27,7 +27,8 @@ class Compositor {
   void resolve_linear(const EyeTargets& view, const gpu::RenderTarget& out);
   // Writes frame.output from the views in frame.eyes (left, right) for `mode`, compositing each
   // view's particle layer over its scene on the way: one full-screen pass in all.
-  void compose(StereoMode mode, const GpuFrame& frame);
+  // `swap_eyes`: the right view goes where the left one is expected, and the other way round.
+  void compose(StereoMode mode, const GpuFrame& frame, bool swap_eyes = false);
 
  private:
   void bind_views(const EyeTargets& left, const EyeTargets& right);

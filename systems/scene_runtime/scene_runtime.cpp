@@ -82,6 +82,8 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   stereo.parameters.interocular = options.interocular.value_or(scene.camera.interocular);
   stereo.parameters.zero_parallax_distance =
       options.zero_parallax_distance.value_or(scene.camera.zero_parallax_distance);
+  stereo.eye_order = options.swap_eyes.value_or(scene.camera.swap_eyes) ? EyeOrder::right_left
+                                                                        : EyeOrder::left_right;
   world_.emplace<StereoCamera>(camera, stereo);
   if (scene.camera.orbit_deg_per_second != 0.0f)
     world_.emplace<CameraOrbit>(camera, CameraOrbit{scene.camera.position, scene.camera.orbit_deg_per_second});

@@ -38,6 +38,7 @@ struct RuntimeOptions {
   float frame_scale = 1.0f;                     // views at this fraction, output upscaled
   std::optional<float> interocular;
   std::optional<float> zero_parallax_distance;
+  std::optional<bool> swap_eyes;  // replaces the scene's eye order
   // Finish the GPU's work after every system, so each system's timing includes the GPU work it
   // issued (profiling; it removes CPU/GPU overlap, so frames get slower).
   bool sync_timing = false;

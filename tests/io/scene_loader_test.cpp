@@ -519,6 +519,10 @@ TEST(SceneLoader, RenderAndStereoSettings) {
   EXPECT_FLOAT_EQ(s.render.layer_scale, 0.25f);
   EXPECT_FLOAT_EQ(s.camera.interocular, 0.3f);
   EXPECT_FLOAT_EQ(s.camera.zero_parallax_distance, 6.0f);
+  EXPECT_FALSE(s.camera.swap_eyes);
+  EXPECT_TRUE(parse_scene(R"({"camera": {"stereo": {"eye_order": "right-left"}}})", "r.json").camera.swap_eyes);
+  expect_error(R"({"camera": {"stereo": {"eye_order": "left"}}})", "/camera/stereo/eye_order",
+               {"expected one of \"left-right\", \"right-left\""});
   expect_error(R"({"render": {"billboards": "viewpiont"}})", "/render/billboards",
                {"unknown value \"viewpiont\"", "did you mean \"viewpoint\""});
   expect_error(R"({"render": {"layer_scale": 0.3}})", "/render/layer_scale",

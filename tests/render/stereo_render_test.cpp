@@ -142,6 +142,22 @@ TEST(StereoRender, SideBySideOrders) {
                   parallel[(static_cast<size_t>(y) * 320 + x + 160) * 4 + c]);
 }
 
+TEST(StereoRender, RightLeftEyeOrderSwapsTheViews) {
+  // Side by side with the eyes swapped is the crossed arrangement.
+  SceneDescription s = one_particle({0.0f, 0.0f, -2.0f});
+  auto render = [&](StereoMode mode, bool swap) {
+    RuntimeOptions o;
+    o.readback = false;
+    o.stereo_mode = mode;
+    o.swap_eyes = swap;
+    SceneRuntime r(s, o);
+    r.step();
+    return r.world().resource<GpuFrame>().output->read_rgba8();
+  };
+  EXPECT_EQ(render(StereoMode::side_by_side, true), render(StereoMode::side_by_side_crossed, false));
+  EXPECT_NE(render(StereoMode::side_by_side, true), render(StereoMode::side_by_side, false));
+}
+
 TEST(StereoRender, ZeroParallaxPlaneLooksTheSameToBothEyes) {
   RuntimeOptions o;
   o.readback = false;

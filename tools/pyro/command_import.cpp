@@ -11,6 +11,7 @@
 
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
+#include "engine/io/vdb_reader.h"
 #include "systems/cloud_import/cloud_import.h"
 #include "systems/reference/volume_reference.h"
 #include "systems/scene_runtime/particle_snapshot.h"
@@ -27,13 +28,39 @@ struct ImportArgs {
   double error = 0.03;
   int width = 256, height = 256;
   bool json = false;
+  bool list = false;
 };
+
+// --list: what the file holds, one grid a line (or a JSON array), nothing written.
+void list_grids(const ImportArgs& a) {
+  const std::vector<VdbGridInfo> grids = list_vdb_grids(a.file);
+  nlohmann::json out = nlohmann::json::array();
+  for (const VdbGridInfo& g : grids) {
+    out.push_back({{"index", g.index}, {"name", g.name}, {"value_type", g.value_type},
+                   {"class", g.grid_class}, {"half_float", g.half_float},
+                   {"voxel_size", g.voxel_size}, {"active_voxels", g.active_voxels},
+                   {"bbox_min", g.bbox_min}, {"bbox_max", g.bbox_max},
+                   {"importable", g.is_float() && g.affine}});
+    if (!a.json)
+      std::printf("[%d] \"%s\" %s %s%s, %llu active voxels, voxel size %g x %g x %g%s\n", g.index,
+                  g.name.c_str(), g.value_type.c_str(), g.grid_class.c_str(),
+                  g.half_float ? " (half float)" : "",
+                  static_cast<unsigned long long>(g.active_voxels), g.voxel_size[0], g.voxel_size[1],
+                  g.voxel_size[2], g.is_float() && g.affine ? "" : "  [cannot be imported]");
+  }
+  if (a.json) std::printf("%s\n", nlohmann::json{{"file", a.file}, {"grids", out}}.dump().c_str());
+}
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
 void run_import(const ImportArgs& a) {
+  if (a.list) {
+    list_grids(a);
+    return;
+  }
+  if (a.out.empty()) throw UserError("command line", "--out", "the particle file to write (.pyrop)");
   if (!(a.error > 0.0 && a.error <= 1.0))
     throw UserError("", "--error", "a number in (0, 1], found " + std::to_string(a.error));
   const auto t0 = std::chrono::steady_clock::now();
@@ -106,7 +133,8 @@ void add_import_command(CLI::App& app) {
   cmd->add_option("--grid", args->grid, "Grid name (default: \"density\", else the first float grid)");
   cmd->add_option("--grid-index", args->grid_index, "Grid position in the file, from 0 (for repeated names)");
   cmd->add_option("--error", args->error, "Image error target in (0, 1] (default 0.03)");
-  cmd->add_option("--out", args->out, "Particle file to write (.pyrop)")->required();
+  cmd->add_option("--out", args->out, "Particle file to write (.pyrop); required unless --list");
+  cmd->add_flag("--list", args->list, "List the file's grids (index, name, type, class, voxels) and exit");
   cmd->add_option("--width", args->width, "Width of the evaluation image (default 256)")->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Height of the evaluation image (default 256)")->check(CLI::Range(1, 8192));
   cmd->add_flag("--json", args->json, "Print a JSON summary");

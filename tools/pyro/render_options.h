@@ -59,6 +59,10 @@ inline void add_render_options(CLI::App* cmd, RuntimeOptions& o) {
   cmd->add_option("--frame-scale", o.frame_scale,
                   "Render the views at this fraction of the output size, then upscale: 1, 0.5, 0.25")
       ->check(CLI::IsMember({1.0f, 0.5f, 0.25f}));
+  cmd->add_option_function<std::string>(
+         "--eye-order", [&o](const std::string& v) { o.swap_eyes = v == "right-left"; },
+         "left-right (default) or right-left: which eye goes where the left view is expected")
+      ->check(CLI::IsMember({"left-right", "right-left"}));
   cmd->add_option_function<float>(
          "--interocular", [&o](float v) { o.interocular = v; },
          "Eye separation in world units (default: the scene's)")
