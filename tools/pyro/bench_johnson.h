@@ -6,7 +6,7 @@ namespace pyro::cli {
 struct JohnsonBenchOptions {
   int frames = 90;          // frames along the scripted path, per scene
   int width = 1024, height = 768;
-  float layer_scale = 0.5f;   // particle layer resolution (1: full), relative to the views
+  float layer_scale = 0.25f;  // particle layer resolution (1: full), relative to the views
   float frame_scale = 0.5f;   // views rendered at this fraction of 1024x768, then upscaled
   int error_samples = 5;      // frames along the path where the layer's RMSE is measured
   bool sync_timing = false;   // per-system times include their GPU work (slower frames)
