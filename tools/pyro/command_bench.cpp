@@ -108,6 +108,9 @@ void add_bench_commands(CLI::App& app) {
   soak_cmd->add_option("--frames", soak->options.frames, "Frames simulated")->check(CLI::Range(10L, 100000000L));
   soak_cmd->add_option("--render-every", soak->options.render_every,
                        "Render every k-th frame (0: simulate only)")->check(CLI::Range(0, 1000000));
+  soak_cmd->add_option("--rearm-every", soak->options.rearm_every,
+                       "Fire the emitters' bursts again every this many seconds of scene time (0: never)")
+      ->check(CLI::Range(0.0, 1e9));
   soak_cmd->add_option("--width", soak->options.width, "Width when rendering")->check(CLI::Range(16, 8192));
   soak_cmd->add_option("--height", soak->options.height, "Height when rendering")->check(CLI::Range(16, 8192));
   soak_cmd->add_flag("--json", soak->json, "Print one JSON object");
