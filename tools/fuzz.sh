@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# tools/fuzz.sh TARGET SECONDS — builds the libFuzzer targets (clang++-14, PYRO_FUZZ=ON: coverage,
+# ASan, UBSan) into build-fuzz/ and runs TARGET (scene, vdb, png or cli) for SECONDS under
+# `nice -n 19`, starting from the committed seeds in tests/fuzz/corpus/TARGET. New inputs go to
+# build-fuzz/corpus/TARGET (not committed); a crashing input is written to
+# build-fuzz/artifacts/TARGET/ — commit it under tests/fuzz/regressions/TARGET/ with the fix
+# (the normal suite feeds every file there to the target: tests/fuzz/fuzz_inputs_test.cpp).
+# Environment: JOBS (build jobs, default 2), CXX (default clang++-14), FUZZ_ARGS (extra
+# libFuzzer flags).
+set -euo pipefail
+if [[ $# -ne 2 ]]; then
+  echo "usage: tools/fuzz.sh TARGET SECONDS   (TARGET: scene, vdb, png, cli)" >&2
+  exit 2
+fi
+target=$1
+seconds=$2
+case "$target" in scene | vdb | png | cli) ;; *)
+  echo "tools/fuzz.sh: unknown target \"$target\" (expected scene, vdb, png or cli)" >&2
+  exit 2 ;;
+esac
+if ! [[ "$seconds" =~ ^[1-9][0-9]*$ ]]; then
+  echo "tools/fuzz.sh: SECONDS must be a positive whole number, found \"$seconds\"" >&2
+  exit 2
+fi
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=$root/build-fuzz
+cxx=${CXX:-clang++-14}
+
+if [[ ! -f $build/CMakeCache.txt ]]; then
+  nice -n 19 cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DPYRO_FUZZ=ON -DPYRO_BUILD_TESTS=OFF >/dev/null
+fi
+nice -n 19 cmake --build "$build" -j "${JOBS:-2}" --target "fuzz_$target"
+
+mkdir -p "$build/corpus/$target" "$build/artifacts/$target"
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/tests/sanitizers/lsan_suppressions.txt}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+cd "$build"
+# shellcheck disable=SC2086
+exec nice -n 19 "$build/fuzz_$target" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 \
+  -print_final_stats=1 -artifact_prefix="$build/artifacts/$target/" ${FUZZ_ARGS:-} \
+  "$build/corpus/$target" "$root/tests/fuzz/corpus/$target"
