@@ -58,6 +58,10 @@ class Schedule {
   // the systems after it do not run and its own timing is not recorded.
   void run_frame(World& world);
 
+  // Runs, in order(), only the systems whose phase is `last` or earlier (e.g. Phase::simulate:
+  // advance the simulation without sorting or rendering), timing each like run_frame.
+  void run_phases_through(World& world, Phase last);
+
   // One entry per system, in run order.
   const std::vector<SystemStats>& stats() const { return stats_; }
 

@@ -10,6 +10,7 @@
 #include "components/emitter.h"
 #include "components/particle_dynamics.h"
 #include "components/simulation_environment.h"
+#include "engine/io/scene_budget.h"
 
 namespace pyro {
 
@@ -144,6 +145,7 @@ struct SceneDescription {
   SimulationEnvironment environment;
   float prewarm = 0.0f;                      // seconds run before frame 0, >= 0
   std::vector<EmitterDescription> emitters;
+  SceneBudget budget;                        // refused up front when exceeded (scene_budget.h)
 };
 
 }  // namespace pyro

@@ -908,6 +908,13 @@ SceneDescription read_scene(ObjectReader& r) {
   r.object("environment", [&](ObjectReader& e) { read_environment(e, s.environment, s.prewarm); });
   r.objects("emitters", "an object describing an emitter",
             [&](ObjectReader& e, std::size_t) { read_emitter(e, s.emitters.emplace_back()); });
+  r.object("budget", [&](ObjectReader& b) {
+    b.integer("particles", 1, 4'000'000'000ull, s.budget.particles);
+    std::uint64_t memory_mib = s.budget.memory_bytes >> 20;
+    b.integer("memory_mib", 1, 1ull << 20, memory_mib);
+    s.budget.memory_bytes = memory_mib << 20;
+    b.integer("texture_size", 1, 65536, s.budget.texture_size);
+  });
   r.finish();
   return s;
 }

@@ -22,6 +22,7 @@
 #include "components/volume_source.h"
 #include "engine/core/rng.h"
 #include "engine/io/png_file.h"
+#include "engine/io/scene_budget.h"
 #include "engine/math/footprint.h"
 #include "systems/animation/drift_system.h"
 #include "systems/animation/particle_animation_system.h"
@@ -66,6 +67,23 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   settings.stereo_mode = options.stereo_mode;
   settings.shading = options.shading.value_or(scene.render.shading);
   world_.set_resource<RenderSettings>(settings);
+
+  // Budgets (engine/io/scene_budget.h): refused here, before any pool or target is allocated,
+  // and again once the volumes' particles are known.
+  GLint driver_max_texture = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &driver_max_texture);
+  const int views = settings.stereo_mode == StereoMode::mono ? 1 : 2;
+  const bool side_by_side = settings.stereo_mode == StereoMode::side_by_side ||
+                            settings.stereo_mode == StereoMode::side_by_side_crossed ||
+                            settings.stereo_mode == StereoMode::left_right;
+  const auto check_budget = [&](uint64_t volume_particles) {
+    check_scene_budget(scene,
+                       estimate_scene_cost(scene, settings.width, settings.height, views,
+                                           side_by_side ? 2 * settings.width : settings.width,
+                                           volume_particles),
+                       driver_max_texture);
+  };
+  check_budget(0);
   FrameClock clock;
   clock.dt = 1.0f / scene.frames_per_second;
   world_.set_resource<FrameClock>(clock);
@@ -122,6 +140,11 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     world_.emplace<VolumeSource>(
         e, VolumeSource{v.path, v.used_fallback, loaded.active_voxels, loaded.particles.size()});
   }
+  if (!scene.volumes.empty()) {
+    uint64_t volume_particles = 0;
+    world_.each<VolumeSource>([&](VolumeSource& source) { volume_particles += source.particles; });
+    check_budget(volume_particles);
+  }
   world_.set_resource<SimulationEnvironment>(scene.environment);
   for (size_t k = 0; k < scene.emitters.size(); ++k) {
     const EmitterDescription& d = scene.emitters[k];
@@ -166,6 +189,11 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
 void SceneRuntime::step() {
   shared_headless_context().make_current();
   schedule_.run_frame(world_);
+  world_.resource<FrameClock>().frame += 1;
+}
+
+void SceneRuntime::simulate_step() {
+  schedule_.run_phases_through(world_, ecs::Phase::simulate);
   world_.resource<FrameClock>().frame += 1;
 }
 

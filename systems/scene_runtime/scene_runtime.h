@@ -53,6 +53,10 @@ class SceneRuntime {
 
   // Runs every system once for the current frame, then advances the clock.
   void step();
+  // Runs only the spawn and simulate phases for the current frame (no sorting, rendering or
+  // output), then advances the clock: the particle state afterwards is the one step() leaves.
+  // `pyro render --frames A:B` uses it to reach frame A without drawing the frames before it.
+  void simulate_step();
   uint64_t frame() const;
 
   ecs::World& world() { return world_; }

@@ -57,8 +57,8 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
   world.group<Position, Velocity>();
   for (std::size_t i = 0; i < n; ++i) {
     const ecs::Entity e = world.create();
-    world.emplace<Position>(e, init_value(i, 0), init_value(i, 1), init_value(i, 2));
-    world.emplace<Velocity>(e, init_value(i, 3), init_value(i, 4), init_value(i, 5));
+    world.emplace<Position>(e, Position{init_value(i, 0), init_value(i, 1), init_value(i, 2)});
+    world.emplace<Velocity>(e, Velocity{init_value(i, 3), init_value(i, 4), init_value(i, 5)});
   }
 
   // (2) One ParticlePool of capacity n. A single pool keeps the loop the same shape as the

@@ -1,5 +1,6 @@
 // pyro bench ecs --entities N [--repeats R] --json
 // pyro bench render SCENE [--width W] [--height H] [--frames N] --json
+// pyro bench soak SCENE [--frames N] [--render-every K] --json
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -10,6 +11,7 @@
 #include "tools/pyro/bench_johnson.h"
 #include "tools/pyro/bench_layers.h"
 #include "tools/pyro/bench_render.h"
+#include "tools/pyro/bench_soak.h"
 #include "tools/pyro/commands.h"
 
 namespace pyro::cli {
@@ -99,6 +101,22 @@ void add_bench_commands(CLI::App& app) {
   table1_cmd->add_option("--frames", table1->options.frames, "Timed frames per row")->check(CLI::Range(1, 100000));
   table1_cmd->add_flag("--json", table1->json, "Print one JSON object");
   table1_cmd->callback([table1] { print(bench_table1(table1->options), table1->json); });
+
+  struct SoakArgs { SoakBenchOptions options; bool json = false; };
+  auto soak = std::make_shared<SoakArgs>();
+  CLI::App* soak_cmd = bench->add_subcommand(
+      "soak", "Long run: N frames simulated; NaN in the particles, resident memory and time per frame");
+  soak_cmd->add_option("scene", soak->options.scene, "Scene file (JSON)")->required();
+  soak_cmd->add_option("--frames", soak->options.frames, "Frames simulated")->check(CLI::Range(10L, 100000000L));
+  soak_cmd->add_option("--render-every", soak->options.render_every,
+                       "Render every k-th frame (0: simulate only)")->check(CLI::Range(0, 1000000));
+  soak_cmd->add_option("--rearm-every", soak->options.rearm_every,
+                       "Fire the emitters' bursts again every this many seconds of scene time (0: never)")
+      ->check(CLI::Range(0.0, 1e9));
+  soak_cmd->add_option("--width", soak->options.width, "Width when rendering")->check(CLI::Range(16, 8192));
+  soak_cmd->add_option("--height", soak->options.height, "Height when rendering")->check(CLI::Range(16, 8192));
+  soak_cmd->add_flag("--json", soak->json, "Print one JSON object");
+  soak_cmd->callback([soak] { print(bench_soak(soak->options), soak->json); });
 }
 
 }  // namespace pyro::cli

@@ -1,4 +1,7 @@
-// pyro render SCENE --out DIR [--width W] [--height H] [--frames N] [--json]
+// pyro render SCENE --out DIR [--width W] [--height H] [--frames N | --frames A:B] [--json]
+//
+// Frames are rendered into a temporary folder beside DIR and moved into DIR only when every
+// frame has been written: a failure (or a refusal) leaves DIR as it was.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +15,8 @@
 #include "engine/io/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/frame_range.h"
+#include "engine/io/staging_folder.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/render_options.h"
 
@@ -23,7 +28,7 @@ struct RenderArgs {
   std::string scene;
   std::string out;
   int width = 0, height = 0;
-  int frames = 1;
+  std::string frames = "1";
   bool json = false;
   RuntimeOptions runtime;
 };
@@ -36,6 +41,7 @@ std::string frame_name(int f) {
 
 void run_render(const RenderArgs& a) {
   // Everything the user can get wrong is checked before anything is written.
+  const FrameRange range = parse_frame_range(a.frames, "--frames");
   const SceneDescription scene = load_scene(a.scene);
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -47,19 +53,24 @@ void run_render(const RenderArgs& a) {
   options.readback = false;
   options.width_override = a.width;
   options.height_override = a.height;
-  SceneRuntime runtime(scene, options);
-  fs::create_directories(a.out, ec);
-  if (ec) throw UserError(a.out, "--out", "cannot create the output folder: " + ec.message());
+  SceneRuntime runtime(scene, options);  // refuses a scene over its budget (scene_budget.h)
 
+  StagingFolder staging(a.out);
   nlohmann::json files = nlohmann::json::array();
-  Progress progress("render " + scene.name, static_cast<size_t>(a.frames));
-  for (int f = 0; f < a.frames; ++f) {
+  const int count = range.count();
+  Progress progress("render " + scene.name, static_cast<size_t>(count));
+  // Frame f is the state after f steps whatever the range: the frames before the first are
+  // simulated (same systems, same order) but neither drawn nor written.
+  for (int f = 0; f < range.first; ++f) runtime.simulate_step();
+  for (int f = range.first; f <= range.last; ++f) {
     runtime.step();
-    for (const std::string& path : runtime.write_png((fs::path(a.out) / frame_name(f)).string()))
-      files.push_back(path);
-    progress.update(static_cast<size_t>(f + 1));
+    for (const std::string& path :
+         runtime.write_png((staging.path() / frame_name(f)).string()))
+      files.push_back((fs::path(a.out) / fs::path(path).filename()).string());
+    progress.update(static_cast<size_t>(f - range.first + 1));
   }
   progress.finish();
+  staging.commit();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   const auto* lists = runtime.world().try_resource<EyeDrawLists>();
@@ -75,7 +86,9 @@ void run_render(const RenderArgs& a) {
       {"scene", scene.file},
       {"name", scene.name},
       {"out", a.out},
-      {"frames", a.frames},
+      {"frames", count},
+      {"first_frame", range.first},
+      {"last_frame", range.last},
       {"width", rs.width},
       {"height", rs.height},
       {"stereo", stereo},
@@ -84,14 +97,14 @@ void run_render(const RenderArgs& a) {
       {"particles", particles},
       {"files", files},
       {"seconds", seconds},
-      {"ms_per_frame", seconds * 1000.0 / a.frames},
+      {"ms_per_frame", seconds * 1000.0 / count},
       {"systems", systems},
       {"renderer", shared_headless_context().description()}};
   if (a.json) {
     std::printf("%s\n", summary.dump().c_str());
   } else {
     std::printf("rendered %d frame(s) of %s (%dx%d %s, %zu particles) into %s in %.2f s\n",
-                a.frames, scene.file.c_str(), rs.width, rs.height, stereo.c_str(), particles,
+                count, scene.file.c_str(), rs.width, rs.height, stereo.c_str(), particles,
                 a.out.c_str(), seconds);
   }
 }
@@ -107,7 +120,9 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Image height in pixels (default: the scene's)")
       ->check(CLI::Range(1, 8192));
-  cmd->add_option("--frames", args->frames, "Number of frames")->check(CLI::Range(1, 1000000));
+  cmd->add_option("--frames", args->frames,
+                  "N: frames 0..N-1; A:B: frames A..B inclusive (simulated from frame 0, only A..B "
+                  "written, named frame_A.png ...)");
   cmd->add_flag("--json", args->json, "Print a JSON summary as the last line");
   add_render_options(cmd, args->runtime);
   cmd->callback([args] { run_render(*args); });

@@ -8,17 +8,13 @@
 
 #include "engine/core/user_error.h"
 #include "engine/gpu/gpu_error.h"
-#include "tools/pyro/commands.h"
+#include "tools/pyro/app.h"
 #include "tools/pyro/external_tool_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Pyrocumulus: real-time gaseous phenomena (clouds, fog, mist) splatted as "
                "Gaussian particles"};
-  app.require_subcommand(1);
-  pyro::cli::add_render_command(app);
-  pyro::cli::add_analyze_commands(app);
-  pyro::cli::add_bench_commands(app);
-  pyro::cli::add_import_command(app);
+  pyro::cli::add_pyro_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,10 @@
+// libFuzzer entry point for the vdb target (tests/fuzz/fuzz_targets.h; tools/fuzz.sh vdb SECONDS).
+#include <cstddef>
+#include <cstdint>
+
+#include "tests/fuzz/fuzz_targets.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
+  pyro::fuzz::vdb(data, size);
+  return 0;
+}
