@@ -13,18 +13,13 @@
 
 #include "engine/io/png_file.h"
 #include "engine/math/billboard_alignment.h"
+#include "tests/support/json_output.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
 namespace {
 
 namespace fs = std::filesystem;
-
-nlohmann::json last_json_line(const std::string& out) {
-  const auto end = out.find_last_not_of('\n');
-  const auto start = out.rfind('\n', end);
-  return nlohmann::json::parse(out.substr(start == std::string::npos ? 0 : start + 1, end + 1));
-}
 
 std::string read_all(const fs::path& p) {
   std::ifstream in(p);
@@ -50,7 +45,7 @@ TEST(PyroCliAlignment, ProjectionErrorAtOnePoint) {
       test::run_pyro({"analyze", "projection-error", "--cx", "1", "--cy", "1", "--cz", "-3",
                       "--radius", "0.5", "--near", "1", "--interocular", "0.065", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = last_json_line(r.out);
+  const auto j = test::last_json_line(r.out);
   const glm::dvec3 c(1.0, 1.0, -3.0);
   const ProjectionError e = projection_error(c, 0.5, 1.0);
   const ParallaxError p = parallax_error(c, 0.5, 1.0, 0.065);
@@ -116,7 +111,7 @@ TEST(PyroCliAlignment, AllSurfacesAsCsv) {
   const auto r = test::run_pyro({"analyze", "projection-error", "--surface", "all", "--out",
                                  out.string(), "--grid", "9", "--csv-only", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = last_json_line(r.out);
+  const auto j = test::last_json_line(r.out);
   ASSERT_EQ(j["figures"].size(), 10u);
   EXPECT_FALSE(j["png"].get<bool>());
   const char* headers[] = {"c_x,c_y,c_z,e_x,e_x_paper",
@@ -164,7 +159,7 @@ TEST(PyroCliAlignment, SurfaceAsPng) {
   const auto r = test::run_pyro({"analyze", "projection-error", "--surface", "fig9", "--out",
                                  out.string(), "--grid", "11", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = last_json_line(r.out);
+  const auto j = test::last_json_line(r.out);
   ASSERT_EQ(j["figures"].size(), 1u);
   const fs::path png = j["figures"][0]["png"].get<std::string>();
   ASSERT_TRUE(fs::exists(png)) << png;
@@ -205,7 +200,7 @@ TEST(PyroCliAlignment, StereoAnalysis) {
   const auto r = test::run_pyro(
       {"analyze", "stereo", "--eye", "3", "2.5", "7", "--target", "-1", "1", "0", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = last_json_line(r.out);
+  const auto j = test::last_json_line(r.out);
   EXPECT_EQ(j["points"], 21 * 21 * 21);
   EXPECT_EQ(j["width"], 1024);
   EXPECT_EQ(j["height"], 768);
@@ -223,7 +218,7 @@ TEST(PyroCliAlignment, StereoAnalysis) {
 
   const auto zero = test::run_pyro({"analyze", "stereo", "--interocular", "0", "--json"});
   ASSERT_EQ(zero.exit_code, 0) << zero.err;
-  const auto z = last_json_line(zero.out);
+  const auto z = test::last_json_line(zero.out);
   EXPECT_EQ(z["max_vertical_parallax"].get<double>(), 0.0);
   EXPECT_EQ(z["horizontal_parallax_range"], nlohmann::json({0.0, 0.0}));
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/png_file.h"
+#include "tests/support/json_output.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -15,18 +16,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-nlohmann::json last_json_line(const std::string& out) {
-  const auto end = out.find_last_not_of('\n');
-  const auto start = out.rfind('\n', end);
-  return nlohmann::json::parse(out.substr(start == std::string::npos ? 0 : start + 1, end + 1));
-}
-
 TEST(PyroCli, RenderWritesFramesAndSummary) {
   const fs::path out = test::scratch_dir("render") / "frames";
   const auto r = test::run_pyro({"render", test::scene_path("mist.json"), "--out", out.string(),
                                  "--width", "96", "--height", "64", "--frames", "3", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = last_json_line(r.out);
+  const auto j = test::last_json_line(r.out);
   EXPECT_EQ(j["frames"], 3);
   EXPECT_EQ(j["width"], 96);
   EXPECT_EQ(j["height"], 64);
@@ -47,7 +42,7 @@ TEST(PyroCli, RenderWritesFramesAndSummary) {
 TEST(PyroCli, AnalyzeFootprintMeetsTheBar) {
   const auto r = test::run_pyro({"analyze", "footprint", "--size", "64", "--intervals", "100", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = last_json_line(r.out);
+  const auto j = test::last_json_line(r.out);
   EXPECT_LE(j["max_abs_error"].get<double>(), 2e-3);
   EXPECT_GT(j["max_abs_error"].get<double>(), 0.0);
 }
