@@ -2,10 +2,14 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <system_error>
 
 #include "engine/core/user_error.h"
+#include "engine/io/png_structure_check.h"
 #include "engine/math/color.h"
 
 #pragma GCC diagnostic push
@@ -47,8 +51,24 @@ std::vector<uint8_t> linear_rgba_to_srgb8(const std::vector<float>& rgba, int wi
 }
 
 PngImage read_png(const std::string& path) {
+  std::vector<uint8_t> bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::error_code ec;
+    if (!in || !std::filesystem::is_regular_file(path, ec))
+      throw UserError(path, "", "cannot open PNG file: " +
+                                    std::string(std::filesystem::exists(path, ec)
+                                                    ? "not a readable regular file"
+                                                    : "No such file or directory"));
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // stb_image trusts the chunk layout (png_structure_check.h says what goes wrong without this).
+  check_png_structure(path, bytes);
+  if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
+    throw UserError(path, "", "a PNG file smaller than 2 GiB");
   PngImage img;
-  unsigned char* data = stbi_load(path.c_str(), &img.width, &img.height, &img.channels, 0);
+  unsigned char* data = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()),
+                                              &img.width, &img.height, &img.channels, 0);
   if (!data) throw UserError(path, "", std::string("cannot read PNG: ") + stbi_failure_reason());
   img.pixels.assign(data, data + static_cast<size_t>(img.width) * img.height * img.channels);
   stbi_image_free(data);

@@ -15,8 +15,12 @@
 #include <mutex>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "engine/core/user_error.h"
+#include "engine/io/isolated_call.h"
 #include "engine/io/vdb_file_check.h"
+#include "engine/io/vdb_grid_transfer.h"
 
 namespace pyro {
 
@@ -113,12 +117,18 @@ auto guarded(const std::string& path, const std::string& place, F&& f) {
 
 std::string quote(const std::string& s) { return "\"" + s + "\""; }
 
+// Writes the grid made dense over its active bounding box into the child's result (`head`
+// holds the fields known before: file, name, transform, ...).
 template <class GridT>
-DenseGrid densify(const GridT& grid) {
-  DenseGrid d;
+void densify_into(const GridT& grid, DenseGrid head, const std::string& note, ResultWriter& out) {
   const openvdb::CoordBBox box = grid.evalActiveVoxelBoundingBox();
-  d.active_voxels = grid.activeVoxelCount();
-  if (d.active_voxels == 0 || box.empty()) return d;
+  const uint64_t active = grid.activeVoxelCount();
+  if (active == 0 || box.empty()) {
+    head.dims = {0, 0, 0};
+    begin_dense_grid(out, note, head);
+    end_dense_grid(out, active, 0.0f);
+    return;
+  }
   const openvdb::Coord dim = box.dim();
   const uint64_t n = uint64_t(dim[0]) * uint64_t(dim[1]) * uint64_t(dim[2]);
   if (n > kMaxDenseVoxels)
@@ -126,19 +136,18 @@ DenseGrid densify(const GridT& grid) {
                     "a grid whose active bounding box has at most 2^28 voxels, found " +
                         std::to_string(n));
   for (int a = 0; a < 3; ++a) {
-    d.origin[a] = box.min()[a];
-    d.dims[a] = dim[a];
+    head.origin[a] = box.min()[a];
+    head.dims[a] = dim[a];
   }
+  float* values = begin_dense_grid(out, note, head);  // zero-filled: a fresh file region
   // OpenVDB's dense copy walks the tree leaf by leaf (tiles included) on TBB's threads; the
   // layout with x fastest matches DenseGrid's index (z * ny + y) * nx + x.
-  d.values.assign(n, 0.0f);
   using Dense = openvdb::tools::Dense<float, openvdb::tools::LayoutXYZ>;
-  Dense dense(box, d.values.data());
+  Dense dense(box, values);
   openvdb::tools::copyToDense(grid, dense, /*serial=*/false);
   float mx = 0.0f;
-  for (float v : d.values) mx = std::max(mx, v);
-  d.max_value = mx;
-  return d;
+  for (uint64_t i = 0; i < n; ++i) mx = std::max(mx, values[i]);
+  end_dense_grid(out, active, mx);
 }
 
 }  // namespace
@@ -154,9 +163,11 @@ std::string describe_grids(const std::vector<VdbGridInfo>& grids) {
   return s;
 }
 
-std::vector<VdbGridInfo> list_vdb_grids(const std::string& path) {
-  check_file(path);
-  check_vdb_file_structure(path);
+namespace {
+
+// The readers proper. They run only inside the child process of run_isolated (see
+// isolated_call.h for why); the public functions below fork it and decode what it returns.
+std::vector<VdbGridInfo> list_grids_in_this_process(const std::string& path) {
   initialize_openvdb();
   return guarded(path, "", [&] {
     openvdb::io::File file(path);
@@ -169,8 +180,11 @@ std::vector<VdbGridInfo> list_vdb_grids(const std::string& path) {
   });
 }
 
-DenseGrid read_vdb_grid(const std::string& path, const VdbGridChoice& choice, std::string* note) {
-  const std::vector<VdbGridInfo> grids = list_vdb_grids(path);
+void read_grid_in_this_process(const std::string& path, const VdbGridChoice& choice,
+                               ResultWriter& out) {
+  std::string note_text;
+  std::string* note = &note_text;
+  const std::vector<VdbGridInfo> grids = list_grids_in_this_process(path);
   const std::string holds = "the file holds " + describe_grids(grids);
   int pick = -1;
   if (choice.index >= 0) {
@@ -218,38 +232,37 @@ DenseGrid read_vdb_grid(const std::string& path, const VdbGridChoice& choice, st
   for (int i = 0; i < pick; ++i) repeat += grids[i].name == info.name;
   const std::string unique = repeat == 0 ? info.name : info.name + "[" + std::to_string(repeat) + "]";
 
-  DenseGrid dense = guarded(path, place, [&] {
+  DenseGrid head;
+  head.file = path;
+  head.name = info.name;
+  head.file_index = pick;
+  head.index_to_world = info.index_to_world;
+  head.voxel_size = info.voxel_size;
+  head.half_float = info.half_float;
+  guarded(path, place, [&] {
     openvdb::io::File file(path);
     file.open(false);
     openvdb::GridBase::Ptr base = file.readGrid(unique);
     file.close();
-    DenseGrid d;
-    bool level_set = base->getGridClass() == openvdb::GRID_LEVEL_SET;
+    head.converted_from_level_set = base->getGridClass() == openvdb::GRID_LEVEL_SET;
     if (auto fg = openvdb::GridBase::grid<openvdb::FloatGrid>(base)) {
-      if (level_set) openvdb::tools::sdfToFogVolume(*fg);
-      d = densify(*fg);
+      if (head.converted_from_level_set) openvdb::tools::sdfToFogVolume(*fg);
+      densify_into(*fg, head, note_text, out);
     } else if (auto dg = openvdb::GridBase::grid<openvdb::DoubleGrid>(base)) {
-      if (level_set) openvdb::tools::sdfToFogVolume(*dg);
-      d = densify(*dg);
+      if (head.converted_from_level_set) openvdb::tools::sdfToFogVolume(*dg);
+      densify_into(*dg, head, note_text, out);
     } else {
       throw UserError(path, place, "a float grid, found tree type " + base->type());
     }
-    d.converted_from_level_set = level_set;
-    return d;
+    return 0;
   });
-  dense.file = path;
-  dense.name = info.name;
-  dense.file_index = pick;
-  dense.index_to_world = info.index_to_world;
-  dense.voxel_size = info.voxel_size;
-  dense.half_float = info.half_float;
-  return dense;
 }
 
-void write_vdb_fog_volume(const std::string& path, const std::string& grid_name,
-                          const std::array<int, 3>& origin, const std::array<int, 3>& dims,
-                          const std::vector<float>& values, double voxel_size,
-                          const std::array<double, 3>& translation, bool half_float) {
+void write_fog_volume_in_this_process(const std::string& path, const std::string& grid_name,
+                                      const std::array<int, 3>& origin,
+                                      const std::array<int, 3>& dims,
+                                      const std::vector<float>& values, double voxel_size,
+                                      const std::array<double, 3>& translation, bool half_float) {
   initialize_openvdb();
   openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
   auto acc = grid->getAccessor();
@@ -274,6 +287,66 @@ void write_vdb_fog_volume(const std::string& path, const std::string& grid_name,
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
+}
+
+}  // namespace
+
+// The child's limits for this file: unless set, 2.5 GiB (the largest dense grid, 1 GiB, twice,
+// and room for OpenVDB) plus 64 bytes a byte of file (its trees decompressed), at most half the
+// machine's memory (run_isolated's default, applied when this is larger).
+static IsolationLimits limits_for(const std::string& path) {
+  IsolationLimits limits = vdb_isolation_limits();
+  if (limits.memory_bytes == 0) {
+    std::error_code ec;
+    const uint64_t bytes = std::filesystem::file_size(path, ec);
+    const uint64_t want = (uint64_t{5} << 29) + 64 * (ec ? 0 : bytes);
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+    const uint64_t half = pages > 0 && page > 0 ? uint64_t(pages) * uint64_t(page) / 2 : want;
+    limits.memory_bytes = std::min(want, half);
+  }
+  return limits;
+}
+
+std::vector<VdbGridInfo> list_vdb_grids(const std::string& path) {
+  check_file(path);
+  check_vdb_file_structure(path);
+  std::vector<VdbGridInfo> grids;
+  run_isolated(
+      path, "reading the OpenVDB file's grid list",
+      [&](ResultWriter& out) { write_grid_infos(out, list_grids_in_this_process(path)); },
+      [&](std::string_view bytes) { grids = decode_grid_infos(bytes); }, limits_for(path));
+  return grids;
+}
+
+DenseGrid read_vdb_grid(const std::string& path, const VdbGridChoice& choice, std::string* note) {
+  check_file(path);
+  check_vdb_file_structure(path);
+  // The child's result: the note's length and text, then the grid.
+  DenseGrid grid;
+  run_isolated(
+      path, "reading the OpenVDB file",
+      [&](ResultWriter& out) { read_grid_in_this_process(path, choice, out); },
+      [&](std::string_view bytes) {
+        std::string child_note;
+        grid = decode_dense_grid(bytes, &child_note);
+        if (note && !child_note.empty()) *note = child_note;
+      },
+      limits_for(path));
+  return grid;
+}
+
+void write_vdb_fog_volume(const std::string& path, const std::string& grid_name,
+                          const std::array<int, 3>& origin, const std::array<int, 3>& dims,
+                          const std::vector<float>& values, double voxel_size,
+                          const std::array<double, 3>& translation, bool half_float) {
+  // Also in a child: the parent process never starts OpenVDB or its TBB threads (isolated_call.h).
+  run_isolated(
+      path, "writing the OpenVDB file",
+      [&](ResultWriter&) {
+        write_fog_volume_in_this_process(path, grid_name, origin, dims, values, voxel_size,
+                                         translation, half_float);
+      },
+      [](std::string_view) {}, vdb_isolation_limits());
 }
 
 }  // namespace pyro

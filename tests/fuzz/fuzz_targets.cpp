@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "engine/core/user_error.h"
+#include "engine/io/isolated_call.h"
 #include "engine/io/png_file.h"
 #include "engine/io/scene_loader.h"
 #include "engine/io/vdb_file_check.h"
@@ -51,6 +52,9 @@ void scene(const uint8_t* data, std::size_t size) {
 }
 
 void vdb(const uint8_t* data, std::size_t size) {
+  // OpenVDB runs in a child process (engine/io/isolated_call.h); a damaged input that makes it
+  // loop is given up after 10 s, inside libFuzzer's 30 s timeout.
+  vdb_isolation_limits().timeout_seconds = 10.0;
   const TempFile file(data, size, ".vdb");
   try {
     check_vdb_file_structure(file.path());

@@ -1,0 +1,171 @@
+#include "engine/io/vdb_grid_transfer.h"
+
+#include <cstring>
+#include <stdexcept>
+#include <type_traits>
+
+namespace pyro {
+
+namespace {
+
+class Writer {
+ public:
+  explicit Writer(ResultWriter& out) : out_(out) {}
+  template <class T>
+  void put(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    out_.append(&v, sizeof v);
+  }
+  void put(const std::string& s) {
+    put<uint64_t>(s.size());
+    out_.append(s.data(), s.size());
+  }
+
+ private:
+  ResultWriter& out_;
+};
+
+class Reader {
+ public:
+  explicit Reader(std::string_view in) : in_(in) {}
+  template <class T>
+  T get() {
+    static_assert(std::is_trivially_copyable_v<T>);
+    need(sizeof(T));
+    T v;
+    std::memcpy(&v, in_.data() + pos_, sizeof v);
+    pos_ += sizeof v;
+    return v;
+  }
+  std::string get_string() {
+    const uint64_t n = get<uint64_t>();
+    need(n);
+    std::string s(in_.data() + pos_, n);
+    pos_ += n;
+    return s;
+  }
+  template <class T>
+  void get_array(std::vector<T>& v, uint64_t n) {
+    if (n > (in_.size() - pos_) / sizeof(T)) throw std::runtime_error("vdb transfer: short array");
+    v.resize(n);
+    std::memcpy(v.data(), in_.data() + pos_, n * sizeof(T));
+    pos_ += n * sizeof(T);
+  }
+  size_t pos() const { return pos_; }
+  void skip(size_t n) {
+    need(n);
+    pos_ += n;
+  }
+  void done() const {
+    if (pos_ != in_.size()) throw std::runtime_error("vdb transfer: trailing bytes");
+  }
+
+ private:
+  void need(uint64_t n) const {
+    if (n > in_.size() - pos_) throw std::runtime_error("vdb transfer: short message");
+  }
+  std::string_view in_;
+  size_t pos_ = 0;
+};
+
+uint64_t voxel_count(const std::array<int, 3>& dims) {
+  for (int d : dims)
+    if (d < 0) throw std::runtime_error("vdb transfer: negative dimension");
+  return uint64_t(dims[0]) * uint64_t(dims[1]) * uint64_t(dims[2]);
+}
+
+}  // namespace
+
+void write_grid_infos(ResultWriter& out, const std::vector<VdbGridInfo>& grids) {
+  Writer w(out);
+  w.put<uint64_t>(grids.size());
+  for (const VdbGridInfo& g : grids) {
+    w.put(g.index);
+    w.put(g.name);
+    w.put(g.type);
+    w.put(g.value_type);
+    w.put(g.grid_class);
+    w.put(g.half_float);
+    w.put(g.voxel_size);
+    w.put(g.affine);
+    w.put(g.index_to_world);
+    w.put(g.active_voxels);
+    w.put(g.bbox_min);
+    w.put(g.bbox_max);
+  }
+}
+
+std::vector<VdbGridInfo> decode_grid_infos(std::string_view bytes) {
+  Reader r(bytes);
+  const uint64_t n = r.get<uint64_t>();
+  std::vector<VdbGridInfo> grids;
+  for (uint64_t i = 0; i < n; ++i) {
+    VdbGridInfo g;
+    g.index = r.get<int>();
+    g.name = r.get_string();
+    g.type = r.get_string();
+    g.value_type = r.get_string();
+    g.grid_class = r.get_string();
+    g.half_float = r.get<bool>();
+    g.voxel_size = r.get<std::array<double, 3>>();
+    g.affine = r.get<bool>();
+    g.index_to_world = r.get<glm::dmat4>();
+    g.active_voxels = r.get<uint64_t>();
+    g.bbox_min = r.get<std::array<int, 3>>();
+    g.bbox_max = r.get<std::array<int, 3>>();
+    grids.push_back(std::move(g));
+  }
+  r.done();
+  return grids;
+}
+
+float* begin_dense_grid(ResultWriter& out, const std::string& note, const DenseGrid& d) {
+  Writer w(out);
+  w.put(note);
+  w.put(d.file);
+  w.put(d.name);
+  w.put(d.file_index);
+  w.put(d.index_to_world);
+  w.put(d.voxel_size);
+  w.put(d.converted_from_level_set);
+  w.put(d.half_float);
+  w.put(d.origin);
+  w.put(d.dims);
+  // Values start at a multiple of 4 bytes from the start of the result (the file is
+  // page-aligned), so they can be filled as floats in place.
+  const size_t pad = (4 - out.size() % 4) % 4;
+  out.extend(pad);
+  return reinterpret_cast<float*>(out.extend(voxel_count(d.dims) * sizeof(float)));
+}
+
+void end_dense_grid(ResultWriter& out, uint64_t active_voxels, float max_value) {
+  Writer w(out);
+  w.put(active_voxels);
+  w.put(max_value);
+}
+
+DenseGrid decode_dense_grid(std::string_view bytes, std::string* note) {
+  // `bytes` starts one byte into the result file (after the run_isolated tag), so the padding
+  // before the values is counted from there.
+  Reader r(bytes);
+  DenseGrid d;
+  const std::string n = r.get_string();
+  if (note) *note = n;
+  d.file = r.get_string();
+  d.name = r.get_string();
+  d.file_index = r.get<int>();
+  d.index_to_world = r.get<glm::dmat4>();
+  d.voxel_size = r.get<std::array<double, 3>>();
+  d.converted_from_level_set = r.get<bool>();
+  d.half_float = r.get<bool>();
+  d.origin = r.get<std::array<int, 3>>();
+  d.dims = r.get<std::array<int, 3>>();
+  r.skip((4 - (r.pos() + 1) % 4) % 4);
+  r.get_array(d.values, voxel_count(d.dims));
+  d.active_voxels = r.get<uint64_t>();
+  d.max_value = r.get<float>();
+  r.done();
+  return d;
+}
+
+}  // namespace pyro
