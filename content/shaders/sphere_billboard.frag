@@ -6,7 +6,17 @@
 // ds comes from the exact ray-sphere intersection of the perspective ray.
 // Output premultiplied; blending (ONE, ONE_MINUS_SRC_ALPHA), back to front.
 //
-// u_shading 1 and 2 shade explosion media (section 3) by eq. 1,
+// Variants (gpu::load_program's defines; on llvmpipe a uniform branch still runs both sides):
+// PLANAR 1 for the planar billboard (full chord, depth tested), 0 spherical; SHADING 0 the
+// particle's colour, 1 dust or smoke, 2 fire.
+#ifndef PLANAR
+#define PLANAR 0
+#endif
+#ifndef SHADING
+#define SHADING 0
+#endif
+//
+// SHADING 1 and 2 shade explosion media (section 3) by eq. 1,
 // L = I (1 - alpha) + alpha a C + alpha (1 - a) L_e, written premultiplied as
 // (alpha a C + alpha (1 - a) L_e, alpha):
 //   1, dust and smoke: L_e = 0; C = E P(mu) T_light + ambient, P the Cornette-Shanks phase
@@ -28,8 +38,6 @@ uniform vec2 u_viewport;        // target size in pixels
 uniform vec4 u_projection_terms;  // P[0][0], P[1][1], P[2][0], P[2][1] (off-axis terms)
 uniform float u_near;
 uniform float u_far;
-uniform int u_planar;
-uniform int u_shading;  // 0 the particle's colour; 1 dust or smoke; 2 fire
 
 layout(binding = 2) uniform sampler2D u_phase;      // p(mu, g): x over mu in [-1, 1], y over g
 layout(binding = 3) uniform sampler1D u_blackbody;  // emitted radiance over [T_min, T_max]
@@ -74,10 +82,11 @@ void main() {
   float d = sqrt(distance2);
   float ds;
   float enter_depth = 0.0, leave_depth = 0.0, scene_depth = 0.0;
-  if (u_planar != 0) {
-    // The planar billboard: the full chord, wherever the plane is.
-    ds = 2.0 * sqrt(r * r - distance2);
-  } else {
+#if PLANAR
+  // The planar billboard: the full chord, wherever the plane is.
+  ds = 2.0 * sqrt(r * r - distance2);
+#else
+  {
     float h = sqrt(max(b * b - a * c, 0.0));
     float enter = (b - h) / a, leave = (b + h) / a;  // view depths
     float scene = view_depth(texelFetch(u_scene_depth, ivec2(gl_FragCoord.xy * u_depth_scale), 0).r);
@@ -87,11 +96,11 @@ void main() {
     float from = max(enter, u_near), to = min(leave, scene);
     ds = max(to - from, 0.0) * sqrt(a);  // view depth to path length
   }
-  if (u_shading == 0) {
-    float alpha = 1.0 - exp(-v_color_tau.a * (1.0 - d / r) * ds);
-    o_color = vec4(v_color_tau.rgb * alpha, alpha);
-    return;
-  }
+#endif
+#if SHADING == 0
+  float alpha = 1.0 - exp(-v_color_tau.a * (1.0 - d / r) * ds);
+  o_color = vec4(v_color_tau.rgb * alpha, alpha);
+#else
   // The particle's detail window: the ray's closest point to the centre, in units of r,
   // scaled, offset by the particle's key, moving in time.
   float key = v_medium.w;
@@ -101,13 +110,12 @@ void main() {
   float n = texture(u_detail, window).r;
   float tau = v_color_tau.a * v_medium.y;  // density times the opacity curve
   float alpha = 1.0 - exp(-tau * (1.0 - d / r) * ds);
-  if (u_shading == 2) {
-    float T = u_fire.w + u_fire.z * (v_medium.x + u_fire_detail_range * (n - 0.5));
-    vec3 emitted = texture(u_blackbody, node_coord(T, u_fire.x, u_fire.y,
-                                                   float(textureSize(u_blackbody, 0)))).rgb;
-    o_color = vec4(emitted * alpha, alpha);  // a = 0: alpha L_e
-    return;
-  }
+#if SHADING == 2
+  float T = u_fire.w + u_fire.z * (v_medium.x + u_fire_detail_range * (n - 0.5));
+  vec3 emitted = texture(u_blackbody, node_coord(T, u_fire.x, u_fire.y,
+                                                 float(textureSize(u_blackbody, 0)))).rgb;
+  o_color = vec4(emitted * alpha, alpha);  // a = 0: alpha L_e
+#else
   alpha = clamp(alpha * (1.0 + u_detail_amplitude * (2.0 * n - 1.0)), 0.0, 1.0);
   vec3 to_eye = -normalize(dir);
   float mu = dot(u_light_view, to_eye);  // photon's direction before and after scattering
@@ -115,10 +123,16 @@ void main() {
                                       node_coord(u_g, u_phase_range.x, u_phase_range.y,
                                                  u_phase_range.w))).r;
   // Light's path inside the sphere, from the middle of the visible segment towards the light.
-  float middle = u_planar != 0 ? b / a : 0.5 * (max(enter_depth, u_near) + min(leave_depth, scene_depth));
+#if PLANAR
+  float middle = b / a;
+#else
+  float middle = 0.5 * (max(enter_depth, u_near) + min(leave_depth, scene_depth));
+#endif
   vec3 m = dir * middle - p;
   float mb = dot(m, -u_light_view);
   float chord = max(-mb + sqrt(max(mb * mb - dot(m, m) + r * r, 0.0)), 0.0);
   vec3 C = u_light_irradiance * phase * exp(-tau * chord) + u_ambient;
   o_color = vec4(alpha * u_albedo * C, alpha);  // L_e = 0
+#endif  // SHADING == 2
+#endif  // SHADING == 0
 }

@@ -7,15 +7,17 @@
 // r^2): it contains the tangent cone, so the whole silhouette is covered under perspective, and
 // it lies behind every point of the sphere, so the near plane never cuts it before the sphere.
 // An eye inside (or very near) the sphere gets a full-viewport quad.
-// u_planar = 1 draws the classic planar billboard instead (through the centre, facing the
-// viewplane, depth tested) for comparison.
+// PLANAR 1 (a define: see sphere_billboard.frag) draws the classic planar billboard instead
+// (through the centre, facing the viewplane, depth tested) for comparison.
+#ifndef PLANAR
+#define PLANAR 0
+#endif
 layout(location = 0) in vec4 a_center_radius;  // world xyz, radius
 layout(location = 1) in vec4 a_color_tau;      // linear rgb, extinction tau (1 / length)
 layout(location = 2) in vec4 a_medium;  // temperature K, opacity, medium, detail key (explosions)
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
-uniform int u_planar;
 
 flat out vec3 v_center;  // view space
 flat out float v_radius;
@@ -30,10 +32,9 @@ void main() {
   v_radius = r;
   v_color_tau = a_color_tau;
   v_medium = a_medium;
-  if (u_planar != 0) {
-    gl_Position = u_projection * vec4(p + vec3(corner * r, 0.0), 1.0);
-    return;
-  }
+#if PLANAR
+  gl_Position = u_projection * vec4(p + vec3(corner * r, 0.0), 1.0);
+#else
   float d = length(p);
   if (d < 2.0 * r) {
     gl_Position = vec4(corner, 0.0, 1.0);
@@ -46,4 +47,5 @@ void main() {
   float distance = d + r;
   float half_size = r * distance / sqrt(d * d - r * r);
   gl_Position = u_projection * vec4(axis * distance + (right * corner.x + up * corner.y) * half_size, 1.0);
+#endif
 }

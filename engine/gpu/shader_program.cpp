@@ -1,5 +1,7 @@
 #include "engine/gpu/shader_program.h"
 
+#include <algorithm>
+
 #include "engine/core/content_path.h"
 #include "engine/gpu/gpu_error.h"
 
@@ -60,9 +62,27 @@ Program link_program(const std::vector<ShaderStageSource>& stages) {
   return program;
 }
 
-Program load_program(const std::string& vertex_file, const std::string& fragment_file) {
-  return link_program({load_shader_stage(GL_VERTEX_SHADER, "shaders/" + vertex_file),
-                       load_shader_stage(GL_FRAGMENT_SHADER, "shaders/" + fragment_file)});
+std::string with_defines(const std::string& source, const std::vector<std::string>& defines) {
+  if (defines.empty()) return source;
+  const size_t version = source.find("#version");
+  if (version == std::string::npos) throw GpuError("shader source has no #version line");
+  size_t end = source.find('\n', version);
+  if (end == std::string::npos) end = source.size();
+  std::string lines;
+  for (const std::string& d : defines) lines += "#define " + d + "\n";
+  // The line after #version is line (number of lines up to it) + 1.
+  const size_t version_line = static_cast<size_t>(std::count(source.begin(), source.begin() + end, '\n')) + 1;
+  lines += "#line " + std::to_string(version_line + 1) + "\n";
+  return source.substr(0, end + 1) + lines + source.substr(std::min(end + 1, source.size()));
+}
+
+Program load_program(const std::string& vertex_file, const std::string& fragment_file,
+                     const std::vector<std::string>& defines) {
+  ShaderStageSource vs = load_shader_stage(GL_VERTEX_SHADER, "shaders/" + vertex_file);
+  ShaderStageSource fs = load_shader_stage(GL_FRAGMENT_SHADER, "shaders/" + fragment_file);
+  vs.source = with_defines(vs.source, defines);
+  fs.source = with_defines(fs.source, defines);
+  return link_program({vs, fs});
 }
 
 GLint uniform_location(const Program& program, const char* name) {

@@ -19,8 +19,16 @@ ShaderStageSource load_shader_stage(GLenum stage, const std::string& relative);
 
 Program link_program(const std::vector<ShaderStageSource>& stages);
 
-// Convenience: vertex + fragment shader files under content/shaders.
-Program load_program(const std::string& vertex_file, const std::string& fragment_file);
+// Convenience: vertex + fragment shader files under content/shaders. `defines` ("NAME VALUE" or
+// "NAME") become #define lines after each stage's #version line: shader variants. On llvmpipe a
+// branch on a uniform still runs both sides (texture fetches included) under an execution mask,
+// so a feature that is off must be compiled out, not skipped, to cost nothing.
+Program load_program(const std::string& vertex_file, const std::string& fragment_file,
+                     const std::vector<std::string>& defines = {});
+
+// The source with #define lines inserted after its #version line (and a #line directive, so
+// that compile errors keep the file's own line numbers).
+std::string with_defines(const std::string& source, const std::vector<std::string>& defines);
 
 GLint uniform_location(const Program& program, const char* name);
 

@@ -4,7 +4,7 @@
 // the display primaries seen through the filters' transmission spectra), so they are only
 // meaningful on linear values: the output is encoded to sRGB afterwards, like any frame.
 // The colour and half-colour anaglyphs are written as matrices too, so one composition pass
-// (content/shaders/stereo_compose.frag) serves every mode; the shader receives these matrices
+// (content/shaders/compose.frag) serves every mode; the shader receives these matrices
 // as uniforms.
 #include <array>
 #include <string>

@@ -69,3 +69,26 @@ float detail_noise_at(const DetailNoise& n, int x, int y, int z) {
 }
 
 }  // namespace pyro
+
+namespace pyro {
+
+std::vector<float> detail_noise_slice_rg(const DetailNoise& noise, double t) {
+  const int n = noise.size;
+  std::vector<float> out(static_cast<size_t>(n) * n * 2);
+  for (int channel = 0; channel < 2; ++channel) {
+    const double tc = t + 0.5 * channel;
+    const double z = (tc - std::floor(tc)) * n - 0.5;  // texel-centre coordinate
+    const int z0 = static_cast<int>(std::floor(z));
+    const float w = static_cast<float>(z - z0);
+    const int dx = channel * n / 2, dy = channel * n / 4;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        const float a = detail_noise_at(noise, x + dx, y + dy, z0);
+        const float b = detail_noise_at(noise, x + dx, y + dy, z0 + 1);
+        out[(static_cast<size_t>(y) * n + x) * 2 + channel] = a + (b - a) * w;
+      }
+  }
+  return out;
+}
+
+}  // namespace pyro

@@ -23,3 +23,15 @@ DetailNoise make_detail_noise(int size = 64, int base_cells = 4, int octaves = 3
 float detail_noise_at(const DetailNoise& noise, int x, int y, int z);
 
 }  // namespace pyro
+
+namespace pyro {
+
+// The volume's slice at time t (in periods: z = t * size texel units, texel centres at
+// z + 1/2), linearly interpolated between the two nearest z layers, as two interleaved channels
+// (x fastest, size^2 texels): r is the slice at t, g the slice at t + 1/2 shifted by half a
+// period in x and a quarter in y — two independent-looking fields. Sampled bilinearly with
+// repeat, it equals trilinear sampling of the volume at (u, v, t) and at (u + 1/2, v + 1/4,
+// t + 1/2): the heat shimmer's two offsets (systems/composite) at one fetch a pixel.
+std::vector<float> detail_noise_slice_rg(const DetailNoise& noise, double t);
+
+}  // namespace pyro

@@ -30,8 +30,7 @@ void split_by_medium(const DrawList& list, std::array<DrawList, 3>& out) {
 }
 
 ExplosionRenderer::ExplosionRenderer(const ExplosionShading& shading)
-    : shading_(shading),
-      program_(gpu::load_program("sphere_billboard.vert", "sphere_billboard.frag")) {
+    : shading_(shading) {
   // The paper's 2D phase texture over (cos theta, g), Cornette-Shanks (section 3.1's formula).
   const PhaseTable phase = make_phase_table(PhaseFunction::cornette_shanks, 128, 64);
   phase_g_min_ = static_cast<float>(phase.g_min);
@@ -79,35 +78,8 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
   for (const auto& l : layers) glClearNamedFramebufferfv(l->framebuffer(), GL_COLOR, 0, clear);
   split_by_medium(list, split_);
   const bool planar = settings.particles == ParticleShape::planar;
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_FALSE);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  glDisable(GL_CULL_FACE);
-  glUseProgram(program_.get());
-  auto loc = [&](const char* name) { return gpu::uniform_location(program_, name); };
-  glUniformMatrix4fv(loc("u_view"), 1, GL_FALSE, glm::value_ptr(frame.view));
-  glUniformMatrix4fv(loc("u_projection"), 1, GL_FALSE, glm::value_ptr(frame.projection));
-  glUniform1i(loc("u_planar"), planar ? 1 : 0);
-  glUniform4f(loc("u_projection_terms"), frame.projection[0][0], frame.projection[1][1],
-              frame.projection[2][0], frame.projection[2][1]);
-  glUniform1f(loc("u_near"), frame.near);
-  glUniform1f(loc("u_far"), frame.far);
   const glm::vec3 light = glm::normalize(glm::vec3(frame.view * glm::vec4(settings.light_direction, 0.0f)));
-  glUniform3fv(loc("u_light_view"), 1, glm::value_ptr(light));
   const glm::vec3 irradiance = settings.light_color * shading_.light_irradiance;
-  glUniform3fv(loc("u_light_irradiance"), 1, glm::value_ptr(irradiance));
-  glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(settings.ambient));
-  glUniform4f(loc("u_phase_range"), phase_g_min_, phase_g_max_, static_cast<float>(phase_cos_size_),
-              static_cast<float>(phase_g_size_));
-  glUniform1f(loc("u_detail_frequency"), shading_.detail_frequency);
-  glUniform1f(loc("u_detail_time"), static_cast<float>(std::fmod(time * shading_.detail_speed, 1.0)));
-  glUniform4f(loc("u_fire"), shading_.fire_t_min, shading_.fire_t_max, shading_.fire_scale, shading_.fire_bias);
-  glUniform1f(loc("u_fire_detail_range"), shading_.fire_detail_range);
-  glBindTextureUnit(1, scene.depth_texture());
-  glBindTextureUnit(2, phase_.get());
-  glBindTextureUnit(3, blackbody_.get());
-  glBindTextureUnit(4, detail_.get());
   for (int m = 0; m < 3; ++m) {
     const DrawList& l = split_[m];
     if (l.size() == 0) continue;
@@ -118,23 +90,33 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
                              0, 0, target.width(), target.height(), GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
     target.bind();
-    if (planar) glEnable(GL_DEPTH_TEST); else glDisable(GL_DEPTH_TEST);
+    // One program per medium kind: fire (shading 2) or dust and smoke (1).
+    const gpu::Program& program =
+        programs_.get(planar, m == static_cast<int>(ParticleMedium::fire) ? 2 : 1);
+    begin_sphere_billboards(program, frame, planar, scene.depth_texture());
+    set_sphere_billboard_target(program, target, scene_width, scene_height);
+    auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
+    glUniform3fv(loc("u_light_view"), 1, glm::value_ptr(light));
+    glUniform3fv(loc("u_light_irradiance"), 1, glm::value_ptr(irradiance));
+    glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(settings.ambient));
+    glUniform4f(loc("u_phase_range"), phase_g_min_, phase_g_max_, static_cast<float>(phase_cos_size_),
+                static_cast<float>(phase_g_size_));
+    glUniform1f(loc("u_detail_frequency"), shading_.detail_frequency);
+    glUniform1f(loc("u_detail_time"), static_cast<float>(std::fmod(time * shading_.detail_speed, 1.0)));
+    glUniform4f(loc("u_fire"), shading_.fire_t_min, shading_.fire_t_max, shading_.fire_scale, shading_.fire_bias);
+    glUniform1f(loc("u_fire_detail_range"), shading_.fire_detail_range);
+    glBindTextureUnit(2, phase_.get());
+    glBindTextureUnit(3, blackbody_.get());
+    glBindTextureUnit(4, detail_.get());
     const MediumShading& s = shading_.media[m];
-    glUniform1i(loc("u_shading"), m == static_cast<int>(ParticleMedium::fire) ? 2 : 1);
     glUniform1f(loc("u_albedo"), s.albedo);
     glUniform1f(loc("u_g"), s.g);
     glUniform1f(loc("u_detail_amplitude"), s.detail_amplitude);
-    glUniform2f(loc("u_depth_scale"), static_cast<float>(scene_width) / target.width(),
-                static_cast<float>(scene_height) / target.height());
-    glUniform2f(loc("u_viewport"), static_cast<float>(target.width()), static_cast<float>(target.height()));
     const GLuint vao = instances_[m].upload(l, true);
     glBindVertexArray(vao);
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(l.size()));
   }
-  glBindVertexArray(0);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_BLEND);
-  glEnable(GL_DEPTH_TEST);
+  end_sphere_billboards();
 }
 
 }  // namespace pyro

@@ -13,6 +13,7 @@
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
 #include "systems/billboard_render/instance_buffer.h"
+#include "systems/billboard_render/sphere_billboard_programs.h"
 
 namespace pyro {
 
@@ -33,7 +34,7 @@ class ExplosionRenderer {
 
  private:
   ExplosionShading shading_;
-  gpu::Program program_;
+  SphereBillboardPrograms programs_;
   std::array<InstanceBuffer, 3> instances_;
   std::array<DrawList, 3> split_;
   gpu::Texture phase_, blackbody_, detail_;

@@ -8,12 +8,12 @@
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
 #include "systems/billboard_render/instance_buffer.h"
+#include "systems/billboard_render/sphere_billboard_programs.h"
 
 namespace pyro {
 
 class SphereBillboardRenderer {
  public:
-  SphereBillboardRenderer();
   // Blends the (back-to-front) particles into `target`; `scene_depth` is the opaque scene's
   // depth texture (window depth) of size scene_width x scene_height, which may be larger than
   // the target (a reduced-resolution layer). `planar`: classic billboards through the centres.
@@ -21,7 +21,7 @@ class SphereBillboardRenderer {
             GLuint scene_depth, int scene_width, int scene_height, bool planar);
 
  private:
-  gpu::Program program_;
+  SphereBillboardPrograms programs_;
   InstanceBuffer instances_;
 };
 

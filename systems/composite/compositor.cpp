@@ -10,54 +10,69 @@
 namespace pyro {
 
 Compositor::Compositor()
-    : compose_(gpu::load_program("fullscreen.vert", "stereo_compose.frag")),
-      media_compose_(gpu::load_program("fullscreen.vert", "media_compose.frag")),
-      media_prepare_(gpu::load_program("fullscreen.vert", "media_prepare.frag")),
+    : media_prepare_(gpu::load_program("fullscreen.vert", "media_prepare.frag")),
       prepare_fbo_(gpu::make_framebuffer()),
       empty_(gpu::make_vertex_array()) {}
+
+const gpu::Program& Compositor::variant(bool use_left, bool use_right) {
+  const bool media = media_bound_;
+  const bool depth_aware = media && media_.depth_aware;
+  const bool shimmer = media && media_.shimmer > 0.0f;
+  const size_t key = size_t(use_left) | size_t(use_right) << 1 | size_t(layers_ && !media) << 2 |
+                     size_t(media) << 3 | size_t(depth_aware) << 4 | size_t(shimmer) << 5;
+  gpu::Program& p = compose_[key];
+  if (p.get() == 0) {
+    auto flag = [](const char* name, bool on) { return std::string(name) + (on ? " 1" : " 0"); };
+    p = gpu::load_program("fullscreen.vert", "compose.frag",
+                          {flag("USE_LEFT", use_left), flag("USE_RIGHT", use_right),
+                           flag("LAYERS", layers_ && !media), flag("MEDIA", media),
+                           flag("DEPTH_AWARE", depth_aware), flag("SHIMMER", shimmer)});
+  }
+  return p;
+}
+
+void Compositor::upload_shimmer_noise(float time) {
+  if (shimmer_volume_.size == 0) {
+    // The shimmer's noise field: the engine's periodic detail noise (its own seed).
+    shimmer_volume_ = make_detail_noise(32, 4, 2, 0x5111eull);
+    const int n = shimmer_volume_.size;
+    shimmer_noise_ = gpu::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(shimmer_noise_.get(), 1, GL_RG16F, n, n);
+    glTextureParameteri(shimmer_noise_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(shimmer_noise_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(shimmer_noise_.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(shimmer_noise_.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  }
+  if (time == shimmer_noise_time_) return;
+  shimmer_noise_time_ = time;
+  const int n = shimmer_volume_.size;
+  const std::vector<float> slice = detail_noise_slice_rg(shimmer_volume_, time);
+  glTextureSubImage2D(shimmer_noise_.get(), 0, 0, 0, n, n, GL_RG, GL_FLOAT, slice.data());
+}
 
 void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  const bool media = l.media[0] != nullptr;
-  current_ = media ? &media_compose_ : &compose_;
-  glUseProgram(current_->get());
   glBindVertexArray(empty_.get());
   glBindTextureUnit(0, l.scene->color_texture());
   glBindTextureUnit(1, r.scene->color_texture());
-  const bool layers = l.layer != nullptr;
-  glUniform1i(gpu::uniform_location(*current_, "u_has_layers"), layers ? 1 : 0);
-  if (layers) {
+  layers_ = l.layer != nullptr;
+  media_bound_ = l.media[0] != nullptr;
+  if (layers_) {
     glBindTextureUnit(2, l.layer->color_texture());
     glBindTextureUnit(3, r.layer->color_texture());
   }
-  if (!media) return;
-  glUniform1i(gpu::uniform_location(*current_, "u_has_media"), 1);
-  if (noise_.get() == 0) {
-    // The shimmer's noise field: the engine's periodic detail noise (its own seed).
-    const DetailNoise n = make_detail_noise(32, 4, 2, 0x5111eull);
-    noise_ = gpu::make_texture(GL_TEXTURE_3D);
-    glTextureStorage3D(noise_.get(), 1, GL_R16F, n.size, n.size, n.size);
-    glTextureSubImage3D(noise_.get(), 0, 0, 0, 0, n.size, n.size, n.size, GL_RED, GL_FLOAT, n.values.data());
-    glTextureParameteri(noise_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(noise_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-      glTextureParameteri(noise_.get(), w, GL_REPEAT);
-  }
+  if (!media_bound_) return;
   glBindTextureUnit(4, l.scene->depth_texture());
   glBindTextureUnit(5, r.scene->depth_texture());
   glBindTextureUnit(6, l.media_combined->color_texture());
   glBindTextureUnit(7, l.media_depth->color_texture());
   glBindTextureUnit(9, r.media_combined->color_texture());
   glBindTextureUnit(10, r.media_depth->color_texture());
-  glBindTextureUnit(12, noise_.get());
-  auto loc = [&](const char* name) { return gpu::uniform_location(*current_, name); };
-  glUniform1i(loc("u_upsample"), media_.depth_aware ? 1 : 0);
-  glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
-  glUniform1f(loc("u_near"), media_.near);
-  glUniform1f(loc("u_far"), media_.far);
-  glUniform1f(loc("u_shimmer"), media_.shimmer);
-  glUniform1f(loc("u_time"), media_.time);
+  if (media_.shimmer > 0.0f) {
+    upload_shimmer_noise(media_.time);
+    glBindTextureUnit(12, shimmer_noise_.get());
+  }
 }
 
 void Compositor::prepare_media(const EyeTargets& eye) {
@@ -92,14 +107,21 @@ void Compositor::resolve_linear(const EyeTargets& view, const gpu::RenderTarget&
 void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_matrix, int x,
                            int y, int width, int height) {
   const glm::mat3 zero(0.0f);
+  const gpu::Program& program = variant(left_matrix != zero, right_matrix != zero);
+  glUseProgram(program.get());
+  auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
   glViewport(x, y, width, height);
-  glUniformMatrix3fv(gpu::uniform_location(*current_, "u_left_matrix"), 1, GL_FALSE, glm::value_ptr(left_matrix));
-  glUniformMatrix3fv(gpu::uniform_location(*current_, "u_right_matrix"), 1, GL_FALSE, glm::value_ptr(right_matrix));
-  glUniform1i(gpu::uniform_location(*current_, "u_use_left"), left_matrix != zero ? 1 : 0);
-  glUniform1i(gpu::uniform_location(*current_, "u_use_right"), right_matrix != zero ? 1 : 0);
-  glUniform2i(gpu::uniform_location(*current_, "u_origin"), x, y);
-  glUniform2f(gpu::uniform_location(*current_, "u_view_size"), static_cast<float>(width),
-              static_cast<float>(height));
+  glUniformMatrix3fv(loc("u_left_matrix"), 1, GL_FALSE, glm::value_ptr(left_matrix));
+  glUniformMatrix3fv(loc("u_right_matrix"), 1, GL_FALSE, glm::value_ptr(right_matrix));
+  glUniform2i(loc("u_origin"), x, y);
+  glUniform2f(loc("u_view_size"), static_cast<float>(width), static_cast<float>(height));
+  if (media_bound_) {
+    glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
+    glUniform1f(loc("u_near"), media_.near);
+    glUniform1f(loc("u_far"), media_.far);
+    glUniform1f(loc("u_shimmer"), media_.shimmer);
+    glUniform1f(loc("u_shimmer_tiling"), 3.0f);  // noise periods across the view
+  }
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 

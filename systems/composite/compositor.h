@@ -4,6 +4,9 @@
 #include "components/gpu_frame.h"
 #include "components/render_settings.h"
 #include "engine/gpu/gl_objects.h"
+#include "engine/math/detail_noise.h"
+
+#include <array>
 
 #include <glm/mat3x3.hpp>
 
@@ -12,7 +15,7 @@ namespace pyro {
 // How explosion media layers are composed (Umenhoffer et al. 2006, section 4).
 struct MediaComposition {
   float near = 0.1f, far = 100.0f;  // the views' clip distances, for view depth
-  float time = 0.0f;                // seconds, animates the shimmer's noise
+  float time = 0.0f;                // seconds, animates the shimmer's noise (one period a second)
   float shimmer = 0.0f;             // scene offset per unit fire opacity (fraction of the view)
   bool depth_aware = true;          // nearest-depth upsampling at depth edges; false: bilinear
   float depth_tolerance = 0.05f;    // relative view-depth spread still upsampled bilinearly
@@ -31,17 +34,26 @@ class Compositor {
   void compose(StereoMode mode, const GpuFrame& frame, bool swap_eyes = false);
 
  private:
+  // Binds the views' textures (the same units for every variant of compose.frag).
   void bind_views(const EyeTargets& left, const EyeTargets& right);
   // Explosion media: the three layers composited, and their depths, at layer size.
   void prepare_media(const EyeTargets& eye);
+  // One full-screen draw with the compose.frag variant for these matrices (a zero matrix
+  // compiles that view out) and the bound views' kind (plain, layers, media).
   void draw_view(const glm::mat3& left_matrix, const glm::mat3& right_matrix, int x, int y,
                  int width, int height);
-  gpu::Program compose_, media_compose_, media_prepare_;
+  const gpu::Program& variant(bool use_left, bool use_right);
+  void upload_shimmer_noise(float time);
+
+  std::array<gpu::Program, 64> compose_;  // compose.frag variants, compiled on first use
+  gpu::Program media_prepare_;
   gpu::Framebuffer prepare_fbo_;  // two outputs: media_combined and media_depth
-  const gpu::Program* current_ = nullptr;  // the program bind_views chose
   gpu::VertexArray empty_;
   MediaComposition media_;
-  gpu::Texture noise_;  // made on first use
+  bool layers_ = false, media_bound_ = false;  // what bind_views bound
+  DetailNoise shimmer_volume_;    // made on first use
+  gpu::Texture shimmer_noise_;    // its slice at the frame's time (two channels)
+  float shimmer_noise_time_ = -1.0f;
 };
 
 }  // namespace pyro
