@@ -49,5 +49,25 @@ TEST(DetailNoise, TilesWithoutASeamOnEveryAxis) {
   EXPECT_EQ(detail_noise_at(n, -1, 0, 0), detail_noise_at(n, n.size - 1, 0, 0));
 }
 
+// The shimmer's 2D slice (one fetch a pixel) must be the volume's trilinear sample: at a time on
+// a layer's texel centre it is that layer; halfway between two layers, their mean; the second
+// channel is the first's field half a period later, shifted by (size/2, size/4) texels.
+TEST(DetailNoise, SliceIsTheVolumeInterpolatedInTime) {
+  const DetailNoise n = make_detail_noise(16, 2, 2, 7);
+  const int s = n.size;
+  const double on_layer = (5 + 0.5) / s;  // texel centre of layer 5
+  const std::vector<float> a = detail_noise_slice_rg(n, on_layer);
+  const std::vector<float> b = detail_noise_slice_rg(n, on_layer + 0.5 / s);  // between 5 and 6
+  for (int y = 0; y < s; ++y)
+    for (int x = 0; x < s; ++x) {
+      const size_t i = (static_cast<size_t>(y) * s + x) * 2;
+      EXPECT_FLOAT_EQ(a[i], detail_noise_at(n, x, y, 5));
+      EXPECT_NEAR(b[i], 0.5f * (detail_noise_at(n, x, y, 5) + detail_noise_at(n, x, y, 6)), 1e-6f);
+      EXPECT_NEAR(a[i + 1], detail_noise_at(n, x + s / 2, y + s / 4, 5 + s / 2), 1e-6f);
+    }
+  // Periodic in time: one period later is the same slice.
+  EXPECT_EQ(detail_noise_slice_rg(n, on_layer + 1.0), a);
+}
+
 }  // namespace
 }  // namespace pyro
