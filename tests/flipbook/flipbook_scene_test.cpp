@@ -9,6 +9,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/flipbook_folder.h"
 #include "engine/io/scene_loader.h"
+#include "engine/math/color.h"
 #include "tests/support/json_output.h"
 #include "tests/support/test_paths.h"
 
@@ -105,7 +106,7 @@ TEST(FlipbookScene, BakeWritesFramesThatReadBackAsAFlipbook) {
   const fs::path out = dir / "flames";
   const test::CommandResult r = test::run_pyro({"bake-flipbook", test::scene_path("flipbook_fire.json"), "--out",
                                                 out.string(), "--frames", "3", "--width", "16",
-                                                "--height", "24", "--json"});
+                                                "--height", "24", "--loop-blend", "1", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = test::last_json_line(r.out);
   EXPECT_EQ(j["frames"], 3);
@@ -127,6 +128,46 @@ TEST(FlipbookScene, BakeWritesFramesThatReadBackAsAFlipbook) {
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("/fires"), std::string::npos) << refused.err;
   EXPECT_FALSE(fs::exists(out2));
+}
+
+TEST(FlipbookScene, BakeCrossFadesTheLoopsWrap) {
+  // Raw: 6 simulated frames, no blending. Looped: 4 frames with a 2-frame cross-fade, which
+  // simulates the same 6 steps: frame j < 2 = mix(raw[4 + j], raw[j]) in linear light with
+  // weight (j + 1) / 3 on raw[j]; frames 2 and 3 are raw.
+  const fs::path dir = test::scratch_dir("loop");
+  const auto bake = [&](const std::string& name, const std::string& frames, const std::string& blend) {
+    const test::CommandResult r =
+        test::run_pyro({"bake-flipbook", test::scene_path("flipbook_fire.json"), "--out", (dir / name).string(),
+                        "--frames", frames, "--width", "16", "--height", "24", "--loop-blend", blend});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return read_flipbook_folder((dir / name).string());
+  };
+  const FlipbookFrames raw = bake("raw", "6", "0");
+  const FlipbookFrames looped = bake("looped", "4", "2");
+  ASSERT_EQ(raw.rgba.size(), 6u);
+  ASSERT_EQ(looped.rgba.size(), 4u);
+  int differing = 0;
+  for (int j = 0; j < 4; ++j)
+    for (size_t i = 0; i < raw.rgba[0].size(); ++i) {
+      if (i % 4 == 3) continue;  // alpha is derived from the colour
+      const int got = looped.rgba[static_cast<size_t>(j)][i];
+      int expected = raw.rgba[static_cast<size_t>(j)][i];
+      if (j < 2) {
+        const float w = (j + 1) / 3.0f;
+        const float a = srgb_to_linear(raw.rgba[static_cast<size_t>(j)][i] / 255.0f);
+        const float b = srgb_to_linear(raw.rgba[static_cast<size_t>(4 + j)][i] / 255.0f);
+        expected = to_byte(linear_to_srgb(w * a + (1 - w) * b));
+        differing += expected != raw.rgba[static_cast<size_t>(j)][i];
+      }
+      ASSERT_NEAR(got, expected, 1) << "frame " << j << " byte " << i;
+    }
+  EXPECT_GT(differing, 10) << "the cross-fade changes the first frames";
+  const test::CommandResult refused = test::run_pyro({"bake-flipbook", test::scene_path("flipbook_fire.json"),
+                                                      "--out", (dir / "x").string(), "--frames", "4",
+                                                      "--loop-blend", "4"});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--loop-blend"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir / "x"));
 }
 
 TEST(FlipbookScene, PatternAnalysisReportsTheThesisPatterns) {

@@ -1,4 +1,4 @@
-// pyro bake-flipbook SCENE --out DIR [--frames N] [--width W] [--height H] [--json]
+// pyro bake-flipbook SCENE --out DIR [--frames N] [--width W] [--height H] [--loop-blend K] [--json]
 // pyro analyze flipbook-pattern [--scene SCENE] [--frames N] [--json]
 // Flipbook fire (Rose 2007, chapter 4; issue 7): baking a flame flipbook from the engine's own
 // fire simulation, and measuring how much a frame pattern marches or circles
@@ -32,7 +32,8 @@ void run_bake(const BakeArgs& a) {
   const FlipbookBakeResult r = bake_flipbook(scene, a.options, a.out);
   const nlohmann::json summary = {{"scene", scene.file}, {"out", a.out},
                                   {"frames", a.options.frames}, {"width", a.options.width},
-                                  {"height", a.options.height}, {"files", r.files},
+                                  {"height", a.options.height}, {"loop_blend", a.options.loop_blend},
+                                  {"files", r.files},
                                   {"seconds", r.seconds}};
   if (a.json)
     std::printf("%s\n", summary.dump().c_str());
@@ -116,6 +117,9 @@ void add_flipbook_commands(CLI::App& app, CLI::App& analyze) {
   b->add_option("--frames", bake->options.frames, "Number of frames")->check(CLI::Range(1, 10000));
   b->add_option("--width", bake->options.width, "Frame width in pixels")->check(CLI::Range(1, 4096));
   b->add_option("--height", bake->options.height, "Frame height in pixels")->check(CLI::Range(1, 4096));
+  b->add_option("--loop-blend", bake->options.loop_blend,
+                 "Frames cross-faded over the loop's wrap (0: none; below --frames)")
+      ->check(CLI::Range(0, 10000));
   b->add_flag("--json", bake->json, "Print a JSON summary as the last line");
   b->callback([bake] { run_bake(*bake); });
 
