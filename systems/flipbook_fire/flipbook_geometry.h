@@ -4,37 +4,20 @@
 // depth axis points at the viewer, and every billboard stays perpendicular to the base (it
 // contains the up axis). In stereo the viewer is the mid-eye point (the mono camera), so both
 // eyes see one and the same group, and the parallax between the eyes is that of real geometry.
-#include <array>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "components/flipbook_draw_list.h"
 #include "components/flipbook_fire.h"
 
 namespace pyro {
-
-// The fire's frame: origin at the base centre; `up` the base normal; `toward` the horizontal
-// (in the base plane) direction to the viewer; right = up x toward. All unit and orthogonal.
-struct FireFrame {
-  glm::vec3 origin{0.0f};
-  glm::vec3 up{0.0f, 1.0f, 0.0f};
-  glm::vec3 toward{0.0f, 0.0f, 1.0f};
-  glm::vec3 right{1.0f, 0.0f, 0.0f};
-};
 
 // Faces `viewer`. When the viewer stands on the axis (straight above or below the base, where
 // the thesis says the billboards become evident), `fallback_toward` projected into the base
 // plane is used, and failing that any direction perpendicular to up.
 FireFrame face_viewer(const glm::vec3& base, const glm::vec3& up, const glm::vec3& viewer,
                       const glm::vec3& fallback_toward);
-
-struct FlipbookQuad {
-  // bottom-left, bottom-right, top-left, top-right (as seen from the viewer)
-  std::array<glm::vec3, 4> corners{};
-  int frame = 0;            // texture layer
-  float intensity = 1.0f;   // colour scale
-  float depth = 0.0f;       // along `toward` in the fire's frame: larger is nearer the viewer
-};
 
 // The quads of one fire at flipbook time step `step`, sorted back to front (by depth; ties by
 // billboard order), for a flipbook of `frame_count` frames.

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "components/flipbook_draw_list.h"
 #include "components/flipbook_fire.h"
 #include "components/frame_clock.h"
 #include "components/gpu_frame.h"
@@ -15,39 +16,49 @@
 
 namespace pyro {
 
-ecs::SystemDesc flipbook_render_system() {
-  return {"flipbook_render", ecs::Phase::render,
-          ecs::access<FlipbookFire, View, FrameClock, FlipbookRenderer>(), ecs::access<GpuFrame>(),
-          [](ecs::World& world) {
-            FlipbookRenderer* renderer = world.try_resource<FlipbookRenderer>();
+ecs::SystemDesc flipbook_orient_system() {
+  return {"flipbook_orient", ecs::Phase::camera, ecs::access<FlipbookFire, View, FrameClock>(),
+          ecs::access<FlipbookDrawList>(), [](ecs::World& world) {
             const View* view = world.try_resource<View>();
-            if (!renderer || !view) return;
+            if (!view) return;
+            FlipbookDrawList& list = world.has_resource<FlipbookDrawList>()
+                                         ? world.resource<FlipbookDrawList>()
+                                         : world.set_resource<FlipbookDrawList>();
+            list.fires.clear();
             const FrameClock* clock = world.try_resource<FrameClock>();
             const double time = clock ? clock->time() : 0.0;
             // One orientation per fire for every eye: from the mid-eye point.
-            const glm::vec3 mid_eye = view->frame.eye;
-            struct Drawn {
-              float distance;
-              std::vector<FlipbookQuad> quads;
-              int texture;
-              FlipbookBlend blend;
-            };
-            std::vector<Drawn> fires;
+            list.viewer = view->frame.eye;
             world.each<FlipbookFire>([&](FlipbookFire& fire) {
               if (fire.frame_count <= 0 || fire.texture < 0) return;
-              const FireFrame frame = face_viewer(fire.position, fire.up, mid_eye, -view->frame.forward);
-              const int64_t step = flipbook_step(time, fire.frames_per_second);
-              fires.push_back({glm::length(fire.position - mid_eye),
-                               flipbook_quads(fire, frame, step, fire.frame_count), fire.texture,
-                               fire.blend});
+              FlipbookDrawList::Fire f;
+              f.frame = face_viewer(fire.position, fire.up, list.viewer, -view->frame.forward);
+              f.quads = flipbook_quads(fire, f.frame, flipbook_step(time, fire.frames_per_second),
+                                       fire.frame_count);
+              f.texture = fire.texture;
+              f.blend = fire.blend;
+              f.distance = glm::length(fire.position - list.viewer);
+              list.fires.push_back(std::move(f));
             });
-            if (fires.empty()) return;
-            std::stable_sort(fires.begin(), fires.end(),
-                             [](const Drawn& a, const Drawn& b) { return a.distance > b.distance; });
+            std::stable_sort(list.fires.begin(), list.fires.end(),
+                             [](const FlipbookDrawList::Fire& a, const FlipbookDrawList::Fire& b) {
+                               return a.distance > b.distance;
+                             });
+          }};
+}
+
+ecs::SystemDesc flipbook_render_system() {
+  return {"flipbook_render", ecs::Phase::render,
+          ecs::access<FlipbookDrawList, View, FlipbookRenderer>(), ecs::access<GpuFrame>(),
+          [](ecs::World& world) {
+            FlipbookRenderer* renderer = world.try_resource<FlipbookRenderer>();
+            const View* view = world.try_resource<View>();
+            const FlipbookDrawList* list = world.try_resource<FlipbookDrawList>();
+            if (!renderer || !view || !list || list->fires.empty()) return;
             GpuFrame& targets = world.resource<GpuFrame>();
             for (size_t v = 0; v < view->eyes.size() && v < targets.eyes.size(); ++v)
-              for (const Drawn& d : fires)
-                renderer->draw(d.quads, d.texture, d.blend, view->eyes[v], *targets.eyes[v].scene);
+              for (const FlipbookDrawList::Fire& f : list->fires)
+                renderer->draw(f.quads, f.texture, f.blend, view->eyes[v], *targets.eyes[v].scene);
           }};
 }
 

@@ -6,6 +6,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "engine/core/user_error.h"
 #include "engine/gpu/shader_program.h"
 
 namespace pyro {
@@ -31,6 +32,17 @@ FlipbookRenderer::FlipbookRenderer()
 int FlipbookRenderer::add_flipbook(const FlipbookFrames& frames) {
   if (frames.rgba.empty() || frames.width <= 0 || frames.height <= 0)
     throw std::invalid_argument("FlipbookRenderer::add_flipbook: no frames");
+  GLint max_size = 0, max_layers = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  if (frames.width > max_size || frames.height > max_size ||
+      frames.rgba.size() > static_cast<size_t>(max_layers)) {
+    throw UserError(frames.folder, "",
+                    "expected at most " + std::to_string(max_layers) + " frames of at most " +
+                        std::to_string(max_size) + " pixels a side (this OpenGL's limits), found " +
+                        std::to_string(frames.rgba.size()) + " frames of " +
+                        std::to_string(frames.width) + "x" + std::to_string(frames.height));
+  }
   const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(frames.width, frames.height))));
   gpu::Texture t = gpu::make_texture(GL_TEXTURE_2D_ARRAY);
   glTextureStorage3D(t.get(), levels, GL_SRGB8_ALPHA8, frames.width, frames.height,

@@ -176,8 +176,8 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   std::vector<ecs::SystemDesc> systems = {
       cloud_emitter_system(), particle_emitter_system(), drift_system(), particle_animation_system(),
       camera_orbit_system(),
-      depth_sort_system(),    camera_system(),          mesh_render_system(),
-      flipbook_render_system(), billboard_render_system(), stereo_compose_system()};
+      depth_sort_system(),    camera_system(),          flipbook_orient_system(),
+      mesh_render_system(),   flipbook_render_system(), billboard_render_system(), stereo_compose_system()};
   if (options.readback) systems.push_back(frame_readback_system());
   for (ecs::SystemDesc& d : systems) {
     if (options.sync_timing) {

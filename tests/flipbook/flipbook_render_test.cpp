@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "components/flipbook_draw_list.h"
 #include "components/flipbook_fire.h"
 #include "components/gpu_frame.h"
 #include "components/view.h"
@@ -173,6 +174,40 @@ TEST(FlipbookRender, StereoParallaxOfABillboardIsTheClosedForm) {
   EXPECT_GT(std::fabs(expected), 3.0);
   EXPECT_NEAR(rr.x - l.x, expected, 0.1);
   EXPECT_NEAR(rr.y - l.y, 0.0, 0.02);
+}
+
+TEST(FlipbookRender, OneDrawListFacingTheMidEyeServesBothEyes) {
+  // A fire off to the side, the camera orbiting: each frame the group faces the mid-eye point
+  // (the mono camera), not either eye, and the orientation is made once per frame.
+  SceneDescription s = billboard_scene(uniform_flipbook("mid", 200), FlipbookBlend::one_minus_destination, 2);
+  s.fires[0].position = {1.0f, 0.0f, -0.5f};
+  s.camera.orbit_deg_per_second = 90.0f;
+  RuntimeOptions o;
+  o.readback = false;
+  o.stereo_mode = StereoMode::left_right;
+  o.interocular = 0.4f;
+  SceneRuntime r(s, o);
+  for (int f = 0; f < 3; ++f) {
+    r.step();
+    const View& view = r.world().resource<View>();
+    const FlipbookDrawList& list = r.world().resource<FlipbookDrawList>();
+    ASSERT_EQ(view.eyes.size(), 2u);
+    EXPECT_EQ(list.viewer, view.frame.eye);
+    EXPECT_NEAR(glm::length(0.5f * (view.eyes[0].eye + view.eyes[1].eye) - view.frame.eye), 0.0f, 1e-5f);
+    ASSERT_EQ(list.fires.size(), 1u);
+    glm::vec3 to_mid = view.frame.eye - s.fires[0].position;
+    to_mid.y = 0.0f;
+    EXPECT_NEAR(glm::dot(list.fires[0].frame.toward, glm::normalize(to_mid)), 1.0f, 1e-5f) << "frame " << f;
+    for (const glm::vec3& eye : {view.eyes[0].eye, view.eyes[1].eye}) {
+      glm::vec3 to_eye = eye - s.fires[0].position;
+      to_eye.y = 0.0f;
+      EXPECT_LT(glm::dot(list.fires[0].frame.toward, glm::normalize(to_eye)), 1.0f - 1e-4f);
+    }
+  }
+  for (const auto& st : r.schedule().stats())
+    if (st.name == "flipbook_orient" || st.name == "flipbook_render") {
+      EXPECT_EQ(st.frames, 3u) << st.name;
+    }
 }
 
 TEST(FlipbookRender, CampfireSideBySideHasTheParallaxOfItsBillboards) {

@@ -94,6 +94,9 @@ TEST(FlipbookScene, RefusalsNameThePlace) {
   EXPECT_NE(error_of(R"({"fires": [{"preparation": {"base_line": 0.6, "soften": 0.5}}]})")
                 .find("at /fires/0/preparation/soften: expected base_line + soften at most 1"),
             std::string::npos);
+  EXPECT_NE(error_of(R"({"fires": [{"groups": [{"rows": 100, "columns": 60}, {"rows": 100, "columns": 41}]}]})")
+                .find("at /fires/0/groups: expected at most 10000 billboards in a fire"),
+            std::string::npos);
   EXPECT_NE(error_of(R"({"fires": [{"groups": [{"overlap": 1}]}]})").find("at /fires/0/groups/0/overlap"),
             std::string::npos);
   EXPECT_NE(error_of(R"({"fires": [{"flipbook": "no/such/folder"}]})", "/tmp/x/fires.json")
