@@ -75,6 +75,25 @@ TEST(FlipbookScene, EveryKeyIsRead) {
   EXPECT_FLOAT_EQ(d.aspect, 1.5f);
 }
 
+TEST(FlipbookScene, ShippedScenesHaveTheThesisLayouts) {
+  // campfire: three overlapped pairs (m = 1, n = -2) and triplets (l = -2, m = 1, n = -2);
+  // flipbook_grid: 11 rows of 7, 0.4 apart laterally, 0.2 in depth (Rose 2007, figure 19).
+  const SceneDescription campfire = load_scene(test::scene_path("campfire.json"));
+  ASSERT_EQ(campfire.fires.size(), 2u);
+  EXPECT_EQ(campfire.fires[0].groups[0].rows * campfire.fires[0].groups[0].columns, 6);
+  EXPECT_EQ(campfire.fires[0].groups[0].increments, (std::vector<int>{1, -2}));
+  EXPECT_EQ(campfire.fires[1].groups[0].columns, 3);
+  EXPECT_EQ(campfire.fires[1].groups[0].increments, (std::vector<int>{-2, 1, -2}));
+  const SceneDescription grid = load_scene(test::scene_path("flipbook_grid.json"));
+  ASSERT_EQ(grid.fires.size(), 1u);
+  const FlipbookFire& g = grid.fires[0];
+  EXPECT_EQ(g.groups[0].rows, 11);
+  EXPECT_EQ(g.groups[0].columns, 7);
+  EXPECT_NEAR(g.width * (1.0f - g.groups[0].overlap), 0.4f, 1e-6f);
+  EXPECT_NEAR(g.groups[0].row_spacing, 0.2f, 1e-6f);
+  EXPECT_NEAR(g.groups[0].column_depths[1], 0.2f, 1e-6f);
+}
+
 TEST(FlipbookScene, RefusalsNameThePlace) {
   EXPECT_NE(error_of(R"({"fires": [{"blend": "one-minus-dest"}]})")
                 .find("fires.json: at /fires/0/blend: unknown value \"one-minus-dest\""),
