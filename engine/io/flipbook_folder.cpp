@@ -1,6 +1,7 @@
 #include "engine/io/flipbook_folder.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
