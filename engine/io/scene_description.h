@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "components/emitter.h"
+#include "components/flipbook_fire.h"
 #include "components/particle_dynamics.h"
 #include "components/simulation_environment.h"
 #include "engine/io/scene_budget.h"
@@ -145,6 +146,9 @@ struct SceneDescription {
   SimulationEnvironment environment;
   float prewarm = 0.0f;                      // seconds run before frame 0, >= 0
   std::vector<EmitterDescription> emitters;
+  // Flipbook fires (Rose 2007, chapter 4): the component doubles as the description; its
+  // `flipbook` is resolved against the scene's folder (empty: the engine's baked flipbook).
+  std::vector<FlipbookFire> fires;
   SceneBudget budget;                        // refused up front when exceeded (scene_budget.h)
 };
 

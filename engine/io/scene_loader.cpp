@@ -732,6 +732,114 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
 }
 
 // ---------------------------------------------------------------------------------------------
+// Flipbook fires (Rose 2007, chapter 4; issue 7)
+
+// A non-empty array of numbers in `range` (at most `max_size`).
+std::vector<float> read_number_array(const json& v, const Where& at, const Range& range,
+                                     std::size_t max_size) {
+  if (!v.is_array() || v.empty() || v.size() > max_size) {
+    at.fail("expected an array of 1 to " + std::to_string(max_size) + " numbers, each in " +
+            range.text() + ", found " + describe(v));
+  }
+  std::vector<float> out;
+  for (std::size_t i = 0; i < v.size(); ++i) out.push_back(read_number(v[i], at.child(i), range));
+  return out;
+}
+
+// A non-empty array of integers (either sign) in [-limit, limit].
+std::vector<int> read_signed_array(const json& v, const Where& at, int limit, std::size_t max_size) {
+  const std::string expected = "expected an array of 1 to " + std::to_string(max_size) +
+                               " integers, each in [" + std::to_string(-limit) + ", " +
+                               std::to_string(limit) + "], found ";
+  if (!v.is_array() || v.empty() || v.size() > max_size) at.fail(expected + describe(v));
+  std::vector<int> out;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const json& e = v[i];
+    const double d = e.is_number() ? e.get<double>() : 0.5;
+    if (!e.is_number() || d != std::floor(d) || std::fabs(d) > limit)
+      at.child(i).fail("expected an integer in [" + std::to_string(-limit) + ", " +
+                       std::to_string(limit) + "], found " + describe(e));
+    out.push_back(static_cast<int>(d));
+  }
+  return out;
+}
+
+void read_flipbook_group(ObjectReader& r, FlipbookGroup& g) {
+  if (const json* v = r.find("offset")) {
+    if (!v->is_array() || v->size() != 2)
+      r.at("offset").fail("expected [lateral, depth], 2 numbers, found " + describe(*v));
+    g.offset = glm::vec2(read_number((*v)[0], r.at("offset").child(std::size_t{0}), kAnyRange),
+                         read_number((*v)[1], r.at("offset").child(std::size_t{1}), kAnyRange));
+  }
+  r.integer("rows", 1, 1000, g.rows);
+  r.integer("columns", 1, 1000, g.columns);
+  r.number("overlap", Range{0.0, 1.0, false, true}, g.overlap);
+  r.number("row_spacing", kNonNegative, g.row_spacing);
+  if (const json* v = r.find("column_depths"))
+    g.column_depths = read_number_array(*v, r.at("column_depths"), kAnyRange, 1000);
+  if (const json* v = r.find("start_frames"))
+    g.start_frames = read_signed_array(*v, r.at("start_frames"), 1'000'000, 1000);
+  if (const json* v = r.find("row_start_step"))
+    g.row_start_step = read_signed_array(json::array({*v}), r.at("row_start_step"), 1'000'000, 1)[0];
+  if (const json* v = r.find("increments"))
+    g.increments = read_signed_array(*v, r.at("increments"), 1'000'000, 1000);
+
+}
+
+void read_fire(ObjectReader& r, FlipbookFire& f, const std::string& scene_file) {
+  r.string("name", f.name);
+  r.vec3("position", kAnyRange, f.position);
+  r.vec3("up", kAnyRange, f.up);
+  require_nonzero(f.up, r.at("up"), "up vector (the normal of the fire's base)");
+  r.number("width", kPositive, f.width);
+  r.number("aspect", kPositive, f.aspect);
+  r.number("intensity", kNonNegative, f.intensity);
+  r.number("overlap_exponent", Range{0.0, 4.0}, f.overlap_exponent);
+  f.blend = static_cast<FlipbookBlend>(read_choice(r, "blend", {"one-minus-destination", "linear-alpha"},
+                                                   static_cast<std::size_t>(f.blend)));
+  r.number("frames_per_second", kPositive, f.frames_per_second);
+  if (r.find("flipbook") != nullptr) {
+    std::string folder;
+    r.string("flipbook", folder);
+    f.flipbook = resolve_against(scene_file, folder);
+    std::error_code ec;
+    if (!std::filesystem::is_directory(f.flipbook, ec)) {
+      r.at("flipbook").fail("expected a folder of PNG flame frames, found no folder at " +
+                            in_quotes(f.flipbook) + " (paths are relative to the scene file's folder)");
+    }
+  }
+  r.object("preparation", [&](ObjectReader& p) {
+    if (const json* v = p.find("crop")) {
+      const std::vector<float> c = read_number_array(*v, p.at("crop"), kUnit, 4);
+      if (c.size() != 4 || !(c[2] > c[0]) || !(c[3] > c[1]))
+        p.at("crop").fail("expected [x0, y0, x1, y1] as fractions of the frame with x0 < x1 and "
+                          "y0 < y1, found " + describe(*v));
+      f.preparation.crop = glm::vec4(c[0], c[1], c[2], c[3]);
+    }
+    p.number("base_line", Range{0.0, 1.0, false, true}, f.preparation.base_line);
+    p.number("soften", Range{0.0, 1.0}, f.preparation.soften);
+    if (f.preparation.base_line + f.preparation.soften > 1.0f)
+      p.at("soften").fail("expected base_line + soften at most 1, found " +
+                          format_float(f.preparation.base_line + f.preparation.soften));
+  });
+  if (const json* groups = r.find("groups")) {
+    if (!groups->is_array() || groups->empty())
+      r.at("groups").fail("expected a non-empty array of billboard groups, found " + describe(*groups));
+    r.objects("groups", "an object describing a group of billboards",
+              [&](ObjectReader& g, std::size_t) { read_flipbook_group(g, f.groups.emplace_back()); });
+  } else {
+    f.groups.emplace_back();  // the thesis' three overlapped pairs
+  }
+  std::uint64_t billboards = 0;
+  for (const FlipbookGroup& g : f.groups)
+    billboards += static_cast<std::uint64_t>(g.rows) * static_cast<std::uint64_t>(g.columns);
+  if (billboards > 10'000) {
+    r.at("groups").fail("expected at most 10000 billboards in a fire (the sum of rows x columns), "
+                        "found " + std::to_string(billboards));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
 // Explosion emitters (issue 4)
 
 bool read_bool(const json& v, const Where& at) {
@@ -908,6 +1016,9 @@ SceneDescription read_scene(ObjectReader& r) {
   r.object("environment", [&](ObjectReader& e) { read_environment(e, s.environment, s.prewarm); });
   r.objects("emitters", "an object describing an emitter",
             [&](ObjectReader& e, std::size_t) { read_emitter(e, s.emitters.emplace_back()); });
+  r.objects("fires", "an object describing a flipbook fire", [&](ObjectReader& f, std::size_t) {
+    read_fire(f, s.fires.emplace_back(), *r.where().file);
+  });
   r.object("budget", [&](ObjectReader& b) {
     b.integer("particles", 1, 4'000'000'000ull, s.budget.particles);
     std::uint64_t memory_mib = s.budget.memory_bytes >> 20;

@@ -35,6 +35,8 @@
 #include "systems/composite/frame_targets.h"
 #include "systems/emitter/cloud_emitter_system.h"
 #include "systems/emitter/emitter_system.h"
+#include "systems/flipbook_fire/flipbook_render_system.h"
+#include "systems/flipbook_fire/flipbook_world.h"
 #include "systems/mesh_render/mesh_render_system.h"
 #include "systems/output/frame_readback_system.h"
 #include "systems/sorting/depth_sort.h"
@@ -162,6 +164,8 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     world_.emplace<MeshInstance>(world_.create(), MeshInstance{m.kind, m.position, m.scale, m.color});
   }
 
+  add_flipbook_fires(world_, scene.fires);  // reads (or first bakes) the flipbooks
+
   world_.set_resource<GpuFrame>(make_gpu_frame(settings));
   world_.set_resource<BillboardRenderer>(
       make_footprint_table(scene.footprint.size, scene.footprint.intervals));
@@ -172,8 +176,8 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   std::vector<ecs::SystemDesc> systems = {
       cloud_emitter_system(), particle_emitter_system(), drift_system(), particle_animation_system(),
       camera_orbit_system(),
-      depth_sort_system(),    camera_system(),          mesh_render_system(),
-      billboard_render_system(), stereo_compose_system()};
+      depth_sort_system(),    camera_system(),          flipbook_orient_system(),
+      mesh_render_system(),   flipbook_render_system(), billboard_render_system(), stereo_compose_system()};
   if (options.readback) systems.push_back(frame_readback_system());
   for (ecs::SystemDesc& d : systems) {
     if (options.sync_timing) {

@@ -72,6 +72,7 @@ void add_analyze_commands(CLI::App& app) {
   add_analyze_projection_error_command(*analyze);
   add_analyze_stereo_command(*analyze);
   add_analyze_media_commands(*analyze);
+  add_flipbook_commands(app, *analyze);  // also `pyro bake-flipbook`
 }
 
 }  // namespace pyro::cli

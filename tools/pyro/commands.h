@@ -8,6 +8,8 @@ void add_render_command(CLI::App& app);
 void add_analyze_commands(CLI::App& app);
 void add_bench_commands(CLI::App& app);
 void add_import_command(CLI::App& app);
+// `pyro bake-flipbook` and `pyro analyze flipbook-pattern` (command_flipbook.cpp).
+void add_flipbook_commands(CLI::App& app, CLI::App& analyze);
 // Registered under `pyro analyze` by add_analyze_commands.
 void add_billboard_mode_analysis(CLI::App& analyze);
 // `pyro bench vdb`, registered by add_bench_commands.

@@ -1,0 +1,38 @@
+#pragma once
+// A flipbook on disk: a folder of PNG frames (a user's own video frames, or one baked by
+// `pyro bake-flipbook`), played in file-name order. Frames named PREFIX + digits + ".png" must
+// be numbered without gaps, and every frame must have the first frame's size; anything else is
+// refused with a UserError naming the folder or the file. An optional `flipbook.json` in the
+// folder (written by the bake) states the frame count, which is then checked too.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "components/flipbook_fire.h"
+
+namespace pyro {
+
+struct FlipbookFrames {
+  std::string folder;
+  int width = 0, height = 0;
+  std::vector<std::string> files;             // in playing order
+  std::vector<std::vector<uint8_t>> rgba;     // per frame, 8-bit sRGB RGBA, row 0 at the top
+};
+
+// Grey, grey + alpha and RGB frames get alpha = their brightest channel (flames filmed on
+// black: black is transparent); RGBA frames keep their alpha.
+FlipbookFrames read_flipbook_folder(const std::string& folder);
+
+// The thesis' preparation steps (Rose 2007, section 4.2; components/flipbook_fire.h): crop,
+// then black out the bottom `base_line` of the height and ramp linearly from black over the next
+// `soften`. Row y (0 at the top) of a frame h rows high, at height above the bottom
+// a = (h - y - 0.5) / h, keeps the fraction
+//   0 for a < base_line;  (a - base_line) / soften for a < base_line + soften;  1 above,
+// of every channel (alpha included). Throws std::invalid_argument for a crop outside [0, 1] or
+// empty (the scene loader checks these first).
+void prepare_flipbook(FlipbookFrames& frames, const FlipbookPreparation& preparation);
+
+// The fraction kept at height a (above): exposed for tests.
+float base_softening(float a, float base_line, float soften);
+
+}  // namespace pyro

@@ -1,0 +1,44 @@
+#pragma once
+// Flames from anywhere (issue 7): no video ships with the engine, so a flipbook can be baked
+// from its own black-body fire simulation. A small scene (content/scenes/flipbook_fire.json: a
+// fire column on black, seen from the side) is rendered mono into `frames` PNG frames
+// (frame_0000.png, ...; cross-faded over the wrap so that the loop does not jump) plus
+// `flipbook.json` (frame count, size, source scene), all written into
+// a staging folder and moved into place only when complete (engine/io/staging_folder.h).
+#include <string>
+#include <vector>
+
+#include "engine/io/scene_description.h"
+
+namespace pyro {
+
+struct FlipbookBakeOptions {
+  int frames = 32;
+  int width = 128;
+  int height = 192;
+  // A seamless loop: frames + loop_blend steps are simulated, and frame j < loop_blend becomes
+  // the linear-light mix of simulated frames frames + j and j with weight w_j = (j + 1) /
+  // (loop_blend + 1) on frame j, so that the last frame runs on into frame 0 as into frame
+  // `frames` (a cross-fade over the wrap). 0: no blending (the loop jumps). < frames.
+  int loop_blend = 8;
+};
+
+struct FlipbookBakeResult {
+  std::vector<std::string> files;  // in `out`, frames then the manifest
+  double seconds = 0.0;
+};
+
+// Throws UserError naming the scene when it has `fires` (a bake renders simulated fire, not
+// flipbooks), `out` when it is a file, or "--loop-blend" when it is not below the frame count.
+FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBakeOptions& options,
+                                 const std::string& out);
+
+// Where fires without a `flipbook` find theirs: $PYRO_FLIPBOOK_DIR when set, else the build
+// folder's flipbooks/fire (baked by the build's `default_flipbook` target).
+std::string default_flipbook_folder();
+
+// The default flipbook's folder, baked from content/scenes/flipbook_fire.json with the default
+// options first when it holds no manifest yet (a fresh clone's first run; a note on stderr).
+std::string ensure_default_flipbook();
+
+}  // namespace pyro
