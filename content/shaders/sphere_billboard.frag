@@ -26,7 +26,9 @@
 //   2, fire: a = 0; L_e from the black-body table engine/math/blackbody.h makes, at the
 //      temperature perturbed by the detail noise (the paper's T = T0 + T1 tex3D(...)).
 // The detail noise (engine/math/detail_noise.h) is sampled in each particle's own window: an
-// offset from its key, moving along the volume's time axis.
+// offset from its key, in the volume's slice at this frame's time (taken on the CPU by
+// detail_noise_slice_rg: one bilinear 2D fetch here instead of a trilinear 3D one, the
+// volume's time axis shared by all particles; dust and smoke read channel r, fire channel g).
 flat in vec3 v_center;
 flat in float v_radius;
 flat in vec4 v_color_tau;
@@ -41,7 +43,7 @@ uniform float u_far;
 
 layout(binding = 2) uniform sampler2D u_phase;      // p(mu, g): x over mu in [-1, 1], y over g
 layout(binding = 3) uniform sampler1D u_blackbody;  // emitted radiance over [T_min, T_max]
-layout(binding = 4) uniform sampler3D u_detail;     // periodic noise in [0, 1]
+layout(binding = 4) uniform sampler2D u_detail;     // periodic noise slice in [0, 1], rg
 uniform vec4 u_phase_range;     // g_min, g_max, cos texels, g texels
 uniform vec3 u_light_view;      // direction the light travels, view space, unit
 uniform vec3 u_light_irradiance;  // E, linear rgb
@@ -50,7 +52,6 @@ uniform float u_albedo;
 uniform float u_g;
 uniform float u_detail_amplitude;
 uniform float u_detail_frequency;
-uniform float u_detail_time;    // time times speed: periods of the volume's time axis
 uniform vec4 u_fire;            // T_min, T_max, scale, bias
 uniform float u_fire_detail_range;
 
@@ -102,12 +103,15 @@ void main() {
   o_color = vec4(v_color_tau.rgb * alpha, alpha);
 #else
   // The particle's detail window: the ray's closest point to the centre, in units of r,
-  // scaled, offset by the particle's key, moving in time.
+  // scaled, offset by the particle's key; the slice moves in time.
   float key = v_medium.w;
   vec3 closest = dir * (b / a) - p;
-  vec3 window = vec3(closest.xy / r * u_detail_frequency + vec2(key, fract(key * 7.0)),
-                     fract(key * 13.0) + u_detail_time);
+  vec2 window = closest.xy / r * u_detail_frequency + vec2(key, fract(key * 7.0));
+#if SHADING == 2
+  float n = texture(u_detail, window).g;
+#else
   float n = texture(u_detail, window).r;
+#endif
   float tau = v_color_tau.a * v_medium.y;  // density times the opacity curve
   float alpha = 1.0 - exp(-tau * (1.0 - d / r) * ds);
 #if SHADING == 2

@@ -51,12 +51,11 @@ ExplosionRenderer::ExplosionRenderer(const ExplosionShading& shading)
   blackbody_ = gpu::make_texture(GL_TEXTURE_1D);
   glTextureStorage1D(blackbody_.get(), 1, GL_RGB32F, bb_size);
   glTextureSubImage1D(blackbody_.get(), 0, 0, bb_size, GL_RGB, GL_FLOAT, emitted.data());
-  // The detail volume: periodic, so it repeats in space and loops in time.
-  const DetailNoise noise = make_detail_noise(64, 4, 3, 0x5eedull);
-  detail_ = gpu::make_texture(GL_TEXTURE_3D);
-  glTextureStorage3D(detail_.get(), 1, GL_R16F, noise.size, noise.size, noise.size);
-  glTextureSubImage3D(detail_.get(), 0, 0, 0, 0, noise.size, noise.size, noise.size, GL_RED, GL_FLOAT,
-                      noise.values.data());
+  // The detail volume: periodic, so it repeats in space and loops in time; the shader reads
+  // its slice at the frame's time (upload_detail_slice).
+  detail_volume_ = make_detail_noise(64, 4, 3, 0x5eedull);
+  detail_ = gpu::make_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(detail_.get(), 1, GL_RG16F, detail_volume_.size, detail_volume_.size);
   for (GLuint t : {phase_.get(), blackbody_.get(), detail_.get()}) {
     glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -65,8 +64,17 @@ ExplosionRenderer::ExplosionRenderer(const ExplosionShading& shading)
     glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
-  for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+  for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T})
     glTextureParameteri(detail_.get(), w, GL_REPEAT);
+}
+
+void ExplosionRenderer::upload_detail_slice(double time) {
+  const float t = static_cast<float>(std::fmod(time * shading_.detail_speed, 1.0));
+  if (t == detail_time_) return;  // the second eye of a stereo frame
+  detail_time_ = t;
+  const std::vector<float> slice = detail_noise_slice_rg(detail_volume_, t);
+  glTextureSubImage2D(detail_.get(), 0, 0, 0, detail_volume_.size, detail_volume_.size, GL_RG,
+                      GL_FLOAT, slice.data());
 }
 
 void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
@@ -77,6 +85,7 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
   const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   for (const auto& l : layers) glClearNamedFramebufferfv(l->framebuffer(), GL_COLOR, 0, clear);
   split_by_medium(list, split_);
+  upload_detail_slice(time);
   const bool planar = settings.particles == ParticleShape::planar;
   const glm::vec3 light = glm::normalize(glm::vec3(frame.view * glm::vec4(settings.light_direction, 0.0f)));
   const glm::vec3 irradiance = settings.light_color * shading_.light_irradiance;
@@ -102,7 +111,6 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     glUniform4f(loc("u_phase_range"), phase_g_min_, phase_g_max_, static_cast<float>(phase_cos_size_),
                 static_cast<float>(phase_g_size_));
     glUniform1f(loc("u_detail_frequency"), shading_.detail_frequency);
-    glUniform1f(loc("u_detail_time"), static_cast<float>(std::fmod(time * shading_.detail_speed, 1.0)));
     glUniform4f(loc("u_fire"), shading_.fire_t_min, shading_.fire_t_max, shading_.fire_scale, shading_.fire_bias);
     glUniform1f(loc("u_fire_detail_range"), shading_.fire_detail_range);
     glBindTextureUnit(2, phase_.get());

@@ -2,7 +2,7 @@
 // GPU state of explosion shading (Umenhoffer et al. 2006, sections 3 and 4): spherical (or, for
 // comparison, planar) billboards of dust, smoke and fire, each medium into its own layer, shaded
 // by eq. 1 through tables made in engine/math: the Cornette-Shanks phase table, the black-body
-// table and the detail-noise volume.
+// table and the detail-noise volume (its slice at each frame's time).
 #include <array>
 #include <memory>
 
@@ -12,6 +12,7 @@
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
+#include "engine/math/detail_noise.h"
 #include "systems/billboard_render/instance_buffer.h"
 #include "systems/billboard_render/sphere_billboard_programs.h"
 
@@ -29,7 +30,6 @@ class ExplosionRenderer {
   void draw(const DrawList& list, const CameraFrame& frame, const RenderSettings& settings,
             double time, const std::array<std::unique_ptr<gpu::RenderTarget>, 3>& layers,
             const gpu::RenderTarget& scene);
-  GLuint detail_texture() const { return detail_.get(); }
   const ExplosionShading& shading() const { return shading_; }
 
  private:
@@ -37,7 +37,10 @@ class ExplosionRenderer {
   SphereBillboardPrograms programs_;
   std::array<InstanceBuffer, 3> instances_;
   std::array<DrawList, 3> split_;
+  void upload_detail_slice(double time);
   gpu::Texture phase_, blackbody_, detail_;
+  DetailNoise detail_volume_;
+  float detail_time_ = -1.0f;
   float phase_g_min_ = 0.0f, phase_g_max_ = 0.0f;
   int phase_cos_size_ = 0, phase_g_size_ = 0;
 };

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <vector>
 
@@ -20,20 +21,32 @@ namespace pyro::cli {
 
 namespace {
 
-double time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames,
-                   nlohmann::json* system_ms) {
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+struct FrameTiming {
+  double fps = 0.0;
+  double cpu_ms_per_frame = 0.0;  // all of the process's threads (llvmpipe's included)
+};
+
+FrameTiming time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames,
+                        nlohmann::json* system_ms) {
   SceneRuntime runtime(scene, options);
   runtime.step();  // warm up: shaders, tables, targets
   glFinish();
+  const double cpu0 = process_cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
   for (int f = 0; f < frames; ++f) runtime.step();
   glFinish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double cpu = process_cpu_seconds() - cpu0;
   if (system_ms)
     for (const auto& st : runtime.schedule().stats()) (*system_ms)[st.name] = st.mean_ms();
-  return frames / seconds;
+  return {frames / seconds, 1000.0 * cpu / frames};
 }
-
 
 
 }  // namespace
@@ -46,13 +59,14 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
   base.height_override = o.height;
   nlohmann::json scales = nlohmann::json::array();
   double full_fps = 0.0;
-  for (float scale : {1.0f, 0.5f, 0.25f, 0.125f}) {
+  for (float scale : o.scales) {
     RuntimeOptions timed = base;
     timed.layer_scale = scale;
     timed.sync_timing = o.sync_timing;
     nlohmann::json system_ms = nlohmann::json::object();
-    const double fps = time_frames(scene, timed, o.frames, &system_ms);
-    if (scale == 1.0f) full_fps = fps;
+    const FrameTiming timing = time_frames(scene, timed, o.frames, &system_ms);
+    const double fps = timing.fps;
+    if (full_fps == 0.0) full_fps = fps;
     // Error: the same frames rendered at this scale and at full resolution, linear views.
     RuntimeOptions measured_options = timed, reference_options = base;
     measured_options.readback = reference_options.readback = true;
@@ -72,6 +86,7 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     }
     scales.push_back({{"scale", scale},
                       {"fps", fps},
+                      {"cpu_ms_per_frame", timing.cpu_ms_per_frame},
                       {"speedup_vs_full", full_fps > 0.0 ? fps / full_fps : 1.0},
                       {"rmse_vs_full", samples ? std::sqrt(sum / samples) : 0.0},
                       {"system_ms", system_ms}});
@@ -119,7 +134,7 @@ nlohmann::json bench_table1(const Table1BenchOptions& o) {
       probe.step();
       size_t live = 0;
       probe.world().each<ParticleSet>([&](ecs::Entity, ParticleSet& set) { live += set.pool.size(); });
-      row[shape == ParticleShape::planar ? "planar_fps" : "spherical_fps"] = time_frames(s, ro, o.frames, nullptr);
+      row[shape == ParticleShape::planar ? "planar_fps" : "spherical_fps"] = time_frames(s, ro, o.frames, nullptr).fps;
       row["live_particles"] = live;
     }
     rows.push_back(row);

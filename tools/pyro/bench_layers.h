@@ -3,6 +3,7 @@
 // 35, 60, 110, 185 fps at 1, 1/2, 1/4, 1/8) and Table 1 (frame rates for 0 to 1578 particles,
 // planar and spherical, half-resolution layers).
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +15,7 @@ struct LayersBenchOptions {
   int frames = 60;        // timed frames per scale
   int error_frames = 4;   // frames (spread over the timed ones) where RMSE is measured
   bool sync_timing = false;  // per-system times include their GPU work (slower frames)
+  std::vector<float> scales{1.0f, 0.5f, 0.25f, 0.125f};  // speed-ups are against the first
 };
 
 // Per layer scale 1, 1/2, 1/4, 1/8: fps over the same frames, and the RMSE (linear rgb, the

@@ -90,6 +90,10 @@ void add_bench_commands(CLI::App& app) {
   layers_cmd->add_option("--frames", layers->options.frames, "Timed frames per scale")->check(CLI::Range(1, 100000));
   layers_cmd->add_flag("--sync-timing", layers->options.sync_timing,
                        "Finish GPU work after each system so per-system times include it");
+  layers_cmd->add_option("--scales", layers->options.scales,
+                         "Layer scales to run (default 1 0.5 0.25 0.125; speed-ups are against the first)")
+      ->check(CLI::Range(0.01f, 1.0f))
+      ->expected(1, 8);
   layers_cmd->add_flag("--json", layers->json, "Print one JSON object");
   layers_cmd->callback([layers] { print(bench_layers(layers->options), layers->json); });
 
