@@ -11,7 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "components/draw_list.h"
+#include "engine/core/trace_events.h"
 #include "engine/core/user_error.h"
+#include "engine/io/text_file.h"
 #include "engine/io/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
@@ -19,6 +21,7 @@
 #include "engine/io/staging_folder.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/render_options.h"
+#include "tools/pyro/trace_path.h"
 
 namespace pyro::cli {
 
@@ -30,6 +33,7 @@ struct RenderArgs {
   int width = 0, height = 0;
   std::string frames = "1";
   bool json = false;
+  std::string trace;  // --trace FILE: Chrome trace-event JSON of the session
   RuntimeOptions runtime;
 };
 
@@ -47,12 +51,14 @@ void run_render(const RenderArgs& a) {
   std::error_code ec;
   if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
     throw UserError(a.out, "--out", "expected a folder for the frames, found a file");
+  if (!a.trace.empty()) check_trace_path(a.trace, "--trace");
 
   const auto t0 = std::chrono::steady_clock::now();
   RuntimeOptions options = a.runtime;
   options.readback = false;
   options.width_override = a.width;
   options.height_override = a.height;
+  options.profile = !a.trace.empty();
   SceneRuntime runtime(scene, options);  // refuses a scene over its budget (scene_budget.h)
 
   StagingFolder staging(a.out);
@@ -71,6 +77,8 @@ void run_render(const RenderArgs& a) {
   }
   progress.finish();
   staging.commit();
+  if (!a.trace.empty())
+    write_text_file(a.trace, chrome_trace_json(runtime.trace(), "pyro render " + scene.file));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   const auto* lists = runtime.world().try_resource<EyeDrawLists>();
@@ -100,6 +108,7 @@ void run_render(const RenderArgs& a) {
       {"ms_per_frame", seconds * 1000.0 / count},
       {"systems", systems},
       {"renderer", shared_headless_context().description()}};
+  if (!a.trace.empty()) summary["trace"] = a.trace;
   if (a.json) {
     std::printf("%s\n", summary.dump().c_str());
   } else {
@@ -124,6 +133,9 @@ void add_render_command(CLI::App& app) {
                   "N: frames 0..N-1; A:B: frames A..B inclusive (simulated from frame 0, only A..B "
                   "written, named frame_A.png ...)");
   cmd->add_flag("--json", args->json, "Print a JSON summary as the last line");
+  cmd->add_option("--trace", args->trace,
+                  "Write a Chrome trace-event JSON file (opens in Perfetto): one span per system "
+                  "and GPU pass per frame");
   add_render_options(cmd, args->runtime);
   cmd->callback([args] { run_render(*args); });
 }
