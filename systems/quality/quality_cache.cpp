@@ -29,6 +29,19 @@ std::string quality_cache_path() {
   return {};
 }
 
+std::string engine_build_identity() {
+  // The running executable's size and modification time: a rebuilt engine measures again.
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return "unknown build";
+  const auto size = std::filesystem::file_size(exe, ec);
+  if (ec) return "unknown build";
+  const auto time = std::filesystem::last_write_time(exe, ec);
+  if (ec) return "unknown build";
+  return exe.string() + "|" + std::to_string(size) + "|" +
+         std::to_string(time.time_since_epoch().count());
+}
+
 std::string quality_cache_key(const std::string& scene_bytes, int width, int height,
                               double max_rmse, const std::string& renderer) {
   char target[64];
@@ -36,6 +49,7 @@ std::string quality_cache_key(const std::string& scene_bytes, int width, int hei
   uint64_t h = fnv1a64(scene_bytes);
   h = fnv1a64(target, h);
   h = fnv1a64(renderer, h);
+  h = fnv1a64(engine_build_identity(), h);
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
   return hex;

@@ -10,6 +10,7 @@
 #include "components/gpu_frame.h"
 #include "components/particle_set.h"
 #include "components/view.h"
+#include "engine/core/sample_statistics.h"
 #include "engine/ecs/world.h"
 #include "systems/reference/particle_reference.h"
 #include "systems/scene_runtime/scene_runtime.h"
@@ -136,11 +137,16 @@ double measure_ms_per_frame(const SceneDescription& scene, int width, int height
   SceneRuntime runtime(apply_quality_settings(scene, q), mono_options(width, height, false));
   render_frame(runtime, 0, q.substeps);  // warm up: shaders, tables, targets
   glFinish();
-  const auto t0 = std::chrono::steady_clock::now();
-  for (int f = 1; f <= frames; ++f) render_frame(runtime, f, q.substeps);
-  glFinish();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
-         std::max(1, frames);
+  // The median frame: on a machine shared with other work, a mean is dragged by whoever else
+  // ran during one frame.
+  std::vector<double> ms;
+  for (int f = 1; f <= std::max(1, frames); ++f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    render_frame(runtime, f, q.substeps);
+    glFinish();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  return sample_statistics(ms).median;
 }
 
 }  // namespace pyro

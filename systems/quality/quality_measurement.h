@@ -47,8 +47,8 @@ bool has_dynamics(const SceneDescription& scene);
 double measure_rmse(const SceneDescription& scene, int width, int height, const QualitySettings& q,
                     const QualityGroundTruth& truth);
 
-// Milliseconds per frame with `q` (after one warm-up frame; GPU work finished before the clock
-// stops), over `frames` frames.
+// Milliseconds per frame with `q`: the median over `frames` frames (after one warm-up frame),
+// each timed until the GPU has finished it.
 double measure_ms_per_frame(const SceneDescription& scene, int width, int height,
                             const QualitySettings& q, int frames);
 

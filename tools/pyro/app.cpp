@@ -11,6 +11,7 @@ void add_pyro_commands(CLI::App& app) {
   add_bench_commands(app);
   add_import_command(app);
   add_profile_command(app);
+  add_quality_command(app);
 }
 
 void stop_after_parsing(CLI::App& app) {

@@ -9,6 +9,7 @@ void add_analyze_commands(CLI::App& app);
 void add_bench_commands(CLI::App& app);
 void add_import_command(CLI::App& app);
 void add_profile_command(CLI::App& app);  // command_profile.cpp
+void add_quality_command(CLI::App& app);  // command_quality.cpp
 // Registered under `pyro analyze` by add_analyze_commands.
 void add_billboard_mode_analysis(CLI::App& analyze);
 // `pyro bench vdb`, registered by add_bench_commands.
