@@ -47,7 +47,7 @@ bool has_dynamics(const SceneDescription& scene);
 double measure_rmse(const SceneDescription& scene, int width, int height, const QualitySettings& q,
                     const QualityGroundTruth& truth);
 
-// Milliseconds per frame with `q`: the median over `frames` frames (after one warm-up frame),
+// Milliseconds per frame with `q`: the fastest of `frames` frames (after one warm-up frame),
 // each timed until the GPU has finished it.
 double measure_ms_per_frame(const SceneDescription& scene, int width, int height,
                             const QualitySettings& q, int frames);

@@ -20,7 +20,7 @@ namespace pyro {
 
 struct QualitySearch {
   std::vector<int> frames = {0, 10, 20};  // frames whose error is measured (ascending)
-  int timed_frames = 4;                   // frames timed per candidate
+  int timed_frames = 4;                   // frames timed per candidate (the fastest counts)
   double margin = 0.85;                   // a candidate qualifies at rmse <= margin * target
 };
 
