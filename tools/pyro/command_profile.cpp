@@ -1,4 +1,5 @@
-// pyro profile SCENE [--frames N] [--warmup K] [--width W] [--height H] [--json] [render options]
+// pyro profile SCENE [--frames N] [--warmup K] [--width W] [--height H] [--sync-timing] [--json]
+//                    [render options]
 //
 // A profiling session (SceneRuntime with RuntimeOptions::profile): K warm-up frames (shader
 // compilation, first allocations; not counted), then N frames, every system timed on the CPU
@@ -149,6 +150,7 @@ void run_profile(const ProfileArgs& a) {
                             {"width", rs.width},
                             {"height", rs.height},
                             {"layer_scale", rs.layer_scale},
+                            {"sync_timing", a.runtime.sync_timing},
                             {"frame_mean_ms", fs.mean},
                             {"frame_p95_ms", fs.p95},
                             {"systems", systems},
@@ -206,6 +208,9 @@ void add_profile_command(CLI::App& app) {
       ->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Image height in pixels (default: the scene's)")
       ->check(CLI::Range(1, 8192));
+  cmd->add_flag("--sync-timing", args->runtime.sync_timing,
+                "Finish the GPU's work after every system, so each system's CPU span includes the "
+                "GPU work it issued (removes CPU/GPU overlap)");
   cmd->add_flag("--json", args->json, "Print a JSON summary as the last line");
   add_render_options(cmd, args->runtime);
   cmd->callback([args] { run_profile(*args); });
