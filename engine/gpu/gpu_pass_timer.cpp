@@ -101,7 +101,7 @@ std::vector<GpuPassSample> GpuPassTimer::collect() {
   return out;
 }
 
-GpuPassScope::GpuPassScope(const std::string& name, bool count_fragments)
+GpuPassScope::GpuPassScope(const char* name, bool count_fragments)
     : timer_(active_gpu_pass_timer()) {
   if (timer_) pass_ = timer_->begin(name, count_fragments);
 }

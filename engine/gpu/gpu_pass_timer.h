@@ -68,7 +68,8 @@ void set_active_gpu_pass_timer(GpuPassTimer* timer);
 // when there is none). For a render system's inner passes: `GpuPassScope p("fire layer", true);`
 class GpuPassScope {
  public:
-  explicit GpuPassScope(const std::string& name, bool count_fragments = false);
+  // `name` is copied only when a timer is active (no allocation when nobody profiles).
+  explicit GpuPassScope(const char* name, bool count_fragments = false);
   ~GpuPassScope();
   GpuPassScope(const GpuPassScope&) = delete;
   GpuPassScope& operator=(const GpuPassScope&) = delete;

@@ -185,7 +185,7 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     if (profiling_ && d.phase >= ecs::Phase::render) {
       // Systems that issue GL commands: their GPU time is a pass of its own on the GPU track.
       d.run = [run = std::move(d.run), name = d.name](ecs::World& w) {
-        gpu::GpuPassScope pass(name);
+        gpu::GpuPassScope pass(name.c_str());
         run(w);
       };
     }
