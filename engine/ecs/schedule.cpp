@@ -69,6 +69,7 @@ void Schedule::run_phases_through(World& world, Phase last) {
     const double ms = std::chrono::duration<double, std::milli>(clock::now() - t0).count();
     SystemStats& st = stats_[i];
     st.last_ms = ms;
+    st.last_start = t0;
     st.total_ms += ms;
     st.max_ms = std::max(st.max_ms, ms);
     ++st.frames;

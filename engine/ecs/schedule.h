@@ -3,6 +3,7 @@
 // within a phase. Every run is timed, and each system declares what it reads and writes so
 // that conflicts (two systems of one phase touching the same data, one of them writing) can
 // be reported today and used to decide what may run in parallel later.
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -41,6 +42,8 @@ struct SystemStats {
   std::string name;
   Phase phase = Phase::simulate;
   double last_ms = 0;
+  // When the last run began (steady clock): profilers place the run on a timeline with it.
+  std::chrono::steady_clock::time_point last_start{};
   double total_ms = 0;
   double max_ms = 0;
   uint64_t frames = 0;

@@ -119,6 +119,14 @@ struct FootprintDescription {
   int intervals = 100;  // composite quadrature intervals along z, 1 .. 100000
 };
 
+// "quality": {"max_rmse": E}: instead of explicit settings, the engine picks the layer scale,
+// footprint table size and time step that keep the image's RMSE against the ground truth at
+// most E at the least measured cost (systems/quality).
+struct QualityDescription {
+  float max_rmse = 0.0f;  // (0, 1]; 0: no target given (the scene's own settings are used)
+  bool given() const { return max_rmse > 0.0f; }
+};
+
 // An explosion emitter (issue 4): what it spawns (components/emitter.h; its state fields stay at
 // their defaults) and how its particles move (components/particle_dynamics.h). The plain-data
 // components double as the description, so scene keys and component fields cannot drift apart.
@@ -150,6 +158,7 @@ struct SceneDescription {
   // `flipbook` is resolved against the scene's folder (empty: the engine's baked flipbook).
   std::vector<FlipbookFire> fires;
   SceneBudget budget;                        // refused up front when exceeded (scene_budget.h)
+  QualityDescription quality;                // optional error target
 };
 
 }  // namespace pyro

@@ -1026,6 +1026,10 @@ SceneDescription read_scene(ObjectReader& r) {
     s.budget.memory_bytes = memory_mib << 20;
     b.integer("texture_size", 1, 65536, s.budget.texture_size);
   });
+  r.object("quality", [&](ObjectReader& q) {
+    const json& v = q.require("max_rmse", "a number in (0, 1], the largest image RMSE accepted");
+    s.quality.max_rmse = read_number(v, q.at("max_rmse"), Range{0.0, 1.0, true, false});
+  });
   r.finish();
   return s;
 }

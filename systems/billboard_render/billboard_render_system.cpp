@@ -7,6 +7,7 @@
 #include "components/render_settings.h"
 #include "components/view.h"
 #include "engine/ecs/world.h"
+#include "engine/gpu/gpu_pass_timer.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/billboard_render/explosion_renderer.h"
 #include "systems/billboard_render/sphere_billboard_renderer.h"
@@ -18,6 +19,7 @@ namespace pyro {
 void draw_particles_for_view(BillboardRenderer& renderer, const DrawList& list,
                              const CameraFrame& frame, EyeTargets& targets,
                              BillboardAlignment alignment, BillboardShading shading) {
+  const gpu::GpuPassScope pass("particle layer", true);  // profiling hook (no-op by default)
   if (!targets.layer) {
     renderer.draw(list, frame, *targets.scene, alignment, shading);
     return;
@@ -72,6 +74,7 @@ ecs::SystemDesc billboard_render_system() {
             SphereBillboardRenderer& spheres = world.resource<SphereBillboardRenderer>();
             for (size_t v = 0; v < views; ++v) {
               EyeTargets& t = frame.eyes[v];
+              const gpu::GpuPassScope pass("particle layer", true);  // profiling hook
               if (t.layer) prepare_layer(t);
               spheres.draw(lists->eyes[v], view.eyes[v], t.layer ? *t.layer : *t.scene,
                            t.scene->depth_texture(), t.scene->width(), t.scene->height(),

@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "components/particle_medium.h"
+#include "engine/gpu/gpu_pass_timer.h"
 #include "engine/gpu/shader_program.h"
 #include "engine/math/blackbody.h"
 #include "engine/math/detail_noise.h"
@@ -92,6 +93,9 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
   for (int m = 0; m < 3; ++m) {
     const DrawList& l = split_[m];
     if (l.size() == 0) continue;
+    // Profiling hook (no-op unless a session is active): this medium's layer, fragments counted.
+    static const char* const layer_names[3] = {"dust layer", "smoke layer", "fire layer"};
+    const gpu::GpuPassScope pass(layer_names[m], true);
     const gpu::RenderTarget& target = *layers[m];
     if (planar) {
       // Planar billboards are depth tested against the scene's depth, point-sampled down.

@@ -13,6 +13,8 @@
 // its optical depth is at most `max_piece_depth`; each piece adds T (1 - exp(-dtau)) times the
 // dtau-weighted mean colour and multiplies T by exp(-dtau). Optical depth is exact; the colour
 // mixing is exact for one colour and converges as pieces shrink.
+#include <vector>
+
 #include "components/volume_medium.h"
 #include "engine/math/camera_math.h"
 #include "engine/particles/particle_pool.h"
@@ -27,5 +29,16 @@ double particle_optical_depth(const glm::dvec3& centre, double radius, double de
 RgbImage render_particles_reference(const ParticlePool& particles, const CameraFrame& camera,
                                     const glm::dvec3& background, int threads = 0,
                                     double max_piece_depth = 0.02);
+
+// The same particles in front of an opaque scene: `behind` (linear RGB, camera size) is what each
+// pixel's ray meets after the medium, at distance `stop` along the ray (infinity: nothing), so
+// particles are cut where the surface is, as the GL renderer's depth test cuts them.
+RgbImage render_particles_reference_over(const ParticlePool& particles, const CameraFrame& camera,
+                                         const RgbImage& behind, const std::vector<float>& stop,
+                                         int threads = 0, double max_piece_depth = 0.02);
+
+// Distances along each pixel's ray (camera.width x camera.height, top row first) to the surface
+// whose GL window depth (glm::perspective, depth range [0, 1]) is `depth`; 1 gives infinity.
+std::vector<float> ray_stop_distances(const CameraFrame& camera, const std::vector<float>& depth);
 
 }  // namespace pyro

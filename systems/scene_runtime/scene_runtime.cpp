@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cmath>
 #include <stdexcept>
@@ -179,7 +180,19 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
       depth_sort_system(),    camera_system(),          flipbook_orient_system(),
       mesh_render_system(),   flipbook_render_system(), billboard_render_system(), stereo_compose_system()};
   if (options.readback) systems.push_back(frame_readback_system());
+  profiling_ = options.profile;
+  if (profiling_) {
+    profile_origin_ = std::chrono::steady_clock::now();
+    gpu_timer_ = std::make_unique<gpu::GpuPassTimer>(profile_origin_);
+  }
   for (ecs::SystemDesc& d : systems) {
+    if (profiling_ && d.phase >= ecs::Phase::render) {
+      // Systems that issue GL commands: their GPU time is a pass of its own on the GPU track.
+      d.run = [run = std::move(d.run), name = d.name](ecs::World& w) {
+        gpu::GpuPassScope pass(name.c_str());
+        run(w);
+      };
+    }
     if (options.sync_timing) {
       d.run = [run = std::move(d.run)](ecs::World& w) {
         run(w);
@@ -192,8 +205,55 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
 
 void SceneRuntime::step() {
   shared_headless_context().make_current();
+  if (!profiling_) {
+    schedule_.run_frame(world_);
+    world_.resource<FrameClock>().frame += 1;
+    return;
+  }
+  // Last frame's GPU passes are read now, a frame late, so reading them rarely waits.
+  collect_gpu_spans();
+  gpu_timer_->begin_frame(frame());
+  struct ActiveTimer {  // the render passes report to this runtime's timer while it runs
+    explicit ActiveTimer(gpu::GpuPassTimer* t) { gpu::set_active_gpu_pass_timer(t); }
+    ~ActiveTimer() { gpu::set_active_gpu_pass_timer(nullptr); }
+  } active(gpu_timer_.get());
   schedule_.run_frame(world_);
+  record_cpu_spans();
   world_.resource<FrameClock>().frame += 1;
+}
+
+void SceneRuntime::record_cpu_spans() {
+  const auto us = [&](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double, std::micro>(t - profile_origin_).count();
+  };
+  const auto& stats = schedule_.stats();
+  if (stats.empty()) return;
+  const uint64_t f = frame();
+  const double frame_start = us(stats.front().last_start);
+  double frame_end = frame_start;
+  const size_t first = trace_.size();
+  trace_.push_back({"frame " + std::to_string(f), "frame", TraceTrack::cpu, frame_start, 0.0, f, -1});
+  for (const ecs::SystemStats& s : stats) {
+    const double start = us(s.last_start);
+    trace_.push_back({s.name, ecs::phase_name(s.phase), TraceTrack::cpu, start, s.last_ms * 1e3, f, -1});
+    frame_end = std::max(frame_end, start + s.last_ms * 1e3);
+  }
+  trace_[first].duration_us = frame_end - frame_start;
+}
+
+void SceneRuntime::collect_gpu_spans() {
+  for (gpu::GpuPassSample& s : gpu_timer_->collect())
+    trace_.push_back({std::move(s.name), "gpu", TraceTrack::gpu, s.start_us, s.duration_us, s.frame,
+                      s.fragments});
+}
+
+const std::vector<TraceSpan>& SceneRuntime::trace() {
+  if (profiling_) {
+    shared_headless_context().make_current();
+    glFinish();
+    collect_gpu_spans();
+  }
+  return trace_;
 }
 
 void SceneRuntime::simulate_step() {

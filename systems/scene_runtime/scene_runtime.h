@@ -11,15 +11,18 @@
 // Frame f shows the state after f simulation steps of dt = 1 / fps (after prewarm + f steps when
 // the scene asks for a prewarm: those steps run in the constructor). Both eyes of a stereo pair
 // render the same simulation state: simulation runs once per frame.
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "components/render_settings.h"
+#include "engine/core/trace_events.h"
 #include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
 #include "engine/gpu/gl_context.h"
+#include "engine/gpu/gpu_pass_timer.h"
 #include "engine/io/scene_description.h"
 
 namespace pyro {
@@ -42,6 +45,10 @@ struct RuntimeOptions {
   // Finish the GPU's work after every system, so each system's timing includes the GPU work it
   // issued (profiling; it removes CPU/GPU overlap, so frames get slower).
   bool sync_timing = false;
+  // Profiling session: every step() records one span per system (CPU time, from the schedule)
+  // and one per GPU pass (timer queries: each render, composite and output system, and the
+  // layers inside billboard_render with the fragments they drew), read one frame late.
+  bool profile = false;
 };
 
 // The process-wide headless context (made on first use).
@@ -58,6 +65,11 @@ class SceneRuntime {
   // `pyro render --frames A:B` uses it to reach frame A without drawing the frames before it.
   void simulate_step();
   uint64_t frame() const;
+
+  // The profiling session so far (options.profile): a "frame" span per step() on the CPU track
+  // with the systems' spans inside it, and the GPU passes on the GPU track. Waits for the GPU to
+  // finish the last frame's passes. Empty when not profiling.
+  const std::vector<TraceSpan>& trace();
 
   ecs::World& world() { return world_; }
   const ecs::Schedule& schedule() const { return schedule_; }
@@ -79,6 +91,13 @@ class SceneRuntime {
   SceneDescription scene_;
   ecs::World world_;
   ecs::Schedule schedule_;
+  // Profiling (options.profile): time 0 of the trace, the GPU timer, the spans so far.
+  std::chrono::steady_clock::time_point profile_origin_{};
+  std::unique_ptr<gpu::GpuPassTimer> gpu_timer_;
+  std::vector<TraceSpan> trace_;
+  bool profiling_ = false;
+  void record_cpu_spans();
+  void collect_gpu_spans();
 };
 
 }  // namespace pyro

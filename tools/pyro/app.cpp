@@ -10,6 +10,8 @@ void add_pyro_commands(CLI::App& app) {
   add_analyze_commands(app);
   add_bench_commands(app);
   add_import_command(app);
+  add_profile_command(app);
+  add_quality_command(app);
 }
 
 void stop_after_parsing(CLI::App& app) {

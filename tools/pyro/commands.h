@@ -10,6 +10,8 @@ void add_bench_commands(CLI::App& app);
 void add_import_command(CLI::App& app);
 // `pyro bake-flipbook` and `pyro analyze flipbook-pattern` (command_flipbook.cpp).
 void add_flipbook_commands(CLI::App& app, CLI::App& analyze);
+void add_profile_command(CLI::App& app);  // command_profile.cpp
+void add_quality_command(CLI::App& app);  // command_quality.cpp
 // Registered under `pyro analyze` by add_analyze_commands.
 void add_billboard_mode_analysis(CLI::App& analyze);
 // `pyro bench vdb`, registered by add_bench_commands.

@@ -1,0 +1,91 @@
+#include "systems/quality/quality_cache.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "engine/core/user_error.h"
+#include "engine/io/text_file.h"
+
+namespace pyro {
+
+uint64_t fnv1a64(const std::string& bytes, uint64_t hash) {
+  for (unsigned char c : bytes) {
+    hash ^= c;
+    hash *= 0x100000001b3ull;
+  }
+  return hash;
+}
+
+std::string quality_cache_path() {
+  namespace fs = std::filesystem;
+  if (const char* d = std::getenv("PYRO_CACHE_DIR"); d && *d) return (fs::path(d) / "quality.json").string();
+  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d)
+    return (fs::path(d) / "pyrocumulus" / "quality.json").string();
+  if (const char* d = std::getenv("HOME"); d && *d)
+    return (fs::path(d) / ".cache" / "pyrocumulus" / "quality.json").string();
+  return {};
+}
+
+std::string engine_build_identity() {
+  // The running executable's size and modification time: a rebuilt engine measures again.
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return "unknown build";
+  const auto size = std::filesystem::file_size(exe, ec);
+  if (ec) return "unknown build";
+  const auto time = std::filesystem::last_write_time(exe, ec);
+  if (ec) return "unknown build";
+  return exe.string() + "|" + std::to_string(size) + "|" +
+         std::to_string(time.time_since_epoch().count());
+}
+
+std::string quality_cache_key(const std::string& scene_bytes, int width, int height,
+                              double max_rmse, const std::string& renderer) {
+  char target[64];
+  std::snprintf(target, sizeof target, "%dx%d|%.9g|", width, height, max_rmse);
+  uint64_t h = fnv1a64(scene_bytes);
+  h = fnv1a64(target, h);
+  h = fnv1a64(renderer, h);
+  h = fnv1a64(engine_build_identity(), h);
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+namespace {
+nlohmann::json read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return nlohmann::json::object();
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
+  return j.is_object() ? j : nlohmann::json::object();
+}
+}  // namespace
+
+std::optional<nlohmann::json> read_quality_cache(const std::string& path, const std::string& key) {
+  if (path.empty()) return std::nullopt;
+  const nlohmann::json all = read_all(path);
+  const auto it = all.find(key);
+  if (it == all.end() || !it->is_object()) return std::nullopt;
+  return *it;
+}
+
+bool write_quality_cache(const std::string& path, const std::string& key, const nlohmann::json& entry) {
+  if (path.empty()) return false;
+  std::error_code ec;
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+  nlohmann::json all = read_all(path);
+  all[key] = entry;
+  try {
+    write_text_file(path, all.dump(1) + "\n");
+  } catch (const UserError&) {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace pyro

@@ -1,0 +1,148 @@
+// Profiling sessions end to end (issue 6, part 4): `pyro render --trace` writes Chrome trace
+// events with one span per system per frame nested in its frame, GPU passes on their own track
+// with the explosion's three layers inside billboard_render; `pyro profile --json` has every
+// system with consistent statistics and the explosion's known particle counts.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/json_output.h"
+#include "tests/support/test_paths.h"
+
+namespace pyro {
+namespace {
+
+using nlohmann::json;
+
+constexpr int kFrames = 3;
+
+TEST(PyroCliProfile, ExplosionTraceHasASpanPerSystemPerFrame) {
+  const auto dir = test::scratch_dir("profile_trace");
+  const std::string trace_file = (dir / "explosion.trace.json").string();
+  const auto r = test::run_pyro({"render", test::scene_path("explosion.json"), "--out",
+                                 (dir / "frames").string(), "--frames", std::to_string(kFrames),
+                                 "--width", "96", "--height", "96", "--trace", trace_file, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json summary = test::last_json_line(r.out);
+  EXPECT_EQ(summary["trace"], trace_file);
+  std::vector<std::string> systems;
+  std::map<std::string, std::string> phase;
+  for (const json& s : summary["systems"]) {
+    systems.push_back(s["name"]);
+    phase[s["name"]] = s["phase"];
+  }
+  ASSERT_GE(systems.size(), 10u);  // spawn .. composite of scene_runtime.h
+
+  std::ifstream in(trace_file);
+  ASSERT_TRUE(in) << trace_file;
+  const json trace = json::parse(in);  // throws (fails the test) unless valid JSON
+  ASSERT_TRUE(trace["traceEvents"].is_array());
+
+  struct Span {
+    double ts, dur;
+  };
+  std::map<int, Span> frames;                                 // CPU frame spans
+  std::map<std::pair<int, std::string>, std::vector<Span>> cpu, gpu;  // (frame, name)
+  for (const json& e : trace["traceEvents"]) {
+    if (e["ph"] == "M") continue;
+    ASSERT_EQ(e["ph"], "X");
+    const Span s{e["ts"].get<double>(), e["dur"].get<double>()};
+    EXPECT_GE(s.dur, 0.0) << e.dump();
+    const int f = e["args"]["frame"];
+    if (e["cat"] == "frame") {
+      EXPECT_EQ(e["tid"], 1);
+      EXPECT_FALSE(frames.count(f)) << "two frame spans for frame " << f;
+      frames[f] = s;
+    } else if (e["tid"] == 1) {
+      cpu[{f, e["name"]}].push_back(s);
+    } else {
+      EXPECT_EQ(e["tid"], 2) << e.dump();
+      gpu[{f, e["name"]}].push_back(s);
+    }
+  }
+  ASSERT_EQ(frames.size(), size_t(kFrames));
+  for (int f = 0; f < kFrames; ++f) {
+    ASSERT_TRUE(frames.count(f));
+    const Span frame = frames[f];
+    for (const std::string& name : systems) {
+      const auto& spans = cpu[std::make_pair(f, name)];
+      ASSERT_EQ(spans.size(), 1u) << name << " in frame " << f;
+      EXPECT_GE(spans[0].ts, frame.ts - 1e-3) << name;
+      EXPECT_LE(spans[0].ts + spans[0].dur, frame.ts + frame.dur + 1e-3) << name;
+      const std::string& p = phase[name];
+      if (p == "render" || p == "composite" || p == "output") {
+        EXPECT_EQ(gpu[std::make_pair(f, name)].size(), 1u) << "GPU span of " << name << " in frame " << f;
+      }
+    }
+    // The three media layers of the explosion, inside billboard_render on the GPU timeline.
+    const Span outer = gpu[std::make_pair(f, std::string("billboard_render"))].at(0);
+    for (const char* layer : {"dust layer", "smoke layer", "fire layer"}) {
+      const auto& spans = gpu[std::make_pair(f, std::string(layer))];
+      ASSERT_EQ(spans.size(), 1u) << layer << " in frame " << f;
+      EXPECT_GE(spans[0].ts, outer.ts - 1e-3) << layer;
+      EXPECT_LE(spans[0].ts + spans[0].dur, outer.ts + outer.dur + 1e-3) << layer;
+    }
+  }
+}
+
+TEST(PyroCliProfile, ProfileJsonHasEverySystemAndTheExplosionsParticles) {
+  const auto r = test::run_pyro({"profile", test::scene_path("explosion.json"), "--frames", "4",
+                                 "--width", "96", "--height", "96", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = test::last_json_line(r.out);
+  const std::set<std::string> expected = {"emitter", "particle_emitter", "animation",
+                                          "particle_animation", "camera_orbit", "sorting",
+                                          "camera", "mesh_render", "billboard_render", "composite"};
+  std::set<std::string> names;
+  for (const json& s : j["systems"]) {
+    names.insert(s["name"]);
+    const double mean = s["mean_ms"], median = s["median_ms"], p95 = s["p95_ms"],
+                 lo = s["min_ms"], hi = s["max_ms"];
+    EXPECT_EQ(s["samples"], 4) << s.dump();
+    EXPECT_LE(0.0, lo);
+    EXPECT_LE(lo, median) << s.dump();
+    EXPECT_LE(median, p95) << s.dump();
+    EXPECT_LE(p95, hi) << s.dump();
+    EXPECT_LE(lo, mean) << s.dump();
+    EXPECT_LE(mean, hi) << s.dump();
+  }
+  EXPECT_EQ(names, expected);
+  // content/scenes/explosion.json: bursts of 16 dust, 135 fire and 112 smoke, all alive.
+  EXPECT_EQ(j["particles"]["live"], 263);
+  std::map<std::string, int> by_source;
+  for (const json& s : j["particles"]["sources"]) by_source[s["name"]] = s["live"];
+  EXPECT_EQ(by_source["dust"], 16);
+  EXPECT_EQ(by_source["fire"], 135);
+  EXPECT_EQ(by_source["smoke"], 112);
+  int media = 0;
+  for (const auto& [medium, n] : j["particles"]["by_medium"].items()) media += n.get<int>();
+  EXPECT_EQ(media, 263);
+  // 16 float attributes, one byte of medium, a 32-bit id (engine/particles/particle_pool.h).
+  EXPECT_EQ(j["memory"]["bytes_per_particle_slot"], 16 * 4 + 1 + 4);
+  ASSERT_EQ(j["layers"].size(), 3u);
+  for (const json& l : j["layers"]) {
+    EXPECT_GT(l["fragments_mean"].get<double>(), 0.0) << l.dump();
+    // A layer at scale 1/2 of 96x96 has 48x48 texels; billboards overlap, so this bounds nothing
+    // from above except by the particle count.
+    EXPECT_LE(l["fragments_max"].get<double>(), 263.0 * 48 * 48) << l.dump();
+  }
+}
+
+TEST(PyroCliProfile, TraceIntoAMissingFolderIsRefusedBeforeRendering) {
+  const auto dir = test::scratch_dir("profile_bad_trace");
+  const auto out = dir / "frames";
+  const auto r = test::run_pyro({"render", test::scene_path("explosion.json"), "--out",
+                                 out.string(), "--frames", "1", "--width", "32", "--height", "32",
+                                 "--trace", (dir / "no_such_folder" / "t.json").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--trace"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace pyro
