@@ -47,8 +47,11 @@ gpu::HeadlessContext& shared_headless_context() {
 }
 
 SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& options)
-    : scene_(scene) {
-  shared_headless_context().make_current();
+    : scene_(scene),
+      make_current_(options.make_context_current
+                        ? options.make_context_current
+                        : std::function<void()>([] { shared_headless_context().make_current(); })) {
+  make_current_();
   // Every pass works in linear light: writes to sRGB targets are encoded and reads decoded.
   // (It changes nothing for float targets.)
   glEnable(GL_FRAMEBUFFER_SRGB);
@@ -187,9 +190,14 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
 }
 
 void SceneRuntime::step() {
-  shared_headless_context().make_current();
+  make_current_();
   schedule_.run_frame(world_);
   world_.resource<FrameClock>().frame += 1;
+}
+
+void SceneRuntime::redraw() {
+  make_current_();
+  schedule_.run_phases(world_, ecs::Phase::sort, ecs::Phase::output);
 }
 
 void SceneRuntime::simulate_step() {
@@ -209,9 +217,14 @@ const FrameImage& SceneRuntime::image() {
 
 const RenderSettings& SceneRuntime::settings() { return world_.resource<RenderSettings>(); }
 
-SceneRuntime::OutputImage SceneRuntime::read_output() {
+const gpu::RenderTarget& SceneRuntime::output_target() {
   const GpuFrame& frame = world_.resource<GpuFrame>();
-  const gpu::RenderTarget& out = frame.display ? *frame.display : *frame.output;
+  return frame.display ? *frame.display : *frame.output;
+}
+
+SceneRuntime::OutputImage SceneRuntime::read_output() {
+  make_current_();
+  const gpu::RenderTarget& out = output_target();
   return {out.width(), out.height(), out.read_rgba8()};
 }
 

@@ -11,6 +11,7 @@
 // Frame f shows the state after f simulation steps of dt = 1 / fps (after prewarm + f steps when
 // the scene asks for a prewarm: those steps run in the constructor). Both eyes of a stereo pair
 // render the same simulation state: simulation runs once per frame.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,7 @@
 #include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
 #include "engine/gpu/gl_context.h"
+#include "engine/gpu/render_target.h"
 #include "engine/io/scene_description.h"
 
 namespace pyro {
@@ -42,6 +44,10 @@ struct RuntimeOptions {
   // Finish the GPU's work after every system, so each system's timing includes the GPU work it
   // issued (profiling; it removes CPU/GPU overlap, so frames get slower).
   bool sync_timing = false;
+  // Makes the OpenGL context the runtime renders with current. Empty: the shared headless EGL
+  // context. The viewer (pyro view) passes its window's context, so that the output target
+  // lives where the window can blit it.
+  std::function<void()> make_context_current;
 };
 
 // The process-wide headless context (made on first use).
@@ -57,6 +63,10 @@ class SceneRuntime {
   // output), then advances the clock: the particle state afterwards is the one step() leaves.
   // `pyro render --frames A:B` uses it to reach frame A without drawing the frames before it.
   void simulate_step();
+  // Draws the current state again (sort, camera, render, composite and output phases) without
+  // running spawn or simulate and without advancing the clock: the viewer paused, with the
+  // camera moving.
+  void redraw();
   uint64_t frame() const;
 
   ecs::World& world() { return world_; }
@@ -71,6 +81,9 @@ class SceneRuntime {
     std::vector<uint8_t> rgba;
   };
   OutputImage read_output();
+  // The target holding the last composed frame as shown (the upscaled one when the frame scale
+  // is below 1): GL_SRGB8_ALPHA8, in the runtime's context.
+  const gpu::RenderTarget& output_target();
   // Writes the last composed frame as sRGB PNG: `stem`.png, or `stem`_left.png and
   // `stem`_right.png in left-right mode. Returns the paths written.
   std::vector<std::string> write_png(const std::string& stem);
@@ -79,6 +92,7 @@ class SceneRuntime {
   SceneDescription scene_;
   ecs::World world_;
   ecs::Schedule schedule_;
+  std::function<void()> make_current_;
 };
 
 }  // namespace pyro
