@@ -17,21 +17,24 @@ std::vector<std::string> wrap_text(const std::string& text, int columns) {
     std::string line;
     size_t i = 0;
     while (i < paragraph.size()) {
-      // The next word and the spaces before it.
-      size_t word_start = paragraph.find_first_not_of(' ', i);
+      // The next word and the spaces before it (kept between words on one line, dropped at a
+      // break).
+      const size_t word_start = paragraph.find_first_not_of(' ', i);
       if (word_start == std::string::npos) break;
-      size_t word_end = std::min(paragraph.find(' ', word_start), paragraph.size());
+      const size_t word_end = std::min(paragraph.find(' ', word_start), paragraph.size());
+      const size_t spaces = word_start - i;
       std::string word = paragraph.substr(word_start, word_end - word_start);
       i = word_end;
+      bool first_piece = true;
       while (!word.empty()) {
-        const size_t needed = line.empty() ? word.size() : line.size() + 1 + word.size();
-        if (needed <= width) {
-          if (!line.empty()) line += ' ';
-          line += word;
+        const size_t gap = line.empty() ? 0 : (first_piece ? spaces : 1);
+        if (line.size() + gap + word.size() <= width) {
+          line += std::string(gap, ' ') + word;
           word.clear();
         } else if (line.empty()) {  // a word longer than a line: cut it
           lines.push_back(word.substr(0, width));
           word.erase(0, width);
+          first_piece = false;
         } else {
           lines.push_back(line);
           line.clear();
