@@ -41,6 +41,8 @@ class WindowContext {
   void take_drag(double& dx, double& dy);
   double take_scroll();  // wheel steps, positive away from the user
   bool key_down(int key) const;
+  // Queues a press as if it came from the keyboard (pyro view --press-at).
+  void inject_key_press(const KeyPress& press) { presses_.push_back(press); }
 
   // "OpenGL 4.5 (Core Profile) Mesa 22.3.6 / llvmpipe (...)", for reports.
   const std::string& description() const { return description_; }

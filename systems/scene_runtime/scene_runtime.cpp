@@ -197,7 +197,13 @@ void SceneRuntime::step() {
 
 void SceneRuntime::redraw() {
   make_current_();
+  // The last frame drawn was the one before the clock's (step() advances it after drawing):
+  // draw at that frame again, so time-dependent shading (heat shimmer) stays put.
+  FrameClock& clock = world_.resource<FrameClock>();
+  const uint64_t next = clock.frame;
+  if (next > 0) clock.frame = next - 1;
   schedule_.run_phases(world_, ecs::Phase::sort, ecs::Phase::output);
+  world_.resource<FrameClock>().frame = next;
 }
 
 void SceneRuntime::simulate_step() {

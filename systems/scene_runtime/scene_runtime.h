@@ -63,9 +63,9 @@ class SceneRuntime {
   // output), then advances the clock: the particle state afterwards is the one step() leaves.
   // `pyro render --frames A:B` uses it to reach frame A without drawing the frames before it.
   void simulate_step();
-  // Draws the current state again (sort, camera, render, composite and output phases) without
-  // running spawn or simulate and without advancing the clock: the viewer paused, with the
-  // camera moving.
+  // Draws the last frame's state again (sort, camera, render, composite and output phases, at
+  // the last frame's time) without running spawn or simulate and without advancing the clock:
+  // the viewer paused, with the camera moving. After step(), redraw() gives the same image.
   void redraw();
   uint64_t frame() const;
 

@@ -143,6 +143,50 @@ TEST(PyroView, HotReloadReportsBrokenEditsAndAppliesTheGoodOne) {
   EXPECT_LT(shot.pixels[corner + 2], 120);
 }
 
+TEST(PyroView, KeysSwitchModesPauseStepAndQuit) {
+  if (!have_xvfb_run()) GTEST_SKIP() << "xvfb-run is not installed (tools/install-deps.sh installs xvfb)";
+  const fs::path dir = test::scratch_dir("keys");
+  const std::string scene = test::scene_path("explosion.json");
+  // Key presses at given frames, through the same path as the keyboard's: anaglyph (4), viewpoint
+  // billboards (B), layer scale 1/2 -> 1/4 (L), pause (Space) at frame 12, one step (N) at 15,
+  // fly mode (Tab). Steps run at frames 0-11 and 15: the simulation is at frame 13.
+  const auto r = test::run_pyro_with(
+      xvfb_launcher(),
+      {"view", scene, "--width", "96", "--height", "72", "--frames", "20", "--no-overlay",
+       "--press-at", "3:4", "--press-at", "6:B", "--press-at", "9:L", "--press-at", "12:SPACE",
+       "--press-at", "15:N", "--press-at", "16:TAB", "--screenshot", (dir / "shot.png").string(),
+       "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = test::last_json_line(r.out);
+  EXPECT_EQ(j["stereo"], "ANAGLYPH");
+  EXPECT_EQ(j["billboards"], "viewpoint");
+  EXPECT_EQ(j["layer_scale"], 0.25);
+  EXPECT_EQ(j["paused"], true);
+  EXPECT_EQ(j["camera"], "fly");
+  EXPECT_EQ(j["simulation_frame"], 13);
+  EXPECT_EQ(j["frames"], 20);
+  // The rebuilt runtimes carried the simulation on, and the paused frames redraw the last one:
+  // the screenshot is frame 12 (13 steps) rendered headless with the same settings.
+  const auto h = test::run_pyro({"render", scene, "--width", "96", "--height", "72", "--frames",
+                                 "12:12", "--stereo", "anaglyph", "--billboards", "viewpoint",
+                                 "--layer-scale", "0.25", "--out", (dir / "headless").string()});
+  ASSERT_EQ(h.exit_code, 0) << h.err;
+  const PngImage ref = read_png((dir / "headless" / "frame_0012.png").string());
+  const PngImage shot = read_png((dir / "shot.png").string());
+  ASSERT_EQ(ref.pixels.size(), shot.pixels.size());
+  int worst = 0;
+  for (size_t i = 0; i < ref.pixels.size(); ++i)
+    worst = std::max(worst, std::abs(int(ref.pixels[i]) - int(shot.pixels[i])));
+  EXPECT_LE(worst, 2);
+
+  // Esc quits at once, with exit status 0.
+  const auto q = test::run_pyro_with(
+      xvfb_launcher(), {"view", scene, "--width", "64", "--height", "48", "--frames", "1000",
+                        "--press-at", "5:ESC", "--json"});
+  ASSERT_EQ(q.exit_code, 0) << q.err;
+  EXPECT_EQ(test::last_json_line(q.out)["frames"], 5);
+}
+
 TEST(PyroView, WithoutADisplayExitsThreeAndSaysHowToRunIt) {
   const fs::path dir = test::scratch_dir("nodisplay");
   const auto r = test::run_pyro_with(
@@ -172,6 +216,10 @@ TEST(PyroView, ArgumentMistakesExitTwoBeforeAnyWindowOpens) {
                                        (dir / "no_such_folder" / "shot.png").string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--screenshot"), std::string::npos) << r.err;
+  r = test::run_pyro_with(no_display, {"view", scene, "--press-at", "3:F5"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--press-at"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("F5"), std::string::npos) << r.err;
   write_file(dir / "broken.json", "{\"name\": ");
   r = test::run_pyro_with(no_display, {"view", (dir / "broken.json").string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;

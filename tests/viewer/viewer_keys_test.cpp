@@ -43,6 +43,19 @@ TEST(ViewerKeys, FlyKeysAndModifiedKeysHaveNoPressAction) {
   EXPECT_TRUE(action_for_key(GLFW_KEY_R, GLFW_MOD_SHIFT));
 }
 
+TEST(ViewerKeys, KeyNamesForScriptedPresses) {
+  EXPECT_EQ(key_from_name("1"), GLFW_KEY_1);
+  EXPECT_EQ(key_from_name("7"), GLFW_KEY_7);
+  EXPECT_EQ(key_from_name("space"), GLFW_KEY_SPACE);
+  EXPECT_EQ(key_from_name("Esc"), GLFW_KEY_ESCAPE);
+  EXPECT_EQ(key_from_name("TAB"), GLFW_KEY_TAB);
+  EXPECT_EQ(key_from_name("b"), GLFW_KEY_B);
+  for (const char* bad : {"8", "0", "", "F5", "SPACEBAR", "W"}) EXPECT_FALSE(key_from_name(bad)) << bad;
+  // Every named key has an action.
+  for (const char* name : {"1", "2", "3", "4", "5", "6", "7", "B", "L", "N", "R", "O", "H", "SPACE", "TAB", "ESC"})
+    EXPECT_TRUE(action_for_key(*key_from_name(name), 0)) << name;
+}
+
 TEST(ViewerKeys, HeldKeysGiveTheMoveDirection) {
   HeldKeys k;
   EXPECT_EQ(move_direction(k), glm::vec3(0.0f));

@@ -51,6 +51,7 @@ struct ViewArgs {
   bool no_overlay = false;
   bool json = false;
   std::vector<std::string> replace_at;
+  std::vector<std::string> press_at;
   RuntimeOptions runtime;
 };
 
@@ -61,17 +62,49 @@ struct ScriptedEdit {
   std::string content;
 };
 
+uint64_t parse_frame_prefix(const std::string& spec, const char* option, const char* example,
+                            std::string& rest);
+
 std::vector<ScriptedEdit> parse_edits(const std::vector<std::string>& specs) {
   std::vector<ScriptedEdit> edits;
   for (const std::string& spec : specs) {
-    const size_t colon = spec.find(':');
-    const std::string number = colon == std::string::npos ? "" : spec.substr(0, colon);
-    if (number.empty() || number.find_first_not_of("0123456789") != std::string::npos ||
-        number.size() > 9 || colon + 1 >= spec.size())
-      throw UserError(spec, "--replace-at", "expected FRAME:FILE, e.g. 10:broken_scene.json");
-    edits.push_back({std::stoull(number), read_text_file(spec.substr(colon + 1))});
+    std::string file;
+    const uint64_t frame =
+        parse_frame_prefix(spec, "--replace-at", "FILE, e.g. 10:broken_scene.json", file);
+    edits.push_back({frame, read_text_file(file)});
   }
   return edits;
+}
+
+// --press-at FRAME:KEY: the key is pressed at that frame, through the same path as a real press.
+struct ScriptedPress {
+  uint64_t frame = 0;
+  int key = 0;
+};
+
+uint64_t parse_frame_prefix(const std::string& spec, const char* option, const char* example,
+                            std::string& rest) {
+  const size_t colon = spec.find(':');
+  const std::string number = colon == std::string::npos ? "" : spec.substr(0, colon);
+  if (number.empty() || number.find_first_not_of("0123456789") != std::string::npos ||
+      number.size() > 9 || colon + 1 >= spec.size())
+    throw UserError(spec, option, std::string("expected FRAME:") + example);
+  rest = spec.substr(colon + 1);
+  return std::stoull(number);
+}
+
+std::vector<ScriptedPress> parse_presses(const std::vector<std::string>& specs) {
+  std::vector<ScriptedPress> presses;
+  for (const std::string& spec : specs) {
+    std::string name;
+    const uint64_t frame = parse_frame_prefix(spec, "--press-at", "KEY, e.g. 10:SPACE", name);
+    const std::optional<int> key = key_from_name(name);
+    if (!key)
+      throw UserError(spec, "--press-at",
+                      "a key named 1-7, B, L, N, R, O, H, SPACE, TAB or ESC, found \"" + name + "\"");
+    presses.push_back({frame, *key});
+  }
+  return presses;
 }
 
 int output_width(int view_width, StereoMode mode) {
@@ -102,7 +135,8 @@ class Viewer {
   }
 
   // Runs until the window closes, Esc, or args.frames frames; returns the summary.
-  nlohmann::json run(const std::vector<ScriptedEdit>& edits) {
+  nlohmann::json run(const std::vector<ScriptedEdit>& edits,
+                     const std::vector<ScriptedPress>& presses) {
     using clock = std::chrono::steady_clock;
     const auto t0 = clock::now();
     auto last_overlay_refresh = t0;
@@ -110,6 +144,8 @@ class Viewer {
     while (!window_.should_close() && (args_.frames == 0 || frame_ < uint64_t(args_.frames))) {
       const auto frame_start = clock::now();
       window_.poll_events();
+      for (const ScriptedPress& p : presses)
+        if (p.frame == frame_) window_.inject_key_press({p.key, 0});
       handle_input(std::chrono::duration<float>(frame_start - previous_frame_).count());
       previous_frame_ = frame_start;
       if (quit_) break;
@@ -172,6 +208,10 @@ class Viewer {
             {"runtime_ms_per_frame", frame_ ? runtime_seconds * 1000.0 / double(frame_) : 0.0},
             {"window_ms_per_frame", frame_ ? window_seconds * 1000.0 / double(frame_) : 0.0},
             {"particles", particle_count()},
+            {"simulation_frame", runtime_->frame()},
+            {"paused", settings_.paused},
+            {"camera", controller_.mode() == CameraControl::orbit ? "orbit" : "fly"},
+            {"billboards", settings_.billboards == BillboardAlignment::viewplane ? "viewplane" : "viewpoint"},
             {"stereo", stereo_mode_label(settings_.stereo)},
             {"layer_scale", settings_.layer_scale},
             {"screenshot", args_.screenshot},
@@ -264,13 +304,27 @@ class Viewer {
     held.down = window_.key_down(GLFW_KEY_Q);
     held.fast = window_.key_down(GLFW_KEY_LEFT_SHIFT) || window_.key_down(GLFW_KEY_RIGHT_SHIFT);
     const glm::vec3 move = move_direction(held);
+    const bool camera_input = dx != 0 || dy != 0 || scroll != 0 || move != glm::vec3(0.0f);
+    if (camera_input && !camera_moved_) {
+      // The first touch takes the camera from where the scene put it (its scripted orbit may
+      // have moved it since the start), keeping the chosen mode and speed.
+      const CameraControl mode = controller_.mode();
+      world_camera_pose_into(controller_);
+      controller_.set_mode(mode);
+    }
     if (dx != 0 || dy != 0) controller_.drag(float(dx), float(dy));
     if (scroll != 0) controller_.scroll(float(scroll));
     if (move != glm::vec3(0.0f)) controller_.move(move * move_speed_factor(held), std::min(dt, 0.1f));
-    if (dx != 0 || dy != 0 || scroll != 0 || move != glm::vec3(0.0f)) {
+    if (camera_input) {
       camera_moved_ = true;
       camera_dirty_ = true;
     }
+  }
+
+  void world_camera_pose_into(ViewController& controller) {
+    runtime_->world().each<Camera>([&](Camera& c) {
+      if (c.position != c.target) controller = ViewController({c.position, c.target, c.up});
+    });
   }
 
   // Once the user has moved the camera it is theirs: the scene's scripted orbit stops.
@@ -382,6 +436,7 @@ class Viewer {
 void run_view(const ViewArgs& a) {
   // Everything the user can get wrong is checked before the window opens.
   const std::vector<ScriptedEdit> edits = parse_edits(a.replace_at);
+  const std::vector<ScriptedPress> presses = parse_presses(a.press_at);
   if (!a.screenshot.empty()) {
     namespace fs = std::filesystem;
     const fs::path parent = fs::path(a.screenshot).parent_path();
@@ -393,7 +448,7 @@ void run_view(const ViewArgs& a) {
   }
   SceneDescription scene = load_scene(a.scene);
   Viewer viewer(a, std::move(scene));
-  const nlohmann::json summary = viewer.run(edits);
+  const nlohmann::json summary = viewer.run(edits, presses);
   if (a.json) {
     std::printf("%s\n", summary.dump().c_str());
   } else {
@@ -424,6 +479,9 @@ void add_view_command(CLI::App& app) {
   cmd->add_option("--replace-at", args->replace_at,
                   "FRAME:FILE: at that frame, write FILE's content over the scene file (as an "
                   "editor would; the hot reload picks it up). Repeatable; for tests and demos");
+  cmd->add_option("--press-at", args->press_at,
+                  "FRAME:KEY: press KEY (1-7, B, L, N, R, O, H, SPACE, TAB, ESC) at that frame. "
+                  "Repeatable; for tests and demos");
   cmd->add_flag("--json", args->json, "Print a JSON summary as the last line");
   add_render_options(cmd, args->runtime);
   cmd->callback([args] { run_view(*args); });

@@ -31,6 +31,22 @@ std::optional<ViewerAction> action_for_key(int key, int mods) {
   }
 }
 
+std::optional<int> key_from_name(const std::string& name) {
+  std::string n;
+  for (char c : name) n += (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c;
+  if (n.size() == 1 && n[0] >= '1' && n[0] <= '7') return GLFW_KEY_1 + (n[0] - '1');
+  if (n == "B") return GLFW_KEY_B;
+  if (n == "L") return GLFW_KEY_L;
+  if (n == "N") return GLFW_KEY_N;
+  if (n == "R") return GLFW_KEY_R;
+  if (n == "O") return GLFW_KEY_O;
+  if (n == "H") return GLFW_KEY_H;
+  if (n == "SPACE") return GLFW_KEY_SPACE;
+  if (n == "TAB") return GLFW_KEY_TAB;
+  if (n == "ESC") return GLFW_KEY_ESCAPE;
+  return std::nullopt;
+}
+
 glm::vec3 move_direction(const HeldKeys& k) {
   return {float(k.right) - float(k.left), float(k.up) - float(k.down),
           float(k.forward) - float(k.back)};

@@ -38,6 +38,10 @@ const std::vector<StereoMode>& stereo_modes_by_key();
 // (the fly keys act while held, not on presses).
 std::optional<ViewerAction> action_for_key(int key, int mods);
 
+// A key by the name the README and --press-at use: "1".."7", "B", "L", "N", "R", "O", "H",
+// "SPACE", "TAB", "ESC" (any case); none for other names.
+std::optional<int> key_from_name(const std::string& name);
+
 // Which fly keys are held. move_direction(): x right (D − A), y up (E − Q), z forward (W − S);
 // each component −1, 0 or 1.
 struct HeldKeys {
