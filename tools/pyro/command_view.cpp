@@ -124,7 +124,7 @@ class Viewer {
                              args.runtime.stereo_mode),
                 args.height > 0 ? args.height : scene_.height,
                 "pyro view - " + args.scene + " - " + key_help_title()),
-        text_(2),
+        text_(window_.framebuffer_width() >= 800 ? 2 : 1),  // 5×7 glyphs doubled on wide windows
         controller_(pose_of(scene_)),
         reloader_(stamp_file(args.scene)) {
     settings_.stereo = args.runtime.stereo_mode;
@@ -177,6 +177,7 @@ class Viewer {
         shown_frame_ms_ = frame_ == 0 ? 0.0 : since * 1000.0 / double(frames_done);
         overlay_frame_mark_ = frame_ + 1;
         last_overlay_refresh = sim_end;
+        overlay_stale_ = true;
       }
       present();
       const bool last = args_.frames > 0 && frame_ + 1 == uint64_t(args_.frames);
@@ -251,6 +252,7 @@ class Viewer {
       if (!camera_moved_) controller_ = ViewController(pose_of(scene_));
       else camera_dirty_ = true;
       reloader_.succeeded(stamp, frame_);
+      overlay_stale_ = true;
       std::fprintf(stderr, "pyro view: frame %llu: reloaded %s\n", (unsigned long long)frame_,
                    args_.scene.c_str());
     } catch (const UserError& e) {
@@ -262,6 +264,7 @@ class Viewer {
 
   void reload_failed(const FileStamp& stamp, const std::string& message) {
     reloader_.failed(stamp, frame_, message);
+    overlay_stale_ = true;
     std::fprintf(stderr, "pyro view: frame %llu: reload failed, keeping the last good scene: %s\n",
                  (unsigned long long)frame_, message.c_str());
   }
@@ -287,6 +290,7 @@ class Viewer {
       if (!action) continue;
       const ViewerSettings previous = settings_;
       const ViewerEffect effect = apply_action(settings_, *action);
+      overlay_stale_ = true;
       if (effect.quit) quit_ = true;
       if (effect.toggle_camera_mode) controller_.toggle_mode();
       if (effect.reload_scene) reload_requested_ = true;
@@ -393,7 +397,11 @@ class Viewer {
                            y0 + h, GL_COLOR_BUFFER_BIT,
                            w == out.width() && h == out.height() ? GL_NEAREST : GL_LINEAR);
     if (settings_.overlay) {
-      text_.set_lines(overlay());
+      // The text is laid out again only when something in it changed (four times a second for
+      // the rates, or after a key or a reload), so a steady overlay costs one draw call.
+      if (overlay_stale_ || ww != overlay_width_) text_.set_lines(overlay());
+      overlay_stale_ = false;
+      overlay_width_ = ww;
       text_.draw(ww, wh);
     }
     glEnable(GL_FRAMEBUFFER_SRGB);
@@ -431,6 +439,8 @@ class Viewer {
   std::chrono::steady_clock::time_point previous_frame_ = std::chrono::steady_clock::now();
   bool camera_moved_ = false, camera_dirty_ = false;
   bool reload_requested_ = false, quit_ = false;
+  bool overlay_stale_ = true;
+  int overlay_width_ = 0;
 };
 
 void run_view(const ViewArgs& a) {
