@@ -84,6 +84,7 @@ void WindowContext::make_current() {
 }
 void WindowContext::swap_buffers() { glfwSwapBuffers(window_); }
 void WindowContext::poll_events() { glfwPollEvents(); }
+void WindowContext::wait_events(double seconds) { glfwWaitEventsTimeout(seconds); }
 bool WindowContext::should_close() const { return glfwWindowShouldClose(window_) != 0; }
 void WindowContext::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 void WindowContext::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }

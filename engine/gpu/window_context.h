@@ -28,6 +28,8 @@ class WindowContext {
   void swap_buffers();
   // Processes the window system's events (input, resize, close) without waiting.
   void poll_events();
+  // Waits up to `seconds` for an event, then processes what came (an idle viewer sleeps here).
+  void wait_events(double seconds);
   bool should_close() const;
   void request_close();
   void set_title(const std::string& title);

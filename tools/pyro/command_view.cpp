@@ -143,7 +143,10 @@ class Viewer {
     double runtime_seconds = 0, window_seconds = 0;
     while (!window_.should_close() && (args_.frames == 0 || frame_ < uint64_t(args_.frames))) {
       const auto frame_start = clock::now();
-      window_.poll_events();
+      // Paused with nothing to redraw: wait for input (up to 50 ms) instead of spinning.
+      const bool idle = settings_.paused && settings_.pending_steps == 0 && !needs_redraw_;
+      if (idle && args_.frames == 0) window_.wait_events(0.05);
+      else window_.poll_events();
       for (const ScriptedPress& p : presses)
         if (p.frame == frame_) window_.inject_key_press({p.key, 0});
       handle_input(std::chrono::duration<float>(frame_start - previous_frame_).count());
@@ -162,9 +165,10 @@ class Viewer {
       } else if (settings_.pending_steps > 0) {
         --settings_.pending_steps;
         runtime_->step();
-      } else {
-        runtime_->redraw();
+      } else if (needs_redraw_) {
+        runtime_->redraw();  // paused, but the camera moved or the runtime is new
       }
+      needs_redraw_ = false;
       const auto sim_end = clock::now();
       runtime_seconds += std::chrono::duration<double>(sim_end - sim_start).count();
       smooth_system_times();
@@ -248,6 +252,7 @@ class Viewer {
       SceneDescription scene = load_scene(args_.scene);
       std::unique_ptr<SceneRuntime> runtime = make_runtime(scene);
       runtime_ = std::move(runtime);
+      needs_redraw_ = true;
       scene_ = std::move(scene);
       if (!camera_moved_) controller_ = ViewController(pose_of(scene_));
       else camera_dirty_ = true;
@@ -276,6 +281,7 @@ class Viewer {
       std::unique_ptr<SceneRuntime> runtime = make_runtime(scene_);
       while (runtime->frame() < at) runtime->simulate_step();
       runtime_ = std::move(runtime);
+      needs_redraw_ = true;
       camera_dirty_ = true;
       notice_.clear();
     } catch (const std::exception& e) {
@@ -334,6 +340,7 @@ class Viewer {
   // Once the user has moved the camera it is theirs: the scene's scripted orbit stops.
   void apply_camera() {
     if (!camera_moved_ || !camera_dirty_) return;
+    needs_redraw_ = true;
     ecs::World& world = runtime_->world();
     std::vector<ecs::Entity> orbiting;
     world.each<CameraOrbit>([&](ecs::Entity e, CameraOrbit&) { orbiting.push_back(e); });
@@ -440,6 +447,7 @@ class Viewer {
   bool camera_moved_ = false, camera_dirty_ = false;
   bool reload_requested_ = false, quit_ = false;
   bool overlay_stale_ = true;
+  bool needs_redraw_ = true;  // paused frames draw only after a change
   int overlay_width_ = 0;
 };
 
