@@ -61,8 +61,13 @@ void Schedule::run_frame(World& world) {
 }
 
 void Schedule::run_phases_through(World& world, Phase last) {
+  run_phases(world, all_phases[0], last);
+}
+
+void Schedule::run_phases(World& world, Phase first, Phase last) {
   using clock = std::chrono::steady_clock;
   for (std::size_t i = 0; i < systems_.size(); ++i) {
+    if (systems_[i].phase < first) continue;
     if (systems_[i].phase > last) break;  // systems_ is sorted by phase
     const auto t0 = clock::now();
     systems_[i].run(world);

@@ -65,6 +65,11 @@ class Schedule {
   // advance the simulation without sorting or rendering), timing each like run_frame.
   void run_phases_through(World& world, Phase last);
 
+  // Runs, in order(), only the systems whose phase lies in [first, last] (e.g. Phase::sort to
+  // Phase::output: draw the current state again without advancing the simulation, as the
+  // viewer does while paused), timing each like run_frame.
+  void run_phases(World& world, Phase first, Phase last);
+
   // One entry per system, in run order.
   const std::vector<SystemStats>& stats() const { return stats_; }
 

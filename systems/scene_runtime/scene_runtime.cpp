@@ -50,8 +50,11 @@ gpu::HeadlessContext& shared_headless_context() {
 }
 
 SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& options)
-    : scene_(scene) {
-  shared_headless_context().make_current();
+    : scene_(scene),
+      make_current_(options.make_context_current
+                        ? options.make_context_current
+                        : std::function<void()>([] { shared_headless_context().make_current(); })) {
+  make_current_();
   // Every pass works in linear light: writes to sRGB targets are encoded and reads decoded.
   // (It changes nothing for float targets.)
   glEnable(GL_FRAMEBUFFER_SRGB);
@@ -204,7 +207,7 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
 }
 
 void SceneRuntime::step() {
-  shared_headless_context().make_current();
+  make_current_();
   if (!profiling_) {
     schedule_.run_frame(world_);
     world_.resource<FrameClock>().frame += 1;
@@ -249,11 +252,22 @@ void SceneRuntime::collect_gpu_spans() {
 
 const std::vector<TraceSpan>& SceneRuntime::trace() {
   if (profiling_) {
-    shared_headless_context().make_current();
+    make_current_();
     glFinish();
     collect_gpu_spans();
   }
   return trace_;
+}
+
+void SceneRuntime::redraw() {
+  make_current_();
+  // The last frame drawn was the one before the clock's (step() advances it after drawing):
+  // draw at that frame again, so time-dependent shading (heat shimmer) stays put.
+  FrameClock& clock = world_.resource<FrameClock>();
+  const uint64_t next = clock.frame;
+  if (next > 0) clock.frame = next - 1;
+  schedule_.run_phases(world_, ecs::Phase::sort, ecs::Phase::output);
+  world_.resource<FrameClock>().frame = next;
 }
 
 void SceneRuntime::simulate_step() {
@@ -273,9 +287,14 @@ const FrameImage& SceneRuntime::image() {
 
 const RenderSettings& SceneRuntime::settings() { return world_.resource<RenderSettings>(); }
 
-SceneRuntime::OutputImage SceneRuntime::read_output() {
+const gpu::RenderTarget& SceneRuntime::output_target() {
   const GpuFrame& frame = world_.resource<GpuFrame>();
-  const gpu::RenderTarget& out = frame.display ? *frame.display : *frame.output;
+  return frame.display ? *frame.display : *frame.output;
+}
+
+SceneRuntime::OutputImage SceneRuntime::read_output() {
+  make_current_();
+  const gpu::RenderTarget& out = output_target();
   return {out.width(), out.height(), out.read_rgba8()};
 }
 

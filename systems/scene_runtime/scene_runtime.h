@@ -12,6 +12,7 @@
 // the scene asks for a prewarm: those steps run in the constructor). Both eyes of a stereo pair
 // render the same simulation state: simulation runs once per frame.
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,6 +24,7 @@
 #include "engine/ecs/world.h"
 #include "engine/gpu/gl_context.h"
 #include "engine/gpu/gpu_pass_timer.h"
+#include "engine/gpu/render_target.h"
 #include "engine/io/scene_description.h"
 
 namespace pyro {
@@ -49,6 +51,10 @@ struct RuntimeOptions {
   // and one per GPU pass (timer queries: each render, composite and output system, and the
   // layers inside billboard_render with the fragments they drew), read one frame late.
   bool profile = false;
+  // Makes the OpenGL context the runtime renders with current. Empty: the shared headless EGL
+  // context. The viewer (pyro view) passes its window's context, so that the output target
+  // lives where the window can blit it.
+  std::function<void()> make_context_current;
 };
 
 // The process-wide headless context (made on first use).
@@ -64,6 +70,10 @@ class SceneRuntime {
   // output), then advances the clock: the particle state afterwards is the one step() leaves.
   // `pyro render --frames A:B` uses it to reach frame A without drawing the frames before it.
   void simulate_step();
+  // Draws the last frame's state again (sort, camera, render, composite and output phases, at
+  // the last frame's time) without running spawn or simulate and without advancing the clock:
+  // the viewer paused, with the camera moving. After step(), redraw() gives the same image.
+  void redraw();
   uint64_t frame() const;
 
   // The profiling session so far (options.profile): a "frame" span per step() on the CPU track
@@ -83,6 +93,9 @@ class SceneRuntime {
     std::vector<uint8_t> rgba;
   };
   OutputImage read_output();
+  // The target holding the last composed frame as shown (the upscaled one when the frame scale
+  // is below 1): GL_SRGB8_ALPHA8, in the runtime's context.
+  const gpu::RenderTarget& output_target();
   // Writes the last composed frame as sRGB PNG: `stem`.png, or `stem`_left.png and
   // `stem`_right.png in left-right mode. Returns the paths written.
   std::vector<std::string> write_png(const std::string& stem);
@@ -98,6 +111,7 @@ class SceneRuntime {
   bool profiling_ = false;
   void record_cpu_spans();
   void collect_gpu_spans();
+  std::function<void()> make_current_;
 };
 
 }  // namespace pyro

@@ -97,7 +97,9 @@ TEST(PyroCliProfile, ProfileJsonHasEverySystemAndTheExplosionsParticles) {
   const json j = test::last_json_line(r.out);
   const std::set<std::string> expected = {"emitter", "particle_emitter", "animation",
                                           "particle_animation", "camera_orbit", "sorting",
-                                          "camera", "mesh_render", "billboard_render", "composite"};
+                                          "camera", "mesh_render", "billboard_render", "composite",
+                                          // scheduled in every scene, idle without fires
+                                          "flipbook_orient", "flipbook_render"};
   std::set<std::string> names;
   for (const json& s : j["systems"]) {
     names.insert(s["name"]);

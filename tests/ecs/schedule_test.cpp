@@ -164,3 +164,26 @@ TEST(Schedule, ConflictsWithinAPhase) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Schedule, RunPhasesRunsOnlyTheSystemsInTheRange) {
+  std::vector<std::string> log;
+  Schedule s;
+  s.add(logger("emit", Phase::spawn, &log));
+  s.add(logger("move", Phase::simulate, &log));
+  s.add(logger("sort", Phase::sort, &log));
+  s.add(logger("draw", Phase::render, &log));
+  s.add(logger("write", Phase::output, &log));
+  World w;
+  s.run_phases(w, Phase::sort, Phase::output);
+  EXPECT_EQ(log, (std::vector<std::string>{"sort", "draw", "write"}));
+  log.clear();
+  s.run_phases(w, Phase::simulate, Phase::render);
+  EXPECT_EQ(log, (std::vector<std::string>{"move", "sort", "draw"}));
+  EXPECT_EQ(s.stats()[0].frames, 0u);  // emit never ran
+  EXPECT_EQ(s.stats()[2].frames, 2u);  // sort ran twice
+  EXPECT_EQ(s.frames(), 0u);           // only run_frame counts frames
+}
+
+}  // namespace

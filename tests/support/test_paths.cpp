@@ -22,8 +22,7 @@ std::filesystem::path scratch_dir(const std::string& name) {
   return dir;
 }
 
-namespace {
-std::string quote(const std::string& s) {
+std::string shell_quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) {
     if (c == '\'') q += "'\\''";
@@ -31,6 +30,9 @@ std::string quote(const std::string& s) {
   }
   return q + "'";
 }
+
+namespace {
+std::string quote(const std::string& s) { return shell_quote(s); }
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);
   std::stringstream s;
@@ -39,9 +41,11 @@ std::string slurp(const std::filesystem::path& p) {
 }
 }  // namespace
 
-CommandResult run_pyro(const std::vector<std::string>& args) {
+CommandResult run_pyro(const std::vector<std::string>& args) { return run_pyro_with("", args); }
+
+CommandResult run_pyro_with(const std::string& launcher, const std::vector<std::string>& args) {
   const auto dir = scratch_dir("cmd");
-  std::string cmd = quote(pyro_binary());
+  std::string cmd = launcher.empty() ? quote(pyro_binary()) : launcher + " " + quote(pyro_binary());
   for (const auto& a : args) cmd += " " + quote(a);
   cmd += " >" + quote((dir / "out.txt").string()) + " 2>" + quote((dir / "err.txt").string()) + " </dev/null";
   const int status = std::system(cmd.c_str());

@@ -21,5 +21,10 @@ struct CommandResult {
 };
 // Runs `pyro` with the given arguments (each shell-quoted here).
 CommandResult run_pyro(const std::vector<std::string>& args);
+// Runs `pyro` behind a launcher: `launcher` is shell text put before the binary as is (e.g.
+// "env -u DISPLAY" or an xvfb-run line); the arguments are quoted.
+CommandResult run_pyro_with(const std::string& launcher, const std::vector<std::string>& args);
+// Quotes `s` for the shell.
+std::string shell_quote(const std::string& s);
 
 }  // namespace pyro::test

@@ -5,7 +5,7 @@
 
 namespace pyro::cli {
 
-// Registers every subcommand (render, analyze, bench, import-vdb) on `app`.
+// Registers every subcommand (render, analyze, bench, import-vdb, view) on `app`.
 void add_pyro_commands(CLI::App& app);
 
 // Thrown by an app prepared with stop_after_parsing() once every argument has been parsed and

@@ -7,6 +7,7 @@
 
 #include "engine/ecs/world.h"
 #include "engine/particles/particle_pool.h"
+#include "tools/pyro/progress.h"
 
 namespace pyro {
 
@@ -128,11 +129,14 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
   // three see the same machine noise.
   run_ecs(), run_pool(), run_plain();
   std::vector<double> t_ecs, t_pool, t_plain;
+  cli::Progress progress("bench ecs", size_t(repeats));
   for (int r = 0; r < repeats; ++r) {
     t_ecs.push_back(time_ns(run_ecs));
     t_pool.push_back(time_ns(run_pool));
     t_plain.push_back(time_ns(run_plain));
+    progress.update(size_t(r) + 1);
   }
+  progress.finish();
 
   // Every method did the same arithmetic from the same inputs, so the sums agree bitwise
   // (unless FMA contraction, off under ISO -std=c++20, fuses only some loops); reading the

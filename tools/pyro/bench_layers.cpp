@@ -16,6 +16,7 @@
 #include "engine/ecs/world.h"
 #include "engine/io/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "tools/pyro/progress.h"
 
 namespace pyro::cli {
 
@@ -32,14 +33,18 @@ struct FrameTiming {
   double cpu_ms_per_frame = 0.0;  // all of the process's threads (llvmpipe's included)
 };
 
+// `progress` (may be null) advances by one per timed frame, from `done`.
 FrameTiming time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames,
-                        nlohmann::json* system_ms) {
+                        nlohmann::json* system_ms, Progress* progress = nullptr, size_t done = 0) {
   SceneRuntime runtime(scene, options);
   runtime.step();  // warm up: shaders, tables, targets
   glFinish();
   const double cpu0 = process_cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
-  for (int f = 0; f < frames; ++f) runtime.step();
+  for (int f = 0; f < frames; ++f) {
+    runtime.step();
+    if (progress) progress->update(done + size_t(f) + 1);
+  }
   glFinish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double cpu = process_cpu_seconds() - cpu0;
@@ -59,13 +64,19 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
   base.height_override = o.height;
   nlohmann::json scales = nlohmann::json::array();
   double full_fps = 0.0;
+  // Per scale: the timed frames, then the same frames again for the error.
+  Progress progress("bench layers", o.scales.size() * 2 * size_t(o.frames));
+  size_t done = 0;
   for (float scale : o.scales) {
     RuntimeOptions timed = base;
     timed.layer_scale = scale;
     timed.sync_timing = o.sync_timing;
     nlohmann::json system_ms = nlohmann::json::object();
-    const FrameTiming timing = time_frames(scene, timed, o.frames, &system_ms);
+    progress.stage(done, "scale " + std::to_string(scale).substr(0, 5) + ", timing");
+    const FrameTiming timing = time_frames(scene, timed, o.frames, &system_ms, &progress, done);
     const double fps = timing.fps;
+    done += size_t(o.frames);
+    progress.stage(done, "scale " + std::to_string(scale).substr(0, 5) + ", error");
     if (full_fps == 0.0) full_fps = fps;
     // Error: the same frames rendered at this scale and at full resolution, linear views.
     RuntimeOptions measured_options = timed, reference_options = base;
@@ -78,6 +89,7 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     for (int f = 0; f < o.frames; ++f) {
       measured.step();
       reference.step();
+      progress.update(++done);
       if ((f + 1) % every == 0 && samples < o.error_frames) {
         const double e = rgba_rmse(measured.image().rgba, reference.image().rgba);
         sum += e * e;
@@ -104,6 +116,8 @@ nlohmann::json bench_table1(const Table1BenchOptions& o) {
   const std::array<double, 5> paper_planar = {370, 80, 60, 45, 40};
   const std::array<double, 5> paper_spherical = {370, 70, 56, 40, 35};
   nlohmann::json rows = nlohmann::json::array();
+  Progress progress("bench table1", counts.size() * 2 * size_t(o.frames));
+  size_t done = 0;
   for (size_t i = 0; i < counts.size(); ++i) {
     SceneDescription s = scene;
     const double k = base_count ? static_cast<double>(counts[i]) / base_count : 0.0;
@@ -134,7 +148,11 @@ nlohmann::json bench_table1(const Table1BenchOptions& o) {
       probe.step();
       size_t live = 0;
       probe.world().each<ParticleSet>([&](ecs::Entity, ParticleSet& set) { live += set.pool.size(); });
-      row[shape == ParticleShape::planar ? "planar_fps" : "spherical_fps"] = time_frames(s, ro, o.frames, nullptr).fps;
+      progress.stage(done, std::to_string(counts[i]) + " particles, " +
+                               (shape == ParticleShape::planar ? "planar" : "spherical"));
+      row[shape == ParticleShape::planar ? "planar_fps" : "spherical_fps"] =
+          time_frames(s, ro, o.frames, nullptr, &progress, done).fps;
+      done += size_t(o.frames);
       row["live_particles"] = live;
     }
     rows.push_back(row);

@@ -12,6 +12,8 @@
 #include "engine/io/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 
+#include "tools/pyro/progress.h"
+
 namespace pyro::cli {
 
 namespace {
@@ -62,6 +64,7 @@ nlohmann::json bench_soak(const SoakBenchOptions& o) {
   uint64_t rss_start = 0, rss_max = 0;
   const double dt = 1.0 / scene.frames_per_second;
   long rearms = 0;
+  Progress progress("bench soak", size_t(o.frames));
   const auto t_start = clock::now();
   for (long f = 0; f < o.frames; ++f) {
     if (o.rearm_every > 0.0 && f > 0 &&
@@ -80,7 +83,9 @@ nlohmann::json bench_soak(const SoakBenchOptions& o) {
     if (bad && first_bad < 0) first_bad = f;
     non_finite += bad;
     if ((f & 1023) == 0) rss_max = std::max(rss_max, resident_bytes());
+    progress.update(size_t(f) + 1);
   }
+  progress.finish();
   const double seconds = std::chrono::duration<double>(clock::now() - t_start).count();
   const uint64_t rss_end = resident_bytes();
   uint64_t spawned = 0;

@@ -22,6 +22,7 @@
 #include "engine/math/billboard_alignment.h"
 #include "tools/pyro/alignment_figures.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/progress.h"
 #include "tools/pyro/external_tool_error.h"
 
 namespace pyro::cli {
@@ -179,7 +180,11 @@ void run_surfaces(const ProjectionErrorArgs& a) {
   params.grid = a.grid;
   // Every figure is computed (and every mistake found) before anything is written.
   std::vector<AlignmentFigure> figures;
-  for (const std::string& name : names) figures.push_back(make_alignment_figure(name, params));
+  Progress progress("analyze projection-error", names.size() + (a.csv_only ? 0 : 1));
+  for (const std::string& name : names) {
+    progress.stage(figures.size(), name);
+    figures.push_back(make_alignment_figure(name, params));
+  }
 
   const fs::path out_dir(a.out);
   std::error_code ec;
@@ -210,7 +215,12 @@ void run_surfaces(const ProjectionErrorArgs& a) {
   }
   const fs::path manifest_path = out_dir / kManifestName;
   write_text_file(manifest_path.string(), manifest.dump(2) + "\n");
-  if (!a.csv_only) draw_charts(manifest_path, out_dir);
+  if (!a.csv_only) {
+    progress.stage(figures.size(), "charts");
+    draw_charts(manifest_path, out_dir);
+  }
+  progress.update(names.size() + (a.csv_only ? 0 : 1));
+  progress.finish();
   report["manifest"] = manifest_path.string();
   report["png"] = !a.csv_only;
   if (a.json) {

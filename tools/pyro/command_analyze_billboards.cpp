@@ -17,6 +17,7 @@
 #include "engine/math/image_error.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/progress.h"
 
 namespace pyro::cli {
 
@@ -36,7 +37,9 @@ struct ModeRun {
   double ms_per_frame;
 };
 
-ModeRun run_mode(const SceneDescription& scene, const Args& a, BillboardAlignment alignment) {
+// `progress` advances by frames + 2 (the warm-up, the timed frames, the imaged frame) from `done`.
+ModeRun run_mode(const SceneDescription& scene, const Args& a, BillboardAlignment alignment,
+                 Progress& progress, size_t done) {
   RuntimeOptions o;
   o.stereo_mode = StereoMode::left_right;
   o.alignment = alignment;
@@ -47,24 +50,32 @@ ModeRun run_mode(const SceneDescription& scene, const Args& a, BillboardAlignmen
   SceneRuntime timed(scene, o);
   timed.step();
   glFinish();
+  progress.update(++done);
   std::vector<double> ms;
   for (int f = 0; f < a.frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     timed.step();
     glFinish();
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    progress.update(++done);
   }
   std::sort(ms.begin(), ms.end());
   o.readback = true;
   SceneRuntime imaged(scene, o);
   imaged.step();
+  progress.update(++done);
   return {imaged.image(), ms[ms.size() / 2]};
 }
 
 void run(const Args& a) {
   const SceneDescription scene = load_scene(a.scene);
-  const ModeRun plane = run_mode(scene, a, BillboardAlignment::viewplane);
-  const ModeRun point = run_mode(scene, a, BillboardAlignment::viewpoint);
+  const size_t per_mode = size_t(a.frames) + 2;
+  Progress progress("analyze billboard-modes", 2 * per_mode);
+  progress.stage(0, "viewplane");
+  const ModeRun plane = run_mode(scene, a, BillboardAlignment::viewplane, progress, 0);
+  progress.stage(per_mode, "viewpoint");
+  const ModeRun point = run_mode(scene, a, BillboardAlignment::viewpoint, progress, per_mode);
+  progress.finish();
   const nlohmann::json out = {
       {"scene", scene.file},
       {"width", plane.image.width},

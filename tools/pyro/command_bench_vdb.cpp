@@ -22,6 +22,7 @@
 #include "systems/reference/volume_reference.h"
 #include "systems/scene_runtime/particle_snapshot.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/progress.h"
 #include "tools/pyro/vdb_view.h"
 
 namespace pyro::cli {
@@ -47,6 +48,8 @@ std::string vec(const glm::dvec3& v) {
 }
 
 void run_bench_vdb(const BenchVdbArgs& a) {
+  Progress progress("bench vdb", 5);
+  progress.stage(0, "read");
   std::string note;
   const DenseGrid grid = read_vdb_grid(a.file, {a.grid, a.grid_index}, &note);
   if (!note.empty()) std::fprintf(stderr, "pyro bench vdb: %s: %s\n", a.file.c_str(), note.c_str());
@@ -54,6 +57,7 @@ void run_bench_vdb(const BenchVdbArgs& a) {
   CloudImportOptions opt;
   opt.medium = default_medium(grid);
   opt.tau_tolerance = tau_tolerance_for_error(a.error);
+  progress.stage(1, "import");
   auto t = std::chrono::steady_clock::now();
   CloudImportReport rep;
   const std::vector<GaussianParticle> particles = import_cloud(grid, opt, &rep);
@@ -62,8 +66,10 @@ void run_bench_vdb(const BenchVdbArgs& a) {
   const CameraDescription cam = framing_camera(grid);
   const CameraFrame frame = camera_frame(cam, a.width, a.height);
   SnapshotTiming timing;
+  progress.stage(2, "splats");
   const RgbImage splat = render_particle_snapshot(particles, cam, a.width, a.height,
                                                   glm::vec3(opt.medium.background), 3, &timing);
+  progress.stage(3, "reference");
   t = std::chrono::steady_clock::now();
   const std::vector<float> light = light_optical_depth(grid, opt.medium);
   const RgbImage ref = render_volume_reference(grid, light, frame, opt.medium);
@@ -88,8 +94,11 @@ void run_bench_vdb(const BenchVdbArgs& a) {
       vec(glm::dvec3(absorb)) + " -scatter " + vec(glm::dvec3(scatter)) + " -light " +
       vec(to_light) + "," + vec(opt.medium.light_color) + " -gain 0 -step 0.5 -shadowstep 1" +
       " -cpus 0 > /dev/null 2>&1";
+  progress.stage(4, "vdb_render");
   t = std::chrono::steady_clock::now();
   const int status = std::system(cmd.c_str());
+  progress.update(5);
+  progress.finish();
   const double vdb_render_seconds = seconds_since(t);
   std::error_code ec;
   std::filesystem::remove(tmp, ec);

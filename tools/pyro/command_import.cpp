@@ -5,6 +5,7 @@
 // reference render of the grid (systems/reference) from a camera framing the grid, and only then
 // writes the particle file (engine/io/particle_file.h; temporary name, then renamed).
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@
 #include "systems/reference/volume_reference.h"
 #include "systems/scene_runtime/particle_snapshot.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/progress.h"
 #include "tools/pyro/vdb_view.h"
 
 namespace pyro::cli {
@@ -63,6 +65,9 @@ void run_import(const ImportArgs& a) {
   if (a.out.empty()) throw UserError("command line", "--out", "the particle file to write (.pyrop)");
   if (!(a.error > 0.0 && a.error <= 1.0))
     throw UserError("", "--error", "a number in (0, 1], found " + std::to_string(a.error));
+  // Stages: read, import, light, reference image, splat image.
+  Progress progress("import-vdb " + std::filesystem::path(a.file).filename().string(), 5);
+  progress.stage(0, "read");
   const auto t0 = std::chrono::steady_clock::now();
   std::string note;
   const DenseGrid grid = read_vdb_grid(a.file, {a.grid, a.grid_index}, &note);
@@ -78,6 +83,7 @@ void run_import(const ImportArgs& a) {
   CloudImportOptions opt;
   opt.medium = default_medium(grid);
   opt.tau_tolerance = tau_tolerance_for_error(a.error);
+  progress.stage(1, "import");
   const auto t1 = std::chrono::steady_clock::now();
   CloudImportReport rep;
   const std::vector<GaussianParticle> particles = import_cloud(grid, opt, &rep);
@@ -88,12 +94,17 @@ void run_import(const ImportArgs& a) {
   if (!grid.empty()) {
     const CameraDescription cam = framing_camera(grid);
     const CameraFrame frame = camera_frame(cam, a.width, a.height);
+    progress.stage(2, "light");
     const std::vector<float> light = light_optical_depth(grid, opt.medium);
+    progress.stage(3, "reference image");
     const RgbImage ref = render_volume_reference(grid, light, frame, opt.medium);
+    progress.stage(4, "splat image");
     const RgbImage splat = render_particle_snapshot(particles, cam, a.width, a.height,
                                                     glm::vec3(opt.medium.background));
     rmse = image_rmse(ref, splat);
   }
+  progress.update(5);
+  progress.finish();
   nlohmann::json meta = {{"source", a.file},      {"grid", grid.name},
                          {"grid_index", grid.file_index}, {"error_target", a.error},
                          {"extinction", opt.medium.extinction}, {"rmse", rmse},
