@@ -13,7 +13,7 @@ namespace pyro {
 struct FrameFade {
   float side = 0.2f;  // fraction of the width over which each side rises from 0 to 1
   float top = 0.15f;  // fraction of the height over which the top rises
-  float base = 0.06f; // fraction of the height over which the bottom rises
+  float base = 0.18f; // fraction of the height over which the bottom rises
 };
 
 // The window at pixel (x, y), y = 0 the top row: the product of s(x / (side W)),

@@ -53,8 +53,8 @@ TEST(FlipbookFrameFade, AppliesTheWindowInLinearLight) {
       for (int c = 0; c < 3; ++c)
         ASSERT_EQ(rgb[(static_cast<size_t>(y) * w + x) * 3 + c], expected) << x << "," << y;
     }
-  // Half weight in linear light is not half the byte: sRGB 200 -> 147.
-  EXPECT_EQ(rgb[(25 * static_cast<size_t>(w) + 5) * 3], 147);
+  // Half weight in linear light is not half the byte: sRGB 200 -> 146 (0.578 / 2 = 0.289 linear), not 100.
+  EXPECT_EQ(rgb[(25 * static_cast<size_t>(w) + 5) * 3], 146);
   std::vector<uint8_t> wrong(5);
   EXPECT_THROW(apply_frame_fade(f, w, h, wrong), std::invalid_argument);
 }

@@ -545,8 +545,8 @@ TEST(SceneLoader, FireBlackbodyTableKeys) {
   EXPECT_FLOAT_EQ(s.render.fire_t_max, 3300.0f);
   EXPECT_FLOAT_EQ(s.render.fire_emission, 9.0f);
   EXPECT_FLOAT_EQ(s.render.fire_detail_range, 250.0f);
-  expect_error(R"({"render": {"fire": {"t_min": 3000}}})", "/render/fire/t_max",
-               {"expected \"t_max\" greater than \"t_min\" (3000"});
+  expect_error(R"({"render": {"fire": {"t_min": 3500}}})", "/render/fire/t_max",
+               {"expected \"t_max\" greater than \"t_min\" (3500 K), found 3200"});
   expect_error(R"({"render": {"fire": {"t_min": 0}}})", "/render/fire/t_min", {"expected a number in"});
   expect_error(R"({"render": {"fire": {"emission": -1}}})", "/render/fire/emission",
                {"expected a number in"});
