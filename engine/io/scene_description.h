@@ -51,6 +51,14 @@ struct RenderDescription {
   // composited over the opaque scene: 1, 0.5, 0.25 or 0.125.
   float layer_scale = 1.0f;
   ParticleShading shading = ParticleShading::color;
+  // Fire under explosion shading (components/explosion_shading.h): the black-body table's
+  // temperature range (T outside it clamps to its ends), the emission scale and the detail
+  // noise's temperature range. Defaults are the paper's 2500-3200 K; flames whose tips cool to
+  // 1000-1500 K need a wider table to turn red and dark.
+  float fire_t_min = 2500.0f;
+  float fire_t_max = 3200.0f;
+  float fire_emission = 6.0f;
+  float fire_detail_range = 500.0f;
 };
 
 struct LightDescription {

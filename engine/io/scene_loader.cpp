@@ -626,6 +626,15 @@ void read_render(ObjectReader& r, RenderDescription& d) {
       d.layer_scale != 0.125f) {
     r.at("layer_scale").fail("expected one of 1, 0.5, 0.25, 0.125, found " + format_float(d.layer_scale));
   }
+  r.object("fire", [&](ObjectReader& f) {
+    f.number("t_min", kPositive, d.fire_t_min);
+    f.number("t_max", kPositive, d.fire_t_max);
+    f.number("emission", kNonNegative, d.fire_emission);
+    f.number("detail_range", kNonNegative, d.fire_detail_range);
+    if (!(d.fire_t_max > d.fire_t_min))
+      f.at("t_max").fail("expected \"t_max\" greater than \"t_min\" (" + format_float(d.fire_t_min) +
+                         " K), found " + format_float(d.fire_t_max));
+  });
 }
 
 // Volume files: a path ending in .vdb or .pyrop (any case).

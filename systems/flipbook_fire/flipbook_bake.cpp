@@ -67,6 +67,7 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
       for (size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = a[i * 4 + c];
     }
+    apply_frame_fade(options.fade, width, height, rgb);
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", f);
     write_png((staging.path() / name).string(), width, height, 3, rgb);

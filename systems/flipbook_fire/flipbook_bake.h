@@ -2,13 +2,15 @@
 // Flames from anywhere (issue 7): no video ships with the engine, so a flipbook can be baked
 // from its own black-body fire simulation. A small scene (content/scenes/flipbook_fire.json: a
 // fire column on black, seen from the side) is rendered mono into `frames` PNG frames
-// (frame_0000.png, ...; cross-faded over the wrap so that the loop does not jump) plus
+// (frame_0000.png, ...; cross-faded over the wrap so that the loop does not jump; borders
+// faded to black, Rose's chapter 4 preparation) plus
 // `flipbook.json` (frame count, size, source scene), all written into
 // a staging folder and moved into place only when complete (engine/io/staging_folder.h).
 #include <string>
 #include <vector>
 
 #include "engine/io/scene_description.h"
+#include "systems/flipbook_fire/flipbook_frame_fade.h"
 
 namespace pyro {
 
@@ -21,6 +23,9 @@ struct FlipbookBakeOptions {
   // (loop_blend + 1) on frame j, so that the last frame runs on into frame 0 as into frame
   // `frames` (a cross-fade over the wrap). 0: no blending (the loop jumps). < frames.
   int loop_blend = 8;
+  // Preparation of every written frame (after the cross-fade): sides, top and base faded to
+  // black (systems/flipbook_fire/flipbook_frame_fade.h).
+  FrameFade fade;
 };
 
 struct FlipbookBakeResult {

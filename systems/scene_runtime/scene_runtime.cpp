@@ -10,6 +10,7 @@
 #include "components/camera.h"
 #include "components/camera_orbit.h"
 #include "components/emitter.h"
+#include "components/explosion_shading.h"
 #include "components/particle_dynamics.h"
 #include "components/simulation_environment.h"
 #include "components/cloud_volume.h"
@@ -73,6 +74,12 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   settings.stereo_mode = options.stereo_mode;
   settings.shading = options.shading.value_or(scene.render.shading);
   world_.set_resource<RenderSettings>(settings);
+  ExplosionShading shading;
+  shading.fire_t_min = scene.render.fire_t_min;
+  shading.fire_t_max = scene.render.fire_t_max;
+  shading.fire_emission = scene.render.fire_emission;
+  shading.fire_detail_range = scene.render.fire_detail_range;
+  world_.set_resource<ExplosionShading>(shading);
 
   // Budgets (engine/io/scene_budget.h): refused here, before any pool or target is allocated,
   // and again once the volumes' particles are known.

@@ -531,5 +531,27 @@ TEST(SceneLoader, RenderAndStereoSettings) {
                {"expected a number in"});
 }
 
+TEST(SceneLoader, FireBlackbodyTableKeys) {
+  // Defaults: the paper's 2500-3200 K (components/explosion_shading.h's).
+  const SceneDescription d = parse_scene("{}", "r.json");
+  EXPECT_FLOAT_EQ(d.render.fire_t_min, 2500.0f);
+  EXPECT_FLOAT_EQ(d.render.fire_t_max, 3200.0f);
+  EXPECT_FLOAT_EQ(d.render.fire_emission, 6.0f);
+  EXPECT_FLOAT_EQ(d.render.fire_detail_range, 500.0f);
+  const SceneDescription s = parse_scene(
+      R"({"render": {"fire": {"t_min": 1000, "t_max": 3300, "emission": 9, "detail_range": 250}}})",
+      "r.json");
+  EXPECT_FLOAT_EQ(s.render.fire_t_min, 1000.0f);
+  EXPECT_FLOAT_EQ(s.render.fire_t_max, 3300.0f);
+  EXPECT_FLOAT_EQ(s.render.fire_emission, 9.0f);
+  EXPECT_FLOAT_EQ(s.render.fire_detail_range, 250.0f);
+  expect_error(R"({"render": {"fire": {"t_min": 3500}}})", "/render/fire/t_max",
+               {"expected \"t_max\" greater than \"t_min\" (3500 K), found 3200"});
+  expect_error(R"({"render": {"fire": {"t_min": 0}}})", "/render/fire/t_min", {"expected a number in"});
+  expect_error(R"({"render": {"fire": {"emission": -1}}})", "/render/fire/emission",
+               {"expected a number in"});
+  expect_error(R"({"render": {"fire": {"t_mn": 1000}}})", "/render/fire/t_mn", {"did you mean \"t_min\""});
+}
+
 }  // namespace
 }  // namespace pyro
