@@ -10,6 +10,7 @@ void add_pyro_commands(CLI::App& app) {
   add_analyze_commands(app);
   add_bench_commands(app);
   add_import_command(app);
+  add_chart_command(app);
 }
 
 void stop_after_parsing(CLI::App& app) {

@@ -14,15 +14,23 @@
 #include "components/particle_set.h"
 #include "engine/ecs/world.h"
 #include "engine/io/scene_loader.h"
+#include "systems/composite/compositor.h"
 #include "systems/scene_runtime/scene_runtime.h"
 
 namespace pyro::cli {
 
 namespace {
 
+void choose_upsampling(SceneRuntime& runtime, bool depth_aware) {
+  MediaComposition m;
+  m.depth_aware = depth_aware;
+  runtime.world().set_resource<MediaComposition>(m);
+}
+
 double time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames,
-                   nlohmann::json* system_ms) {
+                   nlohmann::json* system_ms, bool depth_aware = true) {
   SceneRuntime runtime(scene, options);
+  choose_upsampling(runtime, depth_aware);
   runtime.step();  // warm up: shaders, tables, targets
   glFinish();
   const auto t0 = std::chrono::steady_clock::now();
@@ -51,13 +59,14 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     timed.layer_scale = scale;
     timed.sync_timing = o.sync_timing;
     nlohmann::json system_ms = nlohmann::json::object();
-    const double fps = time_frames(scene, timed, o.frames, &system_ms);
+    const double fps = time_frames(scene, timed, o.frames, &system_ms, o.depth_aware);
     if (scale == 1.0f) full_fps = fps;
     // Error: the same frames rendered at this scale and at full resolution, linear views.
     RuntimeOptions measured_options = timed, reference_options = base;
     measured_options.readback = reference_options.readback = true;
     reference_options.layer_scale = 1.0f;
     SceneRuntime measured(scene, measured_options), reference(scene, reference_options);
+    choose_upsampling(measured, o.depth_aware);
     double sum = 0.0;
     int samples = 0;
     const int every = std::max(1, o.frames / std::max(1, o.error_frames));
@@ -77,7 +86,8 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
                       {"system_ms", system_ms}});
   }
   return {{"scene", o.scene}, {"width", o.width}, {"height", o.height}, {"frames", o.frames},
-          {"error_frames", o.error_frames}, {"scales", scales}};
+          {"error_frames", o.error_frames},
+          {"upsampling", o.depth_aware ? "depth-aware" : "bilinear"}, {"scales", scales}};
 }
 
 nlohmann::json bench_table1(const Table1BenchOptions& o) {

@@ -8,6 +8,7 @@ void add_render_command(CLI::App& app);
 void add_analyze_commands(CLI::App& app);
 void add_bench_commands(CLI::App& app);
 void add_import_command(CLI::App& app);
+void add_chart_command(CLI::App& app);  // command_chart.cpp
 // Registered under `pyro analyze` by add_analyze_commands.
 void add_billboard_mode_analysis(CLI::App& analyze);
 // `pyro bench vdb`, registered by add_bench_commands.
