@@ -14,7 +14,7 @@ namespace {
 TEST(ChartLayerResolution, ErrorIsZeroAtFullResolutionAndGrowsAsLayersShrink) {
   LayerResolutionChartOptions o;
   o.width = o.height = 64;
-  o.frames = 8;
+  o.frames = 4;
   o.error_frames = 2;
   const ChartTable t = chart_layer_resolution(o);
   ASSERT_EQ(t.rows.size(), 8u);  // 4 scales x 2 methods

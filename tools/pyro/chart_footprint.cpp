@@ -1,6 +1,7 @@
 // pyro chart footprint: the footprint table (Johnson & McAllister 2005, eqs 1, 3, 4) for every
 // table size x quadrature rule x number of intervals.
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -66,6 +67,15 @@ ChartTable chart_footprint(const FootprintChartOptions& o) {
     }
   }
   t.summary["quadrature_order"] = orders;
+  // Each rule's measured order of convergence, in the title so the chart shows it.
+  std::string order_text;
+  for (const auto& [rule, order] : orders.items()) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%s%s %.2f", order_text.empty() ? "" : ", ", rule.c_str(),
+                  order.get<double>());
+    order_text += buf;
+  }
+  if (!order_text.empty()) t.title += " (quadrature order: " + order_text + ")";
   mark_pareto_front(t);
   return t;
 }
