@@ -46,5 +46,13 @@ TEST(PyroChartCli, UnknownChartExitsTwoAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
+TEST(PyroChartCli, AnOptionTheChartDoesNotUseIsRefused) {
+  const auto dir = scratch_dir("chart_unused_option");
+  const CommandResult r = run_pyro({"chart", "footprint", "--frames", "3", "--out", (dir / "out").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--frames"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+}
+
 }  // namespace
 }  // namespace pyro::test

@@ -34,7 +34,21 @@ void override_size(Options& o, const ChartArgs& a) {
   if (a.height > 0) o.height = a.height;
 }
 
+// An option the chart does not use is a mistake, not something to ignore silently.
+void refuse_unused(const ChartArgs& a, bool size_used, bool frames_used) {
+  auto refuse = [&](const char* option) {
+    throw UserError("command line", option, "not used by the " + a.name + " chart (" +
+                                                (size_used ? "it takes --width and --height" : "it has no image size") +
+                                                (frames_used ? " and --frames)" : ", no --frames)"));
+  };
+  if (!size_used && a.width > 0) refuse("--width");
+  if (!size_used && a.height > 0) refuse("--height");
+  if (!frames_used && a.frames > 0) refuse("--frames");
+}
+
 ChartTable make_chart(const ChartArgs& a) {
+  const bool renders = a.name == "billboard-modes" || a.name == "layer-resolution" || a.name == "particle-budget";
+  refuse_unused(a, renders, a.name == "billboard-modes" || a.name == "layer-resolution");
   if (a.name == "footprint") return chart_footprint({});
   if (a.name == "integrators") return chart_integrators({});
   if (a.name == "billboard-modes") {
