@@ -7,7 +7,6 @@
 // the error surfaces of the paper's figures 4-13 written as CSV and drawn as PNG charts by
 // tools/plots/plot_alignment_figures.py (Debian's matplotlib, /usr/bin/python3).
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
