@@ -48,13 +48,16 @@ struct BillboardAxes {
 // up axis (in camera coordinates (0,1,0)). When eye - centre is parallel to reference_up (a
 // particle straight above or below the eye), right is undefined; `fallback_right` (the camera's
 // right axis) is used instead, projected to be normal to n. A particle on the view axis gets the
-// camera's own axes: facing the viewpoint and facing the viewplane then coincide.
-// Requires eye != centre and unit reference_up and fallback_right.
+// camera's own axes: facing the viewpoint and facing the viewplane then coincide. A particle
+// exactly at the eye has no direction to face: it keeps the viewplane axes (fallback_right,
+// reference_up), as the shader does (content/shaders/billboard.vert), instead of normalising a
+// zero vector into NaN. Requires unit, orthogonal reference_up and fallback_right.
 template <typename T>
 BillboardAxes<T> viewpoint_facing_axes(const glm::vec<3, T>& centre, const glm::vec<3, T>& eye,
                                        const glm::vec<3, T>& reference_up,
                                        const glm::vec<3, T>& fallback_right) {
   const glm::vec<3, T> to_eye = eye - centre;
+  if (!(glm::length(to_eye) > T(0))) return {fallback_right, reference_up};
   const glm::vec<3, T> n = glm::normalize(to_eye);
   glm::vec<3, T> right = glm::cross(reference_up, to_eye);
   // Degenerate when the cross product is lost in rounding next to |to_eye|.

@@ -145,13 +145,17 @@ FootprintError measure_footprint_error(const FootprintTable& t, int sample_grid)
           std::max(e.max_abs_error_scaled, std::abs(t.raw[k] / t.max_raw - exact / max_closed));
     }
   }
+  const double peak = footprint_closed_form(0.0, 0.0, t.extent);
   for (int j = 0; j < sample_grid; ++j) {
     for (int i = 0; i < sample_grid; ++i) {
       const double x = -t.extent + 2.0 * t.extent * i / (sample_grid - 1);
       const double y = -t.extent + 2.0 * t.extent * j / (sample_grid - 1);
       const double exact = std::exp(-(x * x + y * y) / 2.0);
-      e.max_abs_error_sampled =
-          std::max(e.max_abs_error_sampled, std::abs(sample_footprint_bilinear(t, x, y) - exact));
+      const double sampled = sample_footprint_bilinear(t, x, y);
+      e.max_abs_error_sampled = std::max(e.max_abs_error_sampled, std::abs(sampled - exact));
+      e.max_rel_error_raw_sampled =
+          std::max(e.max_rel_error_raw_sampled,
+                   std::abs(sampled * t.max_raw - footprint_closed_form(x, y, t.extent)) / peak);
     }
   }
   return e;

@@ -68,6 +68,10 @@ struct FootprintError {
   // Bilinear reconstruction of the scaled table against exp(-(x^2+y^2)/2) (the footprint
   // normalised to 1 at its centre) on a dense grid of points: the error the renderer sees.
   double max_abs_error_sampled = 0.0;
+  // The raw table (not scaled) sampled the same way against the closed form itself, relative to
+  // the closed form's peak: quadrature and reconstruction error together, which is what a table
+  // used without the paper's scaling would carry (`pyro chart footprint` plots it).
+  double max_rel_error_raw_sampled = 0.0;
   int sample_grid = 0;
 };
 

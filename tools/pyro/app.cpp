@@ -13,6 +13,7 @@ void add_pyro_commands(CLI::App& app) {
   add_profile_command(app);
   add_quality_command(app);
   add_view_command(app);
+  add_chart_command(app);
 }
 
 void stop_after_parsing(CLI::App& app) {

@@ -15,6 +15,7 @@
 #include "components/particle_set.h"
 #include "engine/ecs/world.h"
 #include "engine/io/scene_loader.h"
+#include "systems/composite/compositor.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/progress.h"
 
@@ -33,10 +34,18 @@ struct FrameTiming {
   double cpu_ms_per_frame = 0.0;  // all of the process's threads (llvmpipe's included)
 };
 
+void choose_upsampling(SceneRuntime& runtime, bool depth_aware) {
+  MediaComposition m;
+  m.depth_aware = depth_aware;
+  runtime.world().set_resource<MediaComposition>(m);
+}
+
 // `progress` (may be null) advances by one per timed frame, from `done`.
 FrameTiming time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames,
-                        nlohmann::json* system_ms, Progress* progress = nullptr, size_t done = 0) {
+                        nlohmann::json* system_ms, bool depth_aware = true,
+                        Progress* progress = nullptr, size_t done = 0) {
   SceneRuntime runtime(scene, options);
+  choose_upsampling(runtime, depth_aware);
   runtime.step();  // warm up: shaders, tables, targets
   glFinish();
   const double cpu0 = process_cpu_seconds();
@@ -73,7 +82,7 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     timed.sync_timing = o.sync_timing;
     nlohmann::json system_ms = nlohmann::json::object();
     progress.stage(done, "scale " + std::to_string(scale).substr(0, 5) + ", timing");
-    const FrameTiming timing = time_frames(scene, timed, o.frames, &system_ms, &progress, done);
+    const FrameTiming timing = time_frames(scene, timed, o.frames, &system_ms, o.depth_aware, &progress, done);
     const double fps = timing.fps;
     done += size_t(o.frames);
     progress.stage(done, "scale " + std::to_string(scale).substr(0, 5) + ", error");
@@ -83,6 +92,7 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     measured_options.readback = reference_options.readback = true;
     reference_options.layer_scale = 1.0f;
     SceneRuntime measured(scene, measured_options), reference(scene, reference_options);
+    choose_upsampling(measured, o.depth_aware);
     double sum = 0.0;
     int samples = 0;
     const int every = std::max(1, o.frames / std::max(1, o.error_frames));
@@ -104,7 +114,8 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
                       {"system_ms", system_ms}});
   }
   return {{"scene", o.scene}, {"width", o.width}, {"height", o.height}, {"frames", o.frames},
-          {"error_frames", o.error_frames}, {"scales", scales}};
+          {"error_frames", o.error_frames},
+          {"upsampling", o.depth_aware ? "depth-aware" : "bilinear"}, {"scales", scales}};
 }
 
 nlohmann::json bench_table1(const Table1BenchOptions& o) {

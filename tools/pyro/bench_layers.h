@@ -16,10 +16,14 @@ struct LayersBenchOptions {
   int error_frames = 4;   // frames (spread over the timed ones) where RMSE is measured
   bool sync_timing = false;  // per-system times include their GPU work (slower frames)
   std::vector<float> scales{1.0f, 0.5f, 0.25f, 0.125f};  // speed-ups are against the first
+  // How the reduced layers are upsampled (systems/composite/compositor.h, MediaComposition):
+  // true: nearest-depth at depth edges (the engine's default); false: plain bilinear.
+  bool depth_aware = true;
 };
 
 // Per layer scale 1, 1/2, 1/4, 1/8: fps over the same frames, and the RMSE (linear rgb, the
-// composed view) against the full-resolution layers.
+// composed view) against the full-resolution layers (always composed with the default,
+// depth-aware upsampling, which at scale 1 is the identity).
 nlohmann::json bench_layers(const LayersBenchOptions& options);
 
 struct Table1BenchOptions {

@@ -39,6 +39,7 @@ void run_footprint(const FootprintArgs& a) {
       {"max_abs_error", e.max_abs_error},
       {"max_abs_error_scaled", e.max_abs_error_scaled},
       {"max_abs_error_sampled", e.max_abs_error_sampled},
+      {"max_rel_error_raw_sampled", e.max_rel_error_raw_sampled},
       {"sample_grid", e.sample_grid},
       {"max_entry_raw", table.max_raw},
       {"closed_form_peak", footprint_closed_form(0.0, 0.0, table.extent)}};

@@ -6,10 +6,7 @@
 // (engine/math/billboard_alignment.h, docs/billboard_alignment.md): for one billboard, or as
 // the error surfaces of the paper's figures 4-13 written as CSV and drawn as PNG charts by
 // tools/plots/plot_alignment_figures.py (Debian's matplotlib, /usr/bin/python3).
-#include <sys/wait.h>
-
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -24,6 +21,7 @@
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/external_tool_error.h"
+#include "tools/pyro/plot_script.h"
 
 namespace pyro::cli {
 
@@ -31,8 +29,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Exit status of the plotting script when matplotlib cannot be imported.
-constexpr int kPlotExitNoMatplotlib = 3;
 constexpr const char* kManifestName = "alignment_figures.json";
 
 struct ProjectionErrorArgs {
@@ -110,54 +106,9 @@ void run_point(const ProjectionErrorArgs& a) {
   std::printf("  vertical          % .9e   % .9e\n", parallax.vertical, parallax_paper.vertical);
 }
 
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'')
-      q += "'\\''";
-    else
-      q += c;
-  }
-  return q + "'";
-}
-
-std::string tools_dir() {
-  if (const char* env = std::getenv("PYRO_TOOLS_DIR"); env && *env) return env;
-  return PYRO_DEFAULT_TOOLS_DIR;
-}
-
-// Debian's interpreter, which has python3-matplotlib (tools/install-deps.sh); not the first
-// python3 on PATH, which may be another installation without it. PYRO_PYTHON overrides.
-std::string python_interpreter() {
-  if (const char* env = std::getenv("PYRO_PYTHON"); env && *env) return env;
-  return "/usr/bin/python3";
-}
-
 void draw_charts(const fs::path& manifest, const fs::path& out_dir) {
-  const std::string python = python_interpreter();
-  const fs::path script = fs::path(tools_dir()) / "plots" / "plot_alignment_figures.py";
-  const std::string csv_note = "; the CSV files are written in " + out_dir.string();
-  if (!fs::exists(script))
-    throw ExternalToolError("cannot find the plotting script " + script.string() +
-                            " (set PYRO_TOOLS_DIR to the source tree's tools/ folder)" + csv_note);
-  // The script's messages go to stderr, so that stdout holds only pyro's own report.
-  const std::string command = shell_quote(python) + " " + shell_quote(script.string()) + " " +
-                              shell_quote(manifest.string()) + " 1>&2";
-  std::fflush(stdout);
-  const int status = std::system(command.c_str());
-  if (status == -1) throw ExternalToolError("cannot start a shell to run " + python + csv_note);
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  if (code == 0) return;
-  if (code == kPlotExitNoMatplotlib)
-    throw ExternalToolError("the PNG charts need matplotlib, which " + python +
-                            " cannot import: install the Debian package python3-matplotlib "
-                            "(./tools/install-deps.sh), or pass --csv-only" +
-                            csv_note);
-  if (code == 127)
-    throw ExternalToolError("cannot run " + python +
-                            " (not found; install python3, or set PYRO_PYTHON)" + csv_note);
-  throw ExternalToolError("the plotting script " + script.string() + " failed with exit status " +
-                          std::to_string(code) + " (its messages are above)" + csv_note);
+  run_plot_script("plot_alignment_figures.py", {manifest.string()},
+                  "; the CSV files are written in " + out_dir.string());
 }
 
 void run_surfaces(const ProjectionErrorArgs& a) {

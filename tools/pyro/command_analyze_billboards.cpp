@@ -2,10 +2,6 @@
 // The image difference between billboards facing the viewplane and facing the viewpoint
 // (Johnson & McAllister 2005, section 3), per eye of a stereo pair, as RMSE of linear RGB,
 // beside the time each mode takes per frame.
-#include <epoxy/gl.h>
-
-#include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -18,6 +14,7 @@
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
+#include "tools/pyro/scene_frame_timing.h"
 
 namespace pyro::cli {
 
@@ -46,25 +43,14 @@ ModeRun run_mode(const SceneDescription& scene, const Args& a, BillboardAlignmen
   o.width_override = a.width;
   o.height_override = a.height;
   // Timed without readback; the image comes from a second runtime at the same frame.
-  o.readback = false;
-  SceneRuntime timed(scene, o);
-  timed.step();
-  glFinish();
-  progress.update(++done);
-  std::vector<double> ms;
-  for (int f = 0; f < a.frames; ++f) {
-    const auto t0 = std::chrono::steady_clock::now();
-    timed.step();
-    glFinish();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-    progress.update(++done);
-  }
-  std::sort(ms.begin(), ms.end());
+  const double ms = median_ms_per_frame(scene, o, a.frames);
+  done += size_t(a.frames) + 1;
+  progress.update(done);
   o.readback = true;
   SceneRuntime imaged(scene, o);
   imaged.step();
   progress.update(++done);
-  return {imaged.image(), ms[ms.size() / 2]};
+  return {imaged.image(), ms};
 }
 
 void run(const Args& a) {

@@ -80,7 +80,7 @@ void add_bench_commands(CLI::App& app) {
   johnson_cmd->add_flag("--json", johnson->json, "Print one JSON object");
   johnson_cmd->callback([johnson] { print(bench_johnson(johnson->options), johnson->json); });
 
-  struct LayersArgs { LayersBenchOptions options; bool json = false; };
+  struct LayersArgs { LayersBenchOptions options; std::string upsampling = "depth-aware"; bool json = false; };
   auto layers = std::make_shared<LayersArgs>();
   CLI::App* layers_cmd = bench->add_subcommand(
       "layers", "Explosion media layers at 1, 1/2, 1/4, 1/8: fps and RMSE against full resolution");
@@ -94,8 +94,14 @@ void add_bench_commands(CLI::App& app) {
                          "Layer scales to run (default 1 0.5 0.25 0.125; speed-ups are against the first)")
       ->check(CLI::Range(0.01f, 1.0f))
       ->expected(1, 8);
+  layers_cmd->add_option("--upsampling", layers->upsampling,
+                         "How reduced layers are upsampled: depth-aware (default) or bilinear")
+      ->check(CLI::IsMember({"depth-aware", "bilinear"}));
   layers_cmd->add_flag("--json", layers->json, "Print one JSON object");
-  layers_cmd->callback([layers] { print(bench_layers(layers->options), layers->json); });
+  layers_cmd->callback([layers] {
+    layers->options.depth_aware = layers->upsampling == "depth-aware";
+    print(bench_layers(layers->options), layers->json);
+  });
 
   struct Table1Args { Table1BenchOptions options; bool json = false; };
   auto table1 = std::make_shared<Table1Args>();

@@ -13,12 +13,9 @@
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/reference/volume_reference.h"
-#include "systems/scene_runtime/particle_snapshot.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
-#include "tools/pyro/vdb_view.h"
+#include "tools/pyro/vdb_import_evaluation.h"
 
 namespace pyro::cli {
 
@@ -80,34 +77,19 @@ void run_import(const ImportArgs& a) {
     std::fprintf(stderr, "pyro import-vdb: %s: grid \"%s\" has no active voxels; writing 0 particles\n",
                  a.file.c_str(), grid.name.c_str());
 
-  CloudImportOptions opt;
-  opt.medium = default_medium(grid);
-  opt.tau_tolerance = tau_tolerance_for_error(a.error);
-  progress.stage(1, "import");
-  const auto t1 = std::chrono::steady_clock::now();
-  CloudImportReport rep;
-  const std::vector<GaussianParticle> particles = import_cloud(grid, opt, &rep);
-  const double import_seconds = seconds_since(t1);
-
   // The image error of what the engine draws against the ground truth.
-  double rmse = 0.0;
-  if (!grid.empty()) {
-    const CameraDescription cam = framing_camera(grid);
-    const CameraFrame frame = camera_frame(cam, a.width, a.height);
-    progress.stage(2, "light");
-    const std::vector<float> light = light_optical_depth(grid, opt.medium);
-    progress.stage(3, "reference image");
-    const RgbImage ref = render_volume_reference(grid, light, frame, opt.medium);
-    progress.stage(4, "splat image");
-    const RgbImage splat = render_particle_snapshot(particles, cam, a.width, a.height,
-                                                    glm::vec3(opt.medium.background));
-    rmse = image_rmse(ref, splat);
-  }
+  progress.stage(1, "import and measure");
+  const VdbImportReference reference = make_vdb_import_reference(grid, a.width, a.height);
+  const VdbImportResult imported = import_and_measure(grid, a.error, reference);
+  const CloudImportReport& rep = imported.report;
+  const double import_seconds = imported.import_seconds;
+  const double rmse = imported.rmse;
+  const std::vector<GaussianParticle>& particles = imported.particles;
   progress.update(5);
   progress.finish();
   nlohmann::json meta = {{"source", a.file},      {"grid", grid.name},
                          {"grid_index", grid.file_index}, {"error_target", a.error},
-                         {"extinction", opt.medium.extinction}, {"rmse", rmse},
+                         {"extinction", reference.medium.extinction}, {"rmse", rmse},
                          {"active_voxels", rep.active_voxels}};
   ParticleFile pf;
   pf.metadata_json = meta.dump();
@@ -124,8 +106,8 @@ void run_import(const ImportArgs& a) {
                             {"voxels_per_second", rep.active_voxels / std::max(1e-9, read_seconds + import_seconds)},
                             {"particles_per_level", rep.particles_per_level},
                             {"grid", grid.name},
-                            {"extinction", opt.medium.extinction},
-                            {"tau_tolerance", opt.tau_tolerance},
+                            {"extinction", reference.medium.extinction},
+                            {"tau_tolerance", imported.tau_tolerance},
                             {"out", a.out}};
   if (a.json)
     std::printf("%s\n", summary.dump().c_str());

@@ -13,6 +13,7 @@ void add_flipbook_commands(CLI::App& app, CLI::App& analyze);
 void add_profile_command(CLI::App& app);  // command_profile.cpp
 void add_quality_command(CLI::App& app);  // command_quality.cpp
 void add_view_command(CLI::App& app);  // command_view.cpp: the interactive viewer
+void add_chart_command(CLI::App& app);  // command_chart.cpp
 // Registered under `pyro analyze` by add_analyze_commands.
 void add_billboard_mode_analysis(CLI::App& analyze);
 // `pyro bench vdb`, registered by add_bench_commands.

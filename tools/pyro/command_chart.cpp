@@ -1,0 +1,131 @@
+// pyro chart NAME --out DIR [--width W] [--height H] [--frames N] [--csv-only] [--json]
+// One chart per command: time (x) against error (y), one point per setting, the Pareto front
+// marked. The data come from tools/pyro/chart_<name>.cpp (charts.h); DIR/NAME.csv is written
+// atomically, then tools/plots/plot_pareto.py draws DIR/NAME.png from it.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/core/user_error.h"
+#include "engine/io/text_file.h"
+#include "tools/pyro/charts.h"
+#include "tools/pyro/commands.h"
+#include "tools/pyro/plot_script.h"
+
+namespace pyro::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ChartArgs {
+  std::string name, out;
+  int width = 0, height = 0, frames = 0;  // 0: the chart's default
+  bool csv_only = false;
+  bool json = false;
+};
+
+template <class Options>
+void override_size(Options& o, const ChartArgs& a) {
+  if (a.width > 0) o.width = a.width;
+  if (a.height > 0) o.height = a.height;
+}
+
+// An option the chart does not use is a mistake, not something to ignore silently.
+void refuse_unused(const ChartArgs& a, bool size_used, bool frames_used) {
+  auto refuse = [&](const char* option) {
+    throw UserError("command line", option, "not used by the " + a.name + " chart (" +
+                                                (size_used ? "it takes --width and --height" : "it has no image size") +
+                                                (frames_used ? " and --frames)" : ", no --frames)"));
+  };
+  if (!size_used && a.width > 0) refuse("--width");
+  if (!size_used && a.height > 0) refuse("--height");
+  if (!frames_used && a.frames > 0) refuse("--frames");
+}
+
+ChartTable make_chart(const ChartArgs& a) {
+  const bool renders = a.name == "billboard-modes" || a.name == "layer-resolution" || a.name == "particle-budget";
+  refuse_unused(a, renders, a.name == "billboard-modes" || a.name == "layer-resolution");
+  if (a.name == "footprint") return chart_footprint({});
+  if (a.name == "integrators") return chart_integrators({});
+  if (a.name == "billboard-modes") {
+    BillboardModesChartOptions o;
+    override_size(o, a);
+    if (a.frames > 0) o.frames = a.frames;
+    return chart_billboard_modes(o);
+  }
+  if (a.name == "layer-resolution") {
+    LayerResolutionChartOptions o;
+    override_size(o, a);
+    if (a.frames > 0) o.frames = a.frames;
+    return chart_layer_resolution(o);
+  }
+  if (a.name == "particle-budget") {
+    ParticleBudgetChartOptions o;
+    override_size(o, a);
+    return chart_particle_budget(o);
+  }
+  throw UserError("command line", "NAME", "one of footprint, billboard-modes, layer-resolution, "
+                                          "particle-budget, integrators; found \"" + a.name + "\"");
+}
+
+void run_chart(const ChartArgs& a) {
+  const fs::path out_dir(a.out);
+  // Everything is measured (and every mistake found) before anything is written.
+  const ChartTable table = make_chart(a);
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec || !fs::is_directory(out_dir))
+    throw UserError(a.out, "--out", "cannot create the folder: " + ec.message());
+  const fs::path csv = out_dir / (table.name + ".csv");
+  const fs::path png = out_dir / (table.name + ".png");
+  write_text_file(csv.string(), chart_csv(table));
+  if (!a.csv_only)
+    run_plot_script("plot_pareto.py", {csv.string(), png.string()},
+                    "; the CSV file is written: " + csv.string());
+  nlohmann::json points = nlohmann::json::array();
+  for (const ChartTable::Row& r : table.rows)
+    points.push_back({{"label", r.label}, {"time", r.time}, {"error", r.error}, {"pareto", r.pareto}});
+  nlohmann::json report = {{"chart", table.name}, {"csv", csv.string()}, {"points", points},
+                           {"summary", table.summary}};
+  if (!a.csv_only) report["png"] = png.string();
+  if (a.json) {
+    std::printf("%s\n", report.dump().c_str());
+    return;
+  }
+  std::printf("%s: %zu points\n  %s\n", table.title.c_str(), table.rows.size(), csv.string().c_str());
+  if (!a.csv_only) std::printf("  %s\n", png.string().c_str());
+  for (const ChartTable::Row& r : table.rows)
+    std::printf("  %-36s %12.4g %-4s %12.4g%s\n", r.label.c_str(), r.time, "", r.error,
+                r.pareto ? "  (Pareto front)" : "");
+}
+
+}  // namespace
+
+std::vector<std::string> chart_names() {
+  return {"footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators"};
+}
+
+void add_chart_command(CLI::App& app) {
+  auto a = std::make_shared<ChartArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "chart", "Time against error, one point per setting, Pareto front marked: CSV and PNG");
+  cmd->add_option("name", a->name, "footprint, billboard-modes, layer-resolution, particle-budget or integrators")
+      ->required()
+      ->check(CLI::IsMember(chart_names()));
+  cmd->add_option("--out", a->out, "Folder for NAME.csv and NAME.png")->required();
+  cmd->add_option("--width", a->width, "Image width (billboard-modes, layer-resolution, particle-budget)")
+      ->check(CLI::Range(16, 4096));
+  cmd->add_option("--height", a->height, "Image height (billboard-modes, layer-resolution, particle-budget)")
+      ->check(CLI::Range(16, 4096));
+  cmd->add_option("--frames", a->frames, "Timed frames per point (billboard-modes, layer-resolution)")
+      ->check(CLI::Range(1, 10000));
+  cmd->add_flag("--csv-only", a->csv_only, "Write the CSV only (no matplotlib needed)");
+  cmd->add_flag("--json", a->json, "Print one JSON object");
+  cmd->callback([a] { run_chart(*a); });
+}
+
+}  // namespace pyro::cli
