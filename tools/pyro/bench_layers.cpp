@@ -162,7 +162,7 @@ nlohmann::json bench_table1(const Table1BenchOptions& o) {
       progress.stage(done, std::to_string(counts[i]) + " particles, " +
                                (shape == ParticleShape::planar ? "planar" : "spherical"));
       row[shape == ParticleShape::planar ? "planar_fps" : "spherical_fps"] =
-          time_frames(s, ro, o.frames, nullptr, &progress, done).fps;
+          time_frames(s, ro, o.frames, nullptr, true, &progress, done).fps;
       done += size_t(o.frames);
       row["live_particles"] = live;
     }
