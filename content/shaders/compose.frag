@@ -64,24 +64,29 @@ float view_depth(float window_depth) {
 }
 
 // Nearest-depth upsampling (no halos at depth edges): the four layer texels around this pixel
-// were rendered against the view depths in media_depth. Where those agree with this pixel's
-// depth (spread within u_depth_tolerance of it) the layer is sampled bilinearly by the texture
-// unit; otherwise the texel whose depth is nearest is taken. textureGather returns the four
-// texels bilinear filtering would use, as (i0, j1), (i1, j1), (i1, j0), (i0, j0).
+// were rendered against the view depths in media_depth. Where this pixel's depth agrees (within
+// u_depth_tolerance of it) with those four depths interpolated bilinearly to this pixel, the
+// pixel lies on the surface the texels saw — a slope included, whose texels' depths differ —
+// and the layer is sampled bilinearly by the texture unit; otherwise (a depth edge runs between
+// the texels) the texel whose depth is nearest is taken. textureGather returns the four texels
+// bilinear filtering would use, as (i0, j1), (i1, j1), (i1, j0), (i0, j0).
 vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth, ivec2 texel, vec2 uv) {
   vec4 bilinear = textureLod(media, uv, 0.0);
 #if DEPTH_AWARE
   vec4 g = textureGather(media_depth, uv, 0);
   float z = view_depth(texelFetch(depth, texel, 0).r);
-  vec4 diff = abs(g - vec4(z));
   vec2 size = vec2(textureSize(media, 0));
-  ivec2 i0 = ivec2(floor(uv * size - 0.5));
+  vec2 at = uv * size - 0.5;
+  vec2 f = fract(at);
+  float interpolated = mix(mix(g.w, g.z, f.x), mix(g.x, g.y, f.x), f.y);
+  vec4 diff = abs(g - vec4(z));
+  ivec2 i0 = ivec2(floor(at));
   ivec2 pick = diff.w <= diff.z ? i0 : i0 + ivec2(1, 0);
   float best = min(diff.w, diff.z);
   if (diff.x < best) { pick = i0 + ivec2(0, 1); best = diff.x; }
   if (diff.y < best) pick = i0 + ivec2(1, 1);
   vec4 nearest = texelFetch(media, clamp(pick, ivec2(0), ivec2(size) - 1), 0);
-  bool agree = max(max(diff.x, diff.y), max(diff.z, diff.w)) <= u_depth_tolerance * z;
+  bool agree = abs(interpolated - z) <= u_depth_tolerance * z;
   return agree ? bilinear : nearest;
 #else
   return bilinear;
