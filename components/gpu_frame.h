@@ -30,6 +30,10 @@ struct GpuFrame {
   std::unique_ptr<gpu::RenderTarget> output;   // GL_SRGB8_ALPHA8, at the views' size
   std::unique_ptr<gpu::RenderTarget> display;  // the output upscaled to full size, when the
                                                // frame scale is below 1 (else null)
+  // Motion blur (RenderSettings::motion_blur > 0): the blended output in linear light
+  // (RGBA16F, the output's size), and whether it holds a frame yet.
+  std::unique_ptr<gpu::RenderTarget> history;
+  bool history_valid = false;
 };
 
 }  // namespace pyro

@@ -33,6 +33,8 @@ struct RenderSettings {
   // size and the composed image is upscaled to it: a shortcut whose error the benchmarks report.
   float frame_scale = 1.0f;
   StereoMode stereo_mode = StereoMode::mono;
+  // Motion blur: output = (1 - b) new + b previous output, linear (scene key render.motion_blur).
+  float motion_blur = 0.0f;
   // explosion: dust, smoke and fire each in its own layer at layer_scale (components/gpu_frame.h).
   ParticleShading shading = ParticleShading::color;
   bool media_layers() const {

@@ -51,6 +51,9 @@ struct RenderDescription {
   // composited over the opaque scene: 1, 0.5, 0.25 or 0.125.
   float layer_scale = 1.0f;
   ParticleShading shading = ParticleShading::color;
+  // Motion blur by blending frames (Umenhoffer et al. 2006, section 4): each output frame is
+  // (1 - b) times the new frame plus b times the previous output, in linear light; 0 is off.
+  float motion_blur = 0.0f;
   // Fire under explosion shading (components/explosion_shading.h): the black-body table's
   // temperature range (T outside it clamps to its ends), the emission scale and the detail
   // noise's temperature range. Defaults are the paper's 2500-3200 K; flames whose tips cool to

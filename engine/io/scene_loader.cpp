@@ -626,6 +626,7 @@ void read_render(ObjectReader& r, RenderDescription& d) {
       d.layer_scale != 0.125f) {
     r.at("layer_scale").fail("expected one of 1, 0.5, 0.25, 0.125, found " + format_float(d.layer_scale));
   }
+  r.number("motion_blur", Range{0.0, 0.95}, d.motion_blur);
   r.object("fire", [&](ObjectReader& f) {
     f.number("t_min", kPositive, d.fire_t_min);
     f.number("t_max", kPositive, d.fire_t_max);

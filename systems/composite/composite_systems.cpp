@@ -22,7 +22,7 @@ ecs::SystemDesc stereo_compose_system() {
   return {"composite", ecs::Phase::composite,
           ecs::access<GpuFrame, RenderSettings, StereoCamera, View, FrameClock, ExplosionShading>(),
           ecs::access<GpuFrame>(), [](ecs::World& world) {
-            const GpuFrame& frame = world.resource<GpuFrame>();
+            GpuFrame& frame = world.resource<GpuFrame>();
             if (!frame.eyes.empty() && frame.eyes[0].media[0]) {
               MediaComposition m;
               if (const View* view = world.try_resource<View>(); view && !view->eyes.empty()) {
@@ -45,7 +45,8 @@ ecs::SystemDesc stereo_compose_system() {
               if (!found) swap_eyes = s.eye_order == EyeOrder::right_left;
               found = true;
             });
-            compositor(world).compose(world.resource<RenderSettings>().stereo_mode, frame, swap_eyes);
+            const RenderSettings& settings = world.resource<RenderSettings>();
+            compositor(world).compose(settings.stereo_mode, frame, swap_eyes, settings.motion_blur);
             if (frame.display) {
               // The frame-scale shortcut: upscale the composed image bilinearly.
               const gpu::RenderTarget& from = *frame.output;

@@ -125,16 +125,28 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void Compositor::compose(StereoMode mode, const GpuFrame& frame, bool swap_eyes) {
+void Compositor::compose(StereoMode mode, GpuFrame& frame, bool swap_eyes, float motion_blur) {
   for (const EyeTargets& eye : frame.eyes)
     if (eye.media_combined) prepare_media(eye);
   const gpu::RenderTarget& out = *frame.output;
-  glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
-  glEnable(GL_FRAMEBUFFER_SRGB);  // linear in, sRGB-encoded bytes out (on for every pass)
+  const bool blur = motion_blur > 0.0f && frame.history;
+  if (blur) {
+    // Blend into the linear history: src (1 - b) + dst b.
+    glBindFramebuffer(GL_FRAMEBUFFER, frame.history->framebuffer());
+    glDisable(GL_FRAMEBUFFER_SRGB);
+  } else {
+    glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
+    glEnable(GL_FRAMEBUFFER_SRGB);  // linear in, sRGB-encoded bytes out (on for every pass)
+  }
   const size_t first = swap_eyes && frame.eyes.size() > 1 ? 1 : 0;
   const EyeTargets& l = frame.eyes[first];
   const EyeTargets& r = frame.eyes.size() > 1 ? frame.eyes[1 - first] : frame.eyes[0];
   bind_views(l, r);
+  if (blur && frame.history_valid) {
+    glEnable(GL_BLEND);
+    glBlendColor(0.0f, 0.0f, 0.0f, motion_blur);
+    glBlendFunc(GL_ONE_MINUS_CONSTANT_ALPHA, GL_CONSTANT_ALPHA);
+  }
   const int w = l.scene->width(), h = l.scene->height();
   const glm::mat3 I(1.0f), Z(0.0f);
   switch (mode) {
@@ -160,6 +172,15 @@ void Compositor::compose(StereoMode mode, const GpuFrame& frame, bool swap_eyes)
       draw_view(m.left, m.right, 0, 0, w, h);
       break;
     }
+  }
+  if (blur) {
+    glDisable(GL_BLEND);
+    frame.history_valid = true;
+    // The history, encoded to sRGB on the way into the output (GL_FRAMEBUFFER_SRGB on).
+    glEnable(GL_FRAMEBUFFER_SRGB);
+    glBlitNamedFramebuffer(frame.history->framebuffer(), out.framebuffer(), 0, 0, out.width(),
+                           out.height(), 0, 0, out.width(), out.height(), GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
   }
 }
 

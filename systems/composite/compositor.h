@@ -31,7 +31,10 @@ class Compositor {
   // Writes frame.output from the views in frame.eyes (left, right) for `mode`, compositing each
   // view's particle layer over its scene on the way: one full-screen pass in all.
   // `swap_eyes`: the right view goes where the left one is expected, and the other way round.
-  void compose(StereoMode mode, const GpuFrame& frame, bool swap_eyes = false);
+  // `motion_blur` b > 0 (frame.history set): the views are blended into frame.history as
+  // (1 - b) new + b history (the first frame replaces it), which is then encoded into
+  // frame.output.
+  void compose(StereoMode mode, GpuFrame& frame, bool swap_eyes = false, float motion_blur = 0.0f);
 
  private:
   // Binds the views' textures (the same units for every variant of compose.frag).

@@ -38,6 +38,8 @@ GpuFrame make_gpu_frame(const RenderSettings& settings) {
                         s.stereo_mode == StereoMode::left_right;
   f.output = std::make_unique<gpu::RenderTarget>(two_wide ? 2 * s.width : s.width, s.height,
                                                  GL_SRGB8_ALPHA8);
+  if (settings.motion_blur > 0.0f)
+    f.history = std::make_unique<gpu::RenderTarget>(f.output->width(), f.output->height(), GL_RGBA16F);
   if (settings.frame_scale < 1.0f) {
     f.display = std::make_unique<gpu::RenderTarget>(
         two_wide ? 2 * settings.width : settings.width, settings.height, GL_SRGB8_ALPHA8);

@@ -73,6 +73,7 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   settings.frame_scale = options.frame_scale;
   settings.stereo_mode = options.stereo_mode;
   settings.shading = options.shading.value_or(scene.render.shading);
+  settings.motion_blur = scene.render.motion_blur;
   world_.set_resource<RenderSettings>(settings);
   ExplosionShading shading;
   shading.fire_t_min = scene.render.fire_t_min;

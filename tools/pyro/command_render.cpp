@@ -92,6 +92,13 @@ void run_render(const RenderArgs& a) {
   // simulated (same systems, same order) but neither drawn nor written.
   // With a finer time step (quality substeps k), frame f is the runtime's frame f * k.
   const auto runtime_frame = [&](int f) { return static_cast<uint64_t>(f) * static_cast<uint64_t>(substeps); };
+  // With motion blur each output blends the frames before it, so those are drawn (not written)
+  // too: frames A..B then equal the same frames of a full run.
+  if (scene.render.motion_blur > 0.0f)
+    for (int g = 0; g < range.first; ++g) {
+      while (runtime.frame() < runtime_frame(g)) runtime.simulate_step();
+      runtime.step();
+    }
   while (runtime.frame() < runtime_frame(range.first)) runtime.simulate_step();
   for (int f = range.first; f <= range.last; ++f) {
     while (runtime.frame() < runtime_frame(f)) runtime.simulate_step();
