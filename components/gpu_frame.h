@@ -19,8 +19,9 @@ struct EyeTargets {
   // premultiplied) at the layer scale, any scale including 1; null otherwise.
   std::array<std::unique_ptr<gpu::RenderTarget>, 3> media;
   // Made from the three each frame at layer size before the final pass: the media composited
-  // in order (premultiplied RGBA16F), and (RG32F) the view depth each layer texel was rendered
-  // against with the fire's opacity, so the full-size pass reads one layer, not three.
+  // in order (premultiplied RGBA16F), and (RGBA16F) the view depth each layer texel was rendered
+  // against, the fire's opacity and the heat shimmer's offset, so the full-size pass reads one
+  // layer, not three.
   std::unique_ptr<gpu::RenderTarget> media_combined;
   std::unique_ptr<gpu::RenderTarget> media_depth;
 };

@@ -39,17 +39,15 @@ layout(binding = 3) uniform sampler2D u_right_layer;
 layout(binding = 4) uniform sampler2D u_left_depth;
 layout(binding = 5) uniform sampler2D u_right_depth;
 layout(binding = 6) uniform sampler2D u_left_media;        // media_prepare.frag: composited
-layout(binding = 7) uniform sampler2D u_left_media_depth;  // view depth, fire opacity
+layout(binding = 7) uniform sampler2D u_left_media_depth;  // view depth, fire opacity, shimmer offset
 layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
 // The shimmer's noise at this frame's time: a slice of engine/math/detail_noise.h's periodic
-// volume taken on the CPU (two channels: the x and y offsets), repeating.
-layout(binding = 12) uniform sampler2D u_shimmer_noise;
+// volume taken on the CPU (two channels: the x and y offsets), repeating; media_prepare.frag
+// multiplies it by the fire's opacity and u_shimmer at layer size into media_depth.ba.
 uniform float u_depth_tolerance;  // relative view-depth spread below which bilinear is kept
 uniform float u_near;
 uniform float u_far;
-uniform float u_shimmer;         // scene offset (fraction of the view) per unit fire opacity
-uniform float u_shimmer_tiling;  // noise periods across the view
 uniform mat3 u_left_matrix;
 uniform mat3 u_right_matrix;
 uniform ivec2 u_origin;  // the viewport's lower-left corner in the output: views map 1:1
@@ -99,8 +97,7 @@ vec3 view_color(sampler2D scene, sampler2D depth, sampler2D media, sampler2D med
 #if SHIMMER
   // Heat shimmer: the scene seen through hot gas moves along a noise field, by an amount that
   // grows with the fire's opacity here.
-  float fire = textureLod(media_depth, uv, 0.0).g;
-  vec2 offset = (textureLod(u_shimmer_noise, uv * u_shimmer_tiling, 0.0).rg * 2.0 - 1.0) * (u_shimmer * fire);
+  vec2 offset = textureLod(media_depth, uv, 0.0).ba;
   vec3 c = textureLod(scene, uv + offset, 0.0).rgb;
 #else
   vec3 c = texelFetch(scene, texel, 0).rgb;

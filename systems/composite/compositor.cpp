@@ -69,10 +69,6 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glBindTextureUnit(7, l.media_depth->color_texture());
   glBindTextureUnit(9, r.media_combined->color_texture());
   glBindTextureUnit(10, r.media_depth->color_texture());
-  if (media_.shimmer > 0.0f) {
-    upload_shimmer_noise(media_.time);
-    glBindTextureUnit(12, shimmer_noise_.get());
-  }
 }
 
 void Compositor::prepare_media(const EyeTargets& eye) {
@@ -95,6 +91,10 @@ void Compositor::prepare_media(const EyeTargets& eye) {
               static_cast<float>(eye.scene->height()) / combined.height());
   glUniform1f(loc("u_near"), media_.near);
   glUniform1f(loc("u_far"), media_.far);
+  upload_shimmer_noise(media_.time);
+  glBindTextureUnit(4, shimmer_noise_.get());
+  glUniform1f(loc("u_shimmer"), media_.shimmer);
+  glUniform1f(loc("u_shimmer_tiling"), 3.0f);  // noise periods across the view
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -119,8 +119,6 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
     glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
     glUniform1f(loc("u_near"), media_.near);
     glUniform1f(loc("u_far"), media_.far);
-    glUniform1f(loc("u_shimmer"), media_.shimmer);
-    glUniform1f(loc("u_shimmer_tiling"), 3.0f);  // noise periods across the view
   }
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
