@@ -48,7 +48,7 @@ class Reader {
   void get_array(std::vector<T>& v, uint64_t n) {
     if (n > (in_.size() - pos_) / sizeof(T)) throw std::runtime_error("vdb transfer: short array");
     v.resize(n);
-    std::memcpy(v.data(), in_.data() + pos_, n * sizeof(T));
+    if (n > 0) std::memcpy(v.data(), in_.data() + pos_, n * sizeof(T));  // an empty grid: no data
     pos_ += n * sizeof(T);
   }
   size_t pos() const { return pos_; }
