@@ -13,6 +13,7 @@
 #include "engine/core/sample_statistics.h"
 #include "engine/ecs/world.h"
 #include "systems/reference/particle_reference.h"
+#include "systems/reference/world_snapshot.h"
 #include "systems/scene_runtime/scene_runtime.h"
 
 namespace pyro {
@@ -38,33 +39,7 @@ void render_frame(SceneRuntime& runtime, int frame, int substeps) {
   runtime.step();
 }
 
-RgbImage rgb_of(const FrameImage& image) {
-  RgbImage out;
-  out.width = image.width;
-  out.height = image.height;
-  out.rgb.resize(static_cast<size_t>(image.width) * image.height * 3);
-  for (size_t i = 0, n = out.rgb.size() / 3; i < n; ++i)
-    for (size_t c = 0; c < 3; ++c) out.rgb[3 * i + c] = image.rgba[4 * i + c];
-  return out;
-}
 
-ParticlePool all_particles(ecs::World& world) {
-  size_t total = 0;
-  world.each<ParticleSet>([&](ecs::Entity, ParticleSet& s) { total += s.pool.size(); });
-  ParticlePool all(total);
-  world.each<ParticleSet>([&](ecs::Entity, ParticleSet& s) {
-    const ParticlePool& p = s.pool;
-    for (size_t i = 0; i < p.size(); ++i) {
-      ParticleInit init;
-      init.position = {p.px[i], p.py[i], p.pz[i]};
-      init.radius = p.radius[i];
-      init.density = p.density[i];
-      init.color = {p.r[i], p.g[i], p.b[i]};
-      all.spawn(init);
-    }
-  });
-  return all;
-}
 
 }  // namespace
 
@@ -97,7 +72,7 @@ QualityGroundTruth::QualityGroundTruth(const SceneDescription& scene, int width,
       const std::vector<float> stop =
           ray_stop_distances(camera, background.world().resource<GpuFrame>().eyes.at(0).scene->read_depth());
       images_.push_back(
-          render_particles_reference_over(all_particles(particles.world()), camera, behind, stop));
+          render_particles_reference_over(gather_particles(particles.world()), camera, behind, stop));
     }
   } else {
     QualitySettings finest;

@@ -7,6 +7,8 @@
 
 #include "systems/flipbook_fire/flipbook_layout.h"
 #include "systems/flipbook_fire/flipbook_pattern.h"
+#include "engine/io/scene_loader.h"
+#include "tests/support/test_paths.h"
 
 namespace pyro {
 namespace {
@@ -59,6 +61,24 @@ TEST(FlipbookPattern, ThesisIncrementsHalveTheCoherentMotion) {
   EXPECT_NEAR(thesis.circulation, circle.circulation / 2.0, 1e-5);
   EXPECT_LT(thesis.march, 0.51 * march.march);
   EXPECT_LT(thesis.circulation, 0.51 * circle.circulation);
+}
+
+// A frame moves from row a to row b in one step exactly when start_b - start_a is -increment
+// (mod the frame count): rows started 7 frames apart (no +-1, +-2 with 32 frames) keep the
+// thesis' increments without their coherent motion, as content/scenes/campfire.json does; the
+// thesis' one frame apart marches.
+TEST(FlipbookPattern, RowStartsApartFromEveryIncrementRemoveTheMarchAndTheCircle) {
+  const SceneDescription campfire = load_scene(test::scene_path("campfire.json"));
+  ASSERT_EQ(campfire.fires.size(), 2u);
+  for (const FlipbookFire& fire : campfire.fires) {
+    const PatternMotion m = measure_pattern_motion(expand_flipbook_groups(fire), 32);
+    EXPECT_EQ(m.march, 0.0);
+    EXPECT_EQ(m.circulation, 0.0);
+    EXPECT_LT(m.transfers, 0.05);  // isolated hand-overs where columns of unlike increments meet
+    FlipbookFire thesis = fire;
+    for (FlipbookGroup& g : thesis.groups) g.row_start_step = 1;
+    EXPECT_GT(measure_pattern_motion(expand_flipbook_groups(thesis), 32).march, 0.2);
+  }
 }
 
 }  // namespace

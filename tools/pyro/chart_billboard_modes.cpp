@@ -11,6 +11,7 @@
 #include "engine/core/content_path.h"
 #include "engine/io/scene_loader.h"
 #include "systems/reference/particle_reference.h"
+#include "systems/reference/world_snapshot.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/charts.h"
 #include "tools/pyro/scene_frame_timing.h"
@@ -31,34 +32,7 @@ constexpr Mode kModes[] = {
     {"spherical", ParticleShape::spherical, BillboardAlignment::viewplane},
 };
 
-// Every particle set of the world in one pool, for the reference.
-ParticlePool all_particles(ecs::World& world) {
-  size_t n = 0;
-  world.each<ParticleSet>([&](ecs::Entity, ParticleSet& s) { n += s.pool.size(); });
-  ParticlePool all(n);
-  world.each<ParticleSet>([&](ecs::Entity, ParticleSet& s) {
-    const ParticlePool& p = s.pool;
-    for (size_t i = 0; i < p.size(); ++i) {
-      ParticleInit init;
-      init.position = {p.px[i], p.py[i], p.pz[i]};
-      init.radius = p.radius[i];
-      init.density = p.density[i];
-      init.color = {p.r[i], p.g[i], p.b[i]};
-      all.spawn(init);
-    }
-  });
-  return all;
-}
 
-RgbImage rgb_of(const FrameImage& f) {
-  RgbImage img;
-  img.width = f.width;
-  img.height = f.height;
-  img.rgb.resize(static_cast<size_t>(f.width) * f.height * 3);
-  for (size_t p = 0; p < static_cast<size_t>(f.width) * f.height; ++p)
-    for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = f.rgba[4 * p + c];
-  return img;
-}
 
 }  // namespace
 
@@ -101,7 +75,7 @@ ChartTable chart_billboard_modes(const BillboardModesChartOptions& o) {
       SceneRuntime imaged(scene, ro);
       imaged.step();
       const RgbImage splat = rgb_of(imaged.image());
-      const ParticlePool pool = all_particles(imaged.world());
+      const ParticlePool pool = gather_particles(imaged.world());
       const CameraFrame& camera = imaged.world().resource<View>().eyes.at(0);
       const RgbImage reference = render_particles_reference(
           pool, camera, glm::dvec3(imaged.world().resource<RenderSettings>().background));
