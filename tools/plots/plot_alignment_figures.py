@@ -18,28 +18,14 @@ import json
 import os
 import sys
 
-EXIT_NO_MATPLOTLIB = 3
+from plot_setup import fail, load_matplotlib
 
-
-def fail(message, status=1):
-    sys.stderr.write("plot_alignment_figures.py: " + message + "\n")
-    sys.exit(status)
-
-
+plt = load_matplotlib()
 try:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     from matplotlib import colors
     import numpy as np
-except ImportError as e:
-    fail(
-        "matplotlib cannot be imported by %s (%s); install the Debian package "
-        "python3-matplotlib (./tools/install-deps.sh) and run this with /usr/bin/python3"
-        % (sys.executable, e),
-        EXIT_NO_MATPLOTLIB,
-    )
+except ImportError as e:  # numpy comes with Debian's matplotlib; say so if it does not
+    fail("numpy cannot be imported (%s); install python3-matplotlib" % e, 3)
 
 
 def read_csv(path):

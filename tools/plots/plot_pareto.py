@@ -21,26 +21,9 @@ import math
 import os
 import sys
 
-EXIT_NO_MATPLOTLIB = 3
+from plot_setup import fail, load_matplotlib
 
-
-def fail(message, status=1):
-    sys.stderr.write("plot_pareto.py: " + message + "\n")
-    sys.exit(status)
-
-
-try:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-except ImportError as e:
-    fail(
-        "matplotlib cannot be imported by %s (%s); install the Debian package "
-        "python3-matplotlib (./tools/install-deps.sh) and run this with /usr/bin/python3"
-        % (sys.executable, e),
-        EXIT_NO_MATPLOTLIB,
-    )
+plt = load_matplotlib()
 
 
 def read_chart(path):
