@@ -7,7 +7,7 @@
 namespace pyro::gpu {
 
 RenderTarget::RenderTarget(int width, int height, GLenum color_format)
-    : width_(width), height_(height) {
+    : width_(width), height_(height), format_(color_format) {
   if (width < 1 || height < 1) throw GpuError("render target needs a positive size");
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);

@@ -16,6 +16,7 @@ class RenderTarget {
   int height() const { return height_; }
   GLuint framebuffer() const { return fbo_.get(); }
   GLuint color_texture() const { return color_.get(); }
+  GLenum format() const { return format_; }  // the colour texture's internal format
   GLuint depth_texture() const { return depth_.get(); }
 
   void bind() const;
@@ -28,6 +29,7 @@ class RenderTarget {
 
  private:
   int width_, height_;
+  GLenum format_;
   Texture color_, depth_;
   Framebuffer fbo_;
 };

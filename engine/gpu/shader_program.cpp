@@ -85,6 +85,13 @@ Program load_program(const std::string& vertex_file, const std::string& fragment
   return link_program({vs, fs});
 }
 
+Program load_compute_program(const std::string& compute_file,
+                             const std::vector<std::string>& defines) {
+  ShaderStageSource cs = load_shader_stage(GL_COMPUTE_SHADER, "shaders/" + compute_file);
+  cs.source = with_defines(cs.source, defines);
+  return link_program({cs});
+}
+
 GLint uniform_location(const Program& program, const char* name) {
   return glGetUniformLocation(program.get(), name);
 }

@@ -26,6 +26,10 @@ Program link_program(const std::vector<ShaderStageSource>& stages);
 Program load_program(const std::string& vertex_file, const std::string& fragment_file,
                      const std::vector<std::string>& defines = {});
 
+// A compute program from one file under content/shaders, with `defines` as load_program's.
+Program load_compute_program(const std::string& compute_file,
+                             const std::vector<std::string>& defines = {});
+
 // The source with #define lines inserted after its #version line (and a #line directive, so
 // that compile errors keep the file's own line numbers).
 std::string with_defines(const std::string& source, const std::vector<std::string>& defines);
