@@ -15,9 +15,12 @@ namespace pyro {
 struct EyeTargets {
   std::unique_ptr<gpu::RenderTarget> scene;
   std::unique_ptr<gpu::RenderTarget> layer;  // null when the layer scale is 1 or with media
-  // Explosion shading (RenderSettings::media_layers()): dust, smoke and fire layers (RGBA16F,
-  // premultiplied) at the layer scale, any scale including 1; null otherwise.
-  std::array<std::unique_ptr<gpu::RenderTarget>, 3> media;
+  // Explosion shading (RenderSettings::media_layers()): the dust, smoke and fire layers (RGBA16F,
+  // premultiplied) at the layer scale, any scale including 1, as three cells side by side in one
+  // target (cell m from column m * media_combined's width): one framebuffer for the three
+  // layers, so that llvmpipe rasterises them in one pass, its threads sharing the cells, where
+  // three small targets would each go to one thread in turn. Null otherwise.
+  std::unique_ptr<gpu::RenderTarget> media_atlas;
   // Made from the three each frame at layer size before the final pass: the media composited
   // in order (premultiplied RGBA16F), and (RGBA16F) the view depth each layer texel was rendered
   // against, the fire's opacity and the heat shimmer's offset, so the full-size pass reads one

@@ -12,12 +12,35 @@
 #ifndef PLANAR
 #define PLANAR 0
 #endif
+// CELLS 1 (explosion media): the target is an atlas of layers side by side; this draw's layer is
+// the cell of u_viewport's size from column u_cell_origin. The view maps onto the cell, whose
+// sides clip (gl_ClipDistance 0 and 1: GL_CLIP_DISTANCE0/1 enabled), so no billboard spills into
+// its neighbour.
+#ifndef CELLS
+#define CELLS 0
+#endif
 layout(location = 0) in vec4 a_center_radius;  // world xyz, radius
 layout(location = 1) in vec4 a_color_tau;      // linear rgb, extinction tau (1 / length)
 layout(location = 2) in vec4 a_medium;  // temperature K, opacity, medium, detail key (explosions)
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
+#if CELLS
+uniform vec2 u_viewport;       // the cell's size in pixels
+uniform float u_cell_origin;   // its first column in the atlas
+uniform float u_atlas_width;   // the atlas's width in pixels
+
+// Clip position q in the cell's view to the atlas: x_ndc in [-1, 1] onto the cell's columns,
+// x_window = origin + (x_ndc + 1) / 2 * cell width, written for clip coordinates (times w).
+vec4 into_cell(vec4 q) {
+  gl_ClipDistance[0] = q.w + q.x;
+  gl_ClipDistance[1] = q.w - q.x;
+  q.x = (q.x + q.w) * (u_viewport.x / u_atlas_width) + q.w * (2.0 * u_cell_origin / u_atlas_width - 1.0);
+  return q;
+}
+#else
+vec4 into_cell(vec4 q) { return q; }
+#endif
 
 flat out vec3 v_center;  // view space
 flat out float v_radius;
@@ -33,11 +56,11 @@ void main() {
   v_color_tau = a_color_tau;
   v_medium = a_medium;
 #if PLANAR
-  gl_Position = u_projection * vec4(p + vec3(corner * r, 0.0), 1.0);
+  gl_Position = into_cell(u_projection * vec4(p + vec3(corner * r, 0.0), 1.0));
 #else
   float d = length(p);
   if (d < 2.0 * r) {
-    gl_Position = vec4(corner, 0.0, 1.0);
+    gl_Position = into_cell(vec4(corner, 0.0, 1.0));
     return;
   }
   vec3 axis = p / d;
@@ -46,6 +69,6 @@ void main() {
   vec3 up = cross(right, axis);
   float distance = d + r;
   float half_size = r * distance / sqrt(d * d - r * r);
-  gl_Position = u_projection * vec4(axis * distance + (right * corner.x + up * corner.y) * half_size, 1.0);
+  gl_Position = into_cell(u_projection * vec4(axis * distance + (right * corner.x + up * corner.y) * half_size, 1.0));
 #endif
 }

@@ -66,7 +66,8 @@ ecs::SystemDesc billboard_render_system() {
               const FrameClock* clock = world.try_resource<FrameClock>();
               const double time = clock ? clock->time() : 0.0;
               for (size_t v = 0; v < views; ++v)
-                explosion.draw(lists->eyes[v], view.eyes[v], settings, time, frame.eyes[v].media,
+                explosion.draw(lists->eyes[v], view.eyes[v], settings, time,
+                               *frame.eyes[v].media_atlas, frame.eyes[v].media_combined->width(),
                                *frame.eyes[v].scene);
               return;
             }

@@ -80,14 +80,26 @@ void ExplosionRenderer::upload_detail_slice(double time) {
 
 void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
                              const RenderSettings& settings, double time,
-                             const std::array<std::unique_ptr<gpu::RenderTarget>, 3>& layers,
+                             const gpu::RenderTarget& atlas, int cell_width,
                              const gpu::RenderTarget& scene) {
   const int scene_width = scene.width(), scene_height = scene.height();
   const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  for (const auto& l : layers) glClearNamedFramebufferfv(l->framebuffer(), GL_COLOR, 0, clear);
+  glClearNamedFramebufferfv(atlas.framebuffer(), GL_COLOR, 0, clear);
   split_by_medium(list, split_);
   upload_detail_slice(time);
   const bool planar = settings.particles == ParticleShape::planar;
+  if (planar) {
+    // Planar billboards are depth tested against the scene's depth, point-sampled down into
+    // each cell.
+    for (int m = 0; m < 3; ++m)
+      glBlitNamedFramebuffer(scene.framebuffer(), atlas.framebuffer(), 0, 0, scene_width,
+                             scene_height, m * cell_width, 0, (m + 1) * cell_width, atlas.height(),
+                             GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
+  atlas.bind();
+  // Each cell clips its billboards at its sides (sphere_billboard.vert, CELLS).
+  glEnable(GL_CLIP_DISTANCE0);
+  glEnable(GL_CLIP_DISTANCE1);
   const glm::vec3 light = glm::normalize(glm::vec3(frame.view * glm::vec4(settings.light_direction, 0.0f)));
   const glm::vec3 irradiance = settings.light_color * shading_.light_irradiance;
   for (int m = 0; m < 3; ++m) {
@@ -96,19 +108,16 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     // Profiling hook (no-op unless a session is active): this medium's layer, fragments counted.
     static const char* const layer_names[3] = {"dust layer", "smoke layer", "fire layer"};
     const gpu::GpuPassScope pass(layer_names[m], true);
-    const gpu::RenderTarget& target = *layers[m];
-    if (planar) {
-      // Planar billboards are depth tested against the scene's depth, point-sampled down.
-      glBlitNamedFramebuffer(scene.framebuffer(), target.framebuffer(), 0, 0, scene_width, scene_height,
-                             0, 0, target.width(), target.height(), GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    }
-    target.bind();
     // One program per medium kind: fire (shading 2) or dust and smoke (1).
     const gpu::Program& program =
         programs_.get(planar, m == static_cast<int>(ParticleMedium::fire) ? 2 : 1);
     begin_sphere_billboards(program, frame, planar, scene.depth_texture());
-    set_sphere_billboard_target(program, target, scene_width, scene_height);
     auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
+    glUniform2f(loc("u_depth_scale"), static_cast<float>(scene_width) / cell_width,
+                static_cast<float>(scene_height) / atlas.height());
+    glUniform2f(loc("u_viewport"), static_cast<float>(cell_width), static_cast<float>(atlas.height()));
+    glUniform1f(loc("u_cell_origin"), static_cast<float>(m * cell_width));
+    glUniform1f(loc("u_atlas_width"), static_cast<float>(atlas.width()));
     glUniform3fv(loc("u_light_view"), 1, glm::value_ptr(light));
     glUniform3fv(loc("u_light_irradiance"), 1, glm::value_ptr(irradiance));
     glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(settings.ambient));
@@ -128,6 +137,8 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     glBindVertexArray(vao);
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(l.size()));
   }
+  glDisable(GL_CLIP_DISTANCE0);
+  glDisable(GL_CLIP_DISTANCE1);
   end_sphere_billboards();
 }
 

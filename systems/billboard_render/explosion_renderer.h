@@ -24,11 +24,12 @@ void split_by_medium(const DrawList& list, std::array<DrawList, 3>& out);
 class ExplosionRenderer {
  public:
   explicit ExplosionRenderer(const ExplosionShading& shading);
-  // Clears the three layers, then blends each medium's particles (back to front) into its layer.
+  // Clears the three layers, then blends each medium's particles (back to front) into its layer:
+  // cell m of `atlas` (components/gpu_frame.h), `cell_width` columns wide.
   // `scene` holds the opaque scene's colour and depth (the spherical shader clips against its
   // full-resolution depth; planar billboards are depth tested against a point-sampled copy).
   void draw(const DrawList& list, const CameraFrame& frame, const RenderSettings& settings,
-            double time, const std::array<std::unique_ptr<gpu::RenderTarget>, 3>& layers,
+            double time, const gpu::RenderTarget& atlas, int cell_width,
             const gpu::RenderTarget& scene);
   const ExplosionShading& shading() const { return shading_; }
 

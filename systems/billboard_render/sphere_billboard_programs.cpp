@@ -13,7 +13,8 @@ const gpu::Program& SphereBillboardPrograms::get(bool planar, int shading) {
   if (p.get() == 0)
     p = gpu::load_program("sphere_billboard.vert", "sphere_billboard.frag",
                           {std::string("PLANAR ") + (planar ? "1" : "0"),
-                           "SHADING " + std::to_string(shading)});
+                           "SHADING " + std::to_string(shading),
+                           std::string("CELLS ") + (shading != 0 ? "1" : "0")});
   return p;
 }
 

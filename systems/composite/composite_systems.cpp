@@ -23,7 +23,7 @@ ecs::SystemDesc stereo_compose_system() {
           ecs::access<GpuFrame, RenderSettings, StereoCamera, View, FrameClock, ExplosionShading>(),
           ecs::access<GpuFrame>(), [](ecs::World& world) {
             GpuFrame& frame = world.resource<GpuFrame>();
-            if (!frame.eyes.empty() && frame.eyes[0].media[0]) {
+            if (!frame.eyes.empty() && frame.eyes[0].media_atlas) {
               MediaComposition m;
               if (const View* view = world.try_resource<View>(); view && !view->eyes.empty()) {
                 m.near = view->eyes[0].near;
@@ -36,6 +36,7 @@ ecs::SystemDesc stereo_compose_system() {
               if (const MediaComposition* over = world.try_resource<MediaComposition>()) {
                 m.depth_aware = over->depth_aware;
                 m.depth_tolerance = over->depth_tolerance;
+                m.tiles = over->tiles;
               }
               compositor(world).set_media(m);
             }

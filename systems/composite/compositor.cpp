@@ -14,18 +14,20 @@ Compositor::Compositor()
       prepare_fbo_(gpu::make_framebuffer()),
       empty_(gpu::make_vertex_array()) {}
 
-const gpu::Program& Compositor::variant(bool use_left, bool use_right) {
-  const bool media = media_bound_;
-  const bool depth_aware = media && media_.depth_aware;
-  const bool shimmer = media && media_.shimmer > 0.0f;
-  const size_t key = size_t(use_left) | size_t(use_right) << 1 | size_t(layers_ && !media) << 2 |
-                     size_t(media) << 3 | size_t(depth_aware) << 4 | size_t(shimmer) << 5;
+const gpu::Program& Compositor::variant(bool use_left, bool use_right, const Features& f) {
+  const bool media = media_bound_ && f.media;
+  const bool depth_aware = media && f.depth_aware;
+  const bool shimmer = media && f.shimmer;
+  const bool layers = layers_ && !media_bound_;
+  const size_t key = size_t(use_left) | size_t(use_right) << 1 | size_t(layers) << 2 |
+                     size_t(media) << 3 | size_t(depth_aware) << 4 | size_t(shimmer) << 5 |
+                     size_t(f.tiled) << 6;
   gpu::Program& p = compose_[key];
   if (p.get() == 0) {
     auto flag = [](const char* name, bool on) { return std::string(name) + (on ? " 1" : " 0"); };
-    p = gpu::load_program("fullscreen.vert", "compose.frag",
+    p = gpu::load_program(f.tiled ? "compose_tile.vert" : "fullscreen.vert", "compose.frag",
                           {flag("USE_LEFT", use_left), flag("USE_RIGHT", use_right),
-                           flag("LAYERS", layers_ && !media), flag("MEDIA", media),
+                           flag("LAYERS", layers), flag("MEDIA", media),
                            flag("DEPTH_AWARE", depth_aware), flag("SHIMMER", shimmer)});
   }
   return p;
@@ -57,12 +59,13 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glBindTextureUnit(0, l.scene->color_texture());
   glBindTextureUnit(1, r.scene->color_texture());
   layers_ = l.layer != nullptr;
-  media_bound_ = l.media[0] != nullptr;
+  media_bound_ = l.media_atlas != nullptr;
   if (layers_) {
     glBindTextureUnit(2, l.layer->color_texture());
     glBindTextureUnit(3, r.layer->color_texture());
   }
   if (!media_bound_) return;
+  media_layer_size_ = {l.media_combined->width(), l.media_combined->height()};
   glBindTextureUnit(4, l.scene->depth_texture());
   glBindTextureUnit(5, r.scene->depth_texture());
   glBindTextureUnit(6, l.media_combined->color_texture());
@@ -84,13 +87,14 @@ void Compositor::prepare_media(const EyeTargets& eye) {
   glDisable(GL_BLEND);
   glUseProgram(media_prepare_.get());
   glBindVertexArray(empty_.get());
-  for (int m = 0; m < 3; ++m) glBindTextureUnit(static_cast<GLuint>(m), eye.media[m]->color_texture());
+  glBindTextureUnit(0, eye.media_atlas->color_texture());
   glBindTextureUnit(3, eye.scene->depth_texture());
   auto loc = [&](const char* name) { return gpu::uniform_location(media_prepare_, name); };
   glUniform2f(loc("u_scale"), static_cast<float>(eye.scene->width()) / combined.width(),
               static_cast<float>(eye.scene->height()) / combined.height());
   glUniform1f(loc("u_near"), media_.near);
   glUniform1f(loc("u_far"), media_.far);
+  glUniform1i(loc("u_cell_width"), combined.width());
   upload_shimmer_noise(media_.time);
   glBindTextureUnit(4, shimmer_noise_.get());
   glUniform1f(loc("u_shimmer"), media_.shimmer);
@@ -105,22 +109,61 @@ void Compositor::resolve_linear(const EyeTargets& view, const gpu::RenderTarget&
 }
 
 void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_matrix, int x,
-                           int y, int width, int height) {
+                           int y, int width, int height, int slot, const SceneCopy& copy) {
   const glm::mat3 zero(0.0f);
-  const gpu::Program& program = variant(left_matrix != zero, right_matrix != zero);
-  glUseProgram(program.get());
-  auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
+  const bool use_left = left_matrix != zero, use_right = right_matrix != zero;
   glViewport(x, y, width, height);
-  glUniformMatrix3fv(loc("u_left_matrix"), 1, GL_FALSE, glm::value_ptr(left_matrix));
-  glUniformMatrix3fv(loc("u_right_matrix"), 1, GL_FALSE, glm::value_ptr(right_matrix));
-  glUniform2i(loc("u_origin"), x, y);
-  glUniform2f(loc("u_view_size"), static_cast<float>(width), static_cast<float>(height));
-  if (media_bound_) {
-    glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
-    glUniform1f(loc("u_near"), media_.near);
-    glUniform1f(loc("u_far"), media_.far);
+  auto draw_with = [&](const gpu::Program& program) {
+    glUseProgram(program.get());
+    auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
+    glUniformMatrix3fv(loc("u_left_matrix"), 1, GL_FALSE, glm::value_ptr(left_matrix));
+    glUniformMatrix3fv(loc("u_right_matrix"), 1, GL_FALSE, glm::value_ptr(right_matrix));
+    glUniform2i(loc("u_origin"), x, y);
+    glUniform2f(loc("u_view_size"), static_cast<float>(width), static_cast<float>(height));
+    if (media_bound_) {
+      glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
+      glUniform1f(loc("u_near"), media_.near);
+      glUniform1f(loc("u_far"), media_.far);
+    }
+  };
+  // Depth-aware upsampling changes nothing when the layers are at full size: every pixel is a
+  // texel centre, where bilinear filtering returns that texel.
+  const bool reduced = media_bound_ && media_layer_size_ != glm::ivec2(width, height);
+  Features all;
+  all.depth_aware = media_.depth_aware && reduced;
+  all.shimmer = media_.shimmer > 0.0f;
+  if (!media_bound_ || !media_.tiles) {
+    draw_with(variant(use_left, use_right, all));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return;
   }
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  const ComposeTiles::Grid grid = ComposeTiles::grid_for({width, height}, media_layer_size_);
+  ComposeTiles::Classify how;
+  how.use_left = use_left;
+  how.use_right = use_right;
+  how.edges = all.depth_aware;
+  how.fire = all.shimmer;
+  how.depth_tolerance = media_.depth_tolerance;
+  tiles_.classify(grid, how, slot);
+  for (unsigned cls : ComposeTiles::classes) {
+    if (cls == 0 && copy.from != 0) {
+      // Tiles without media show the scene unchanged: a copy of its sRGB bytes, the same
+      // bytes the scene-only variant writes, for a fraction of its cost on llvmpipe.
+      glCopyImageSubData(copy.from, GL_TEXTURE_2D, 0, 0, 0, 0, copy.to, GL_TEXTURE_2D, 0, x, y, 0,
+                         width, height, 1);
+      continue;
+    }
+    Features f;
+    f.tiled = true;
+    f.media = (cls & ComposeTiles::media) != 0;
+    f.depth_aware = (cls & ComposeTiles::edge) != 0;
+    f.shimmer = (cls & ComposeTiles::fire) != 0;
+    if ((f.depth_aware && !all.depth_aware) || (f.shimmer && !all.shimmer)) continue;  // never filled
+    const gpu::Program& program = variant(use_left, use_right, f);
+    draw_with(program);
+    tiles_.draw(program.get(), grid, cls, slot);
+  }
+  glUseProgram(0);
 }
 
 void Compositor::compose(StereoMode mode, GpuFrame& frame, bool swap_eyes, float motion_blur) {
@@ -147,18 +190,28 @@ void Compositor::compose(StereoMode mode, GpuFrame& frame, bool swap_eyes, float
   }
   const int w = l.scene->width(), h = l.scene->height();
   const glm::mat3 I(1.0f), Z(0.0f);
+  // A view drawn alone and unblended, from an sRGB scene into the sRGB output: its tiles without
+  // media may be copied (the scene target is 8-bit sRGB whenever media are composited).
+  auto copy_of = [&](const EyeTargets& eye) {
+    SceneCopy c;
+    if (!blur && media_bound_ && eye.scene->format() == out.format()) {
+      c.from = eye.scene->color_texture();
+      c.to = out.color_texture();
+    }
+    return c;
+  };
   switch (mode) {
     case StereoMode::mono:
-      draw_view(I, Z, 0, 0, w, h);
+      draw_view(I, Z, 0, 0, w, h, 0, copy_of(l));
       break;
     case StereoMode::left_right:
     case StereoMode::side_by_side:
-      draw_view(I, Z, 0, 0, w, h);
-      draw_view(Z, I, w, 0, w, h);
+      draw_view(I, Z, 0, 0, w, h, 0, copy_of(l));
+      draw_view(Z, I, w, 0, w, h, 1, copy_of(r));
       break;
     case StereoMode::side_by_side_crossed:
-      draw_view(Z, I, 0, 0, w, h);
-      draw_view(I, Z, w, 0, w, h);
+      draw_view(Z, I, 0, 0, w, h, 0, copy_of(r));
+      draw_view(I, Z, w, 0, w, h, 1, copy_of(l));
       break;
     case StereoMode::anaglyph:
     case StereoMode::anaglyph_color:

@@ -5,10 +5,12 @@
 #include "components/render_settings.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/math/detail_noise.h"
+#include "systems/composite/compose_tiles.h"
 
 #include <array>
 
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 
 namespace pyro {
 
@@ -19,6 +21,15 @@ struct MediaComposition {
   float shimmer = 0.0f;             // scene offset per unit fire opacity (fraction of the view)
   bool depth_aware = true;          // nearest-depth upsampling at depth edges; false: bilinear
   float depth_tolerance = 0.05f;    // relative view-depth spread still upsampled bilinearly
+  // Compose in screen tiles sorted by the work they need (systems/composite/compose_tiles.h);
+  // false: every pixel runs the full variant (the same image, slower; for tests and comparison).
+  bool tiles = true;
+};
+
+// Where a view's tiles without media may be copied from its scene (textures of one format), or
+// 0: drawn with the scene-only variant.
+struct SceneCopy {
+  GLuint from = 0, to = 0;
 };
 
 class Compositor {
@@ -43,17 +54,27 @@ class Compositor {
   void prepare_media(const EyeTargets& eye);
   // One full-screen draw with the compose.frag variant for these matrices (a zero matrix
   // compiles that view out) and the bound views' kind (plain, layers, media).
+  // With media, the draw is split into tiles (list set `slot`: one per view of a frame).
   void draw_view(const glm::mat3& left_matrix, const glm::mat3& right_matrix, int x, int y,
-                 int width, int height);
-  const gpu::Program& variant(bool use_left, bool use_right);
+                 int width, int height, int slot = 0, const SceneCopy& copy = {});
+  // What a compose.frag variant does beyond reading the scene, for the bound views' kind.
+  struct Features {
+    bool media = true;        // with media bound: composite them (false: the scene alone)
+    bool depth_aware = false;
+    bool shimmer = false;
+    bool tiled = false;       // linked with compose_tile.vert instead of fullscreen.vert
+  };
+  const gpu::Program& variant(bool use_left, bool use_right, const Features& features);
   void upload_shimmer_noise(float time);
 
-  std::array<gpu::Program, 64> compose_;  // compose.frag variants, compiled on first use
+  std::array<gpu::Program, 128> compose_;  // compose.frag variants, compiled on first use
   gpu::Program media_prepare_;
   gpu::Framebuffer prepare_fbo_;  // two outputs: media_combined and media_depth
   gpu::VertexArray empty_;
   MediaComposition media_;
   bool layers_ = false, media_bound_ = false;  // what bind_views bound
+  glm::ivec2 media_layer_size_{0};              // with media bound: the layers' size
+  ComposeTiles tiles_;
   DetailNoise shimmer_volume_;    // made on first use
   gpu::Texture shimmer_noise_;    // its slice at the frame's time (two channels)
   float shimmer_noise_time_ = -1.0f;

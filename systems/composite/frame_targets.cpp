@@ -25,7 +25,7 @@ GpuFrame make_gpu_frame(const RenderSettings& settings) {
     t.scene = std::make_unique<gpu::RenderTarget>(s.width, s.height, scene_format);
     if (media) {
       const int lw = layer_extent(s.width, s.layer_scale), lh = layer_extent(s.height, s.layer_scale);
-      for (auto& m : t.media) m = std::make_unique<gpu::RenderTarget>(lw, lh);
+      t.media_atlas = std::make_unique<gpu::RenderTarget>(3 * lw, lh);
       t.media_combined = std::make_unique<gpu::RenderTarget>(lw, lh);
       t.media_depth = std::make_unique<gpu::RenderTarget>(lw, lh, GL_RGBA16F);
     } else if (s.layer_scale < 1.0f)

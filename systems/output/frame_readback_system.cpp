@@ -23,7 +23,7 @@ ecs::SystemDesc frame_readback_system() {
             for (size_t v = 0; v < frame.eyes.size(); ++v) {
               EyeTargets& eye = frame.eyes[v];
               std::vector<float>& out = v == 0 ? image.rgba : image.right_rgba;
-              if (!eye.layer && !eye.media[0]) {
+              if (!eye.layer && !eye.media_atlas) {
                 out = eye.scene->read_rgba();
                 continue;
               }

@@ -19,6 +19,9 @@ struct LayersBenchOptions {
   // How the reduced layers are upsampled (systems/composite/compositor.h, MediaComposition):
   // true: nearest-depth at depth edges (the engine's default); false: plain bilinear.
   bool depth_aware = true;
+  // The final pass in tiles sorted by the work they need (MediaComposition::tiles); false: the
+  // full variant on every pixel.
+  bool compose_tiles = true;
 };
 
 // Per layer scale 1, 1/2, 1/4, 1/8: fps over the same frames, and the RMSE (linear rgb, the

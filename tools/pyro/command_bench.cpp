@@ -80,7 +80,11 @@ void add_bench_commands(CLI::App& app) {
   johnson_cmd->add_flag("--json", johnson->json, "Print one JSON object");
   johnson_cmd->callback([johnson] { print(bench_johnson(johnson->options), johnson->json); });
 
-  struct LayersArgs { LayersBenchOptions options; std::string upsampling = "depth-aware"; bool json = false; };
+  struct LayersArgs {
+    LayersBenchOptions options;
+    std::string upsampling = "depth-aware", compose = "tiled";
+    bool json = false;
+  };
   auto layers = std::make_shared<LayersArgs>();
   CLI::App* layers_cmd = bench->add_subcommand(
       "layers", "Explosion media layers at 1, 1/2, 1/4, 1/8: fps and RMSE against full resolution");
@@ -97,9 +101,14 @@ void add_bench_commands(CLI::App& app) {
   layers_cmd->add_option("--upsampling", layers->upsampling,
                          "How reduced layers are upsampled: depth-aware (default) or bilinear")
       ->check(CLI::IsMember({"depth-aware", "bilinear"}));
+  layers_cmd->add_option("--compose", layers->compose,
+                         "Final pass: tiled (default; each screen tile runs only the work it needs) "
+                         "or per-pixel (the full variant everywhere; the same image)")
+      ->check(CLI::IsMember({"tiled", "per-pixel"}));
   layers_cmd->add_flag("--json", layers->json, "Print one JSON object");
   layers_cmd->callback([layers] {
     layers->options.depth_aware = layers->upsampling == "depth-aware";
+    layers->options.compose_tiles = layers->compose == "tiled";
     print(bench_layers(layers->options), layers->json);
   });
 

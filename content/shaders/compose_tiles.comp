@@ -1,0 +1,120 @@
+#version 450 core
+// Sorts the final pass's screen tiles by the work their pixels need (systems/composite/
+// compose_tiles.h), so that compose.frag's costly variants run only where they change the result:
+// on llvmpipe a fragment shader pays for every instruction on every pixel (branches included),
+// so the only way to skip work per pixel is to not rasterise it.
+//
+// A tile is a square of B x B layer texels and the pixels whose bilinear footprint starts there
+// (the pixels whose centres lie between edges (k B + 1/2) / s, s the layer texels per pixel).
+// Over the layer texels its pixels can read (one more on every side, against rounding) it finds:
+//   media  any premultiplied media: an alpha above 0 (rgb is 0 where alpha is 0). Without, the
+//          pixels show the scene alone: exact;
+//   fire   any fire opacity above 0: the shimmer's offset (opacity times noise) is not 0.
+//          Without, the scene is read unshifted: exact;
+//   edge   a depth edge in the layer: at some texel the second difference of the layer's view
+//          depths along x or y exceeds the tolerance times the depth. A silhouette between
+//          texels is a jump there; a slope (the ground receding) is not, where the first
+//          differences (a spread test, max > (1 + tol) min) would flag most of the ground. Not
+//          exact: geometry thinner than a layer texel, which no texel saw, is not found, and
+//          there the bilinear sample is kept where compose.frag's per-pixel test might pick the
+//          nearest-depth texel (both are the background's media).
+// The class is media | edge << 1 | fire << 2, or 0 (the scene alone) without media; each tile is
+// appended to its class's list, and commands[4 c + 1] counts the list.
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#ifndef USE_LEFT
+#define USE_LEFT 1
+#endif
+#ifndef USE_RIGHT
+#define USE_RIGHT 0
+#endif
+#ifndef EDGES
+#define EDGES 1  // depth-aware upsampling on: classify depth edges
+#endif
+#ifndef FIRE
+#define FIRE 1  // heat shimmer on: classify tiles with fire
+#endif
+
+// The units compose.frag reads (Compositor::bind_views).
+layout(binding = 6) uniform sampler2D u_left_media;         // layer size, premultiplied
+layout(binding = 7) uniform sampler2D u_left_media_depth;   // view depth, fire opacity, offset
+layout(binding = 9) uniform sampler2D u_right_media;
+layout(binding = 10) uniform sampler2D u_right_media_depth;
+
+layout(std430, binding = 0) buffer TileLists {
+  uint commands[32];  // per class c: commands[4 c + 1] the length of its list (the rest unused)
+  uint tiles[];       // class c's tiles from c * u_tile_count on, packed x | y << 16
+};
+
+uniform ivec2 u_tiles;            // tiles across and up
+uniform int u_tile_count;         // u_tiles.x * u_tiles.y
+uniform int u_tile_texels;        // B
+uniform float u_depth_tolerance;
+
+float max4(vec4 v) { return max(max(v.x, v.y), max(v.z, v.w)); }
+
+// textureGather's 2x2 block with lower-left texel b: uv at the block's centre. b is kept inside so
+// that the last texel is read in a block and no texel outside.
+vec2 block_uv(ivec2 b, ivec2 size) {
+  return (vec2(min(b, max(size - 2, ivec2(0)))) + 1.0) / vec2(size);
+}
+
+uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
+  ivec2 layer = textureSize(media, 0);
+  ivec2 t0 = clamp(tile * u_tile_texels - 1, ivec2(0), layer - 1);
+  ivec2 t1 = clamp((tile + 1) * u_tile_texels + 1, ivec2(0), layer - 1);
+  float alpha = 0.0, fire = 0.0;
+  for (int y = t0.y; y <= t1.y; y += 2) {
+    for (int x = t0.x; x <= t1.x; x += 2) {
+      vec2 uv = block_uv(ivec2(x, y), layer);
+      alpha = max(alpha, max4(textureGather(media, uv, 3)));
+#if FIRE
+      fire = max(fire, max4(textureGather(media_depth, uv, 1)));
+#endif
+    }
+  }
+#if EDGES
+  // Depth edges: second differences of the layer's view depths along x and y, row by row (three
+  // rows kept), at every footprint texel.
+  bool edge = false;
+  const int span = 24;  // >= footprint width + 2: B <= 16 (grid_for)
+  float rows[3][span];
+  int width = t1.x - t0.x + 3;
+  for (int y = t0.y - 1; y <= t1.y + 1; ++y) {
+    int row = (y - t0.y + 1) % 3;
+    for (int i = 0; i < width; ++i) {
+      ivec2 at = clamp(ivec2(t0.x - 1 + i, y), ivec2(0), layer - 1);
+      rows[row][i] = texelFetch(media_depth, at, 0).r;
+    }
+    if (y < t0.y + 1) continue;
+    int below = (row + 1) % 3, centre = (row + 2) % 3;  // rows y - 2 and y - 1
+    for (int i = 1; i < width - 1; ++i) {
+      float d = rows[centre][i];
+      float dx = abs(rows[centre][i - 1] + rows[centre][i + 1] - 2.0 * d);
+      float dy = abs(rows[below][i] + rows[row][i] - 2.0 * d);
+      edge = edge || max(dx, dy) > u_depth_tolerance * d;
+    }
+  }
+#else
+  bool edge = false;
+#endif
+  if (alpha <= 0.0) return 0u;
+  uint c = 1u;
+  if (edge) c |= 2u;
+  if (fire > 0.0) c |= 4u;
+  return c;
+}
+
+void main() {
+  ivec2 tile = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(tile, u_tiles))) return;
+  uint c = 0u;
+#if USE_LEFT
+  c |= eye_class(u_left_media, u_left_media_depth, tile);
+#endif
+#if USE_RIGHT
+  c |= eye_class(u_right_media, u_right_media_depth, tile);
+#endif
+  uint slot = atomicAdd(commands[c * 4u + 1u], 1u);
+  tiles[int(c) * u_tile_count + int(slot)] = uint(tile.x) | uint(tile.y) << 16;
+}

@@ -1,0 +1,55 @@
+#pragma once
+// Screen tiles of the final pass, sorted by the work their pixels need, so that compose.frag's
+// costly variants (nearest-depth upsampling, heat shimmer) run only where they change the image.
+// On llvmpipe a fragment shader pays for every instruction on every pixel, branches and discards
+// included, so work is skipped per pixel only by not rasterising it: a compute pass
+// (content/shaders/compose_tiles.comp, which says what decides a class) appends each tile to its
+// class's list, and each class is drawn with its variant by one draw of tile quads
+// (content/shaders/compose_tile.vert). Tiles without media or without fire give exactly the full
+// variant's image; depth edges are found in the layer's depths, so geometry thinner than a layer
+// texel can differ (the comp file says how): tests/composite/compose_tiles_test.cpp bounds it.
+#include <array>
+
+#include <glm/vec2.hpp>
+
+#include "engine/gpu/gl_objects.h"
+
+namespace pyro {
+
+class ComposeTiles {
+ public:
+  // Tile classes: media | edge << 1 | fire << 2, or 0 for the scene alone.
+  static constexpr unsigned media = 1u, edge = 2u, fire = 4u;
+  static constexpr std::array<unsigned, 5> classes = {0u, media, media | edge, media | fire,
+                                                      media | edge | fire};
+
+  struct Grid {
+    int tile_texels = 1;                 // B: layer texels per tile side
+    glm::vec2 texels_per_pixel{1.0f};    // s, per axis
+    glm::ivec2 tiles{0};                 // across and up
+    glm::ivec2 view{0};                  // pixels
+    int count() const { return tiles.x * tiles.y; }
+  };
+  // About 16 pixels a side whatever the layer scale.
+  static Grid grid_for(glm::ivec2 view, glm::ivec2 layer);
+
+  struct Classify {
+    bool use_left = true, use_right = false;  // the views this draw reads (bound by the caller)
+    bool edges = true;                        // depth-aware upsampling: find depth edges
+    bool fire = true;                         // heat shimmer: find fire
+    float depth_tolerance = 0.05f;
+  };
+  // Fills list set `slot` (0 or 1: the two views of a side-by-side frame) for `grid`, reading the
+  // views' depth and media textures on compose.frag's units.
+  void classify(const Grid& grid, const Classify& how, int slot);
+  // Draws class `cls` of list set `slot` with `program` (a compose.frag variant linked with
+  // compose_tile.vert, in use, its other uniforms set).
+  void draw(GLuint program, const Grid& grid, unsigned cls, int slot);
+
+ private:
+  std::array<gpu::Buffer, 2> lists_;
+  std::array<int, 2> capacity_{0, 0};  // tiles per class each buffer holds
+  std::array<gpu::Program, 16> programs_;
+};
+
+}  // namespace pyro
