@@ -5,7 +5,7 @@
 // and last tiles reaching the viewport's borders, so that the tiles cover every pixel once.
 // (Not an instanced or indirect draw: llvmpipe runs those instance by instance, or flushes.)
 layout(std430, binding = 0) readonly buffer TileLists {
-  uint commands[32];
+  uint counts[8];
   uint tiles[];
 };
 
@@ -19,7 +19,7 @@ uniform vec2 u_view_size;         // pixels
 void main() {
   int index = gl_VertexID / 6;  // the tile's place in the list; 6 vertices, two triangles
   int vertex = gl_VertexID % 6;
-  if (uint(index) >= commands[u_class * 4 + 1]) {  // past the class's list
+  if (uint(index) >= counts[u_class]) {  // past the class's list
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the view: clipped away
     return;
   }

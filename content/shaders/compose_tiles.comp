@@ -19,7 +19,7 @@
 //          there the bilinear sample is kept where compose.frag's per-pixel test might pick the
 //          nearest-depth texel (both are the background's media).
 // The class is media | edge << 1 | fire << 2, or 0 (the scene alone) without media; each tile is
-// appended to its class's list, and commands[4 c + 1] counts the list.
+// appended to its class's list, and counts[c] is the list's length.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #ifndef USE_LEFT
@@ -42,7 +42,7 @@ layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
 
 layout(std430, binding = 0) buffer TileLists {
-  uint commands[32];  // per class c: commands[4 c + 1] the length of its list (the rest unused)
+  uint counts[8];  // per class c: the length of its list
   uint tiles[];       // class c's tiles from c * u_tile_count on, packed x | y << 16
 };
 
@@ -115,6 +115,6 @@ void main() {
 #if USE_RIGHT
   c |= eye_class(u_right_media, u_right_media_depth, tile);
 #endif
-  uint slot = atomicAdd(commands[c * 4u + 1u], 1u);
+  uint slot = atomicAdd(counts[c], 1u);
   tiles[int(c) * u_tile_count + int(slot)] = uint(tile.x) | uint(tile.y) << 16;
 }

@@ -9,13 +9,12 @@
 namespace pyro {
 
 namespace {
-constexpr int class_slots = 8;    // the buffer's counts: one per 3-bit class
-constexpr GLsizeiptr command_bytes = class_slots * 4 * sizeof(GLuint);
+constexpr int class_slots = 8;  // the buffer's counts: one per 3-bit class
+constexpr GLsizeiptr count_bytes = class_slots * sizeof(GLuint);
 }  // namespace
 
 ComposeTiles::Grid ComposeTiles::grid_for(glm::ivec2 view, glm::ivec2 layer) {
   Grid g;
-  g.view = view;
   g.texels_per_pixel = glm::vec2(layer) / glm::vec2(view);
   g.tile_texels = std::max(1, static_cast<int>(std::lround(16.0 * g.texels_per_pixel.x)));
   g.tiles = (layer + g.tile_texels - 1) / g.tile_texels;
@@ -28,12 +27,12 @@ void ComposeTiles::classify(const Grid& grid, const Classify& how, int slot) {
     lists_[s] = gpu::make_buffer();
     capacity_[s] = grid.count();
     glNamedBufferStorage(lists_[s].get(),
-                         command_bytes + GLsizeiptr(class_slots) * capacity_[s] * sizeof(GLuint),
+                         count_bytes + GLsizeiptr(class_slots) * capacity_[s] * sizeof(GLuint),
                          nullptr, GL_DYNAMIC_STORAGE_BIT);
   }
   // Every class's list empty.
-  const std::array<GLuint, class_slots * 4> commands{};
-  glNamedBufferSubData(lists_[s].get(), 0, command_bytes, commands.data());
+  const std::array<GLuint, class_slots> counts{};
+  glNamedBufferSubData(lists_[s].get(), 0, count_bytes, counts.data());
 
   const size_t key = size_t(how.use_left) | size_t(how.use_right) << 1 | size_t(how.edges) << 2 |
                      size_t(how.fire) << 3;

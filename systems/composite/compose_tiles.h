@@ -27,7 +27,6 @@ class ComposeTiles {
     int tile_texels = 1;                 // B: layer texels per tile side
     glm::vec2 texels_per_pixel{1.0f};    // s, per axis
     glm::ivec2 tiles{0};                 // across and up
-    glm::ivec2 view{0};                  // pixels
     int count() const { return tiles.x * tiles.y; }
   };
   // About 16 pixels a side whatever the layer scale.
