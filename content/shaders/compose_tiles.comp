@@ -4,9 +4,11 @@
 // on llvmpipe a fragment shader pays for every instruction on every pixel (branches included),
 // so the only way to skip work per pixel is to not rasterise it.
 //
-// A tile is a square of B x B layer texels and the pixels whose bilinear footprint starts there
-// (the pixels whose centres lie between edges (k B + 1/2) / s, s the layer texels per pixel).
-// Over the layer texels its pixels can read (one more on every side, against rounding) it finds:
+// A tile is a square of P x P pixels from the view's lower-left corner (the last column and row
+// may reach past the view). It reads, by bilinear filtering or a nearest texel at layer
+// coordinate (p + 1/2) s - 1/2 (s the layer texels per pixel), the layer texels from
+// floor((p0 + 1/2) s - 1/2) to floor((p1 + 1/2) s - 1/2) + 1 for its pixels p0..p1; over those
+// (one more on every side, against rounding) it finds:
 //   media  any premultiplied media: an alpha above 0 (rgb is 0 where alpha is 0). Without, the
 //          pixels show the scene alone: exact;
 //   fire   any fire opacity above 0: the shimmer's offset (opacity times noise) is not 0.
@@ -48,7 +50,9 @@ layout(std430, binding = 0) buffer TileLists {
 
 uniform ivec2 u_tiles;            // tiles across and up
 uniform int u_tile_count;         // u_tiles.x * u_tiles.y
-uniform int u_tile_texels;        // B
+uniform int u_tile_pixels;        // P
+uniform ivec2 u_view_size;        // pixels
+uniform vec2 u_texels_per_pixel;  // s, at most 1
 uniform float u_depth_tolerance;
 
 float max4(vec4 v) { return max(max(v.x, v.y), max(v.z, v.w)); }
@@ -61,8 +65,12 @@ vec2 block_uv(ivec2 b, ivec2 size) {
 
 uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
   ivec2 layer = textureSize(media, 0);
-  ivec2 t0 = clamp(tile * u_tile_texels - 1, ivec2(0), layer - 1);
-  ivec2 t1 = clamp((tile + 1) * u_tile_texels + 1, ivec2(0), layer - 1);
+  ivec2 p0 = tile * u_tile_pixels;
+  ivec2 p1 = min(p0 + u_tile_pixels, u_view_size) - 1;
+  ivec2 lo = ivec2(floor((vec2(p0) + 0.5) * u_texels_per_pixel - 0.5));
+  ivec2 hi = ivec2(floor((vec2(p1) + 0.5) * u_texels_per_pixel - 0.5)) + 1;
+  ivec2 t0 = clamp(lo - 1, ivec2(0), layer - 1);
+  ivec2 t1 = clamp(hi + 1, ivec2(0), layer - 1);
   float alpha = 0.0, fire = 0.0;
   for (int y = t0.y; y <= t1.y; y += 2) {
     for (int x = t0.x; x <= t1.x; x += 2) {
@@ -77,7 +85,7 @@ uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
   // Depth edges: second differences of the layer's view depths along x and y, row by row (three
   // rows kept), at every footprint texel.
   bool edge = false;
-  const int span = 24;  // >= footprint width + 2: B <= 16 (grid_for)
+  const int span = 24;  // >= footprint width + 2: at most P s + 6 <= 22 (s <= 1, grid_for)
   float rows[3][span];
   int width = t1.x - t0.x + 3;
   for (int y = t0.y - 1; y <= t1.y + 1; ++y) {

@@ -1,7 +1,6 @@
 #include "systems/composite/compose_tiles.h"
 
-#include <algorithm>
-#include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "engine/gpu/shader_program.h"
@@ -14,10 +13,16 @@ constexpr GLsizeiptr count_bytes = class_slots * sizeof(GLuint);
 }  // namespace
 
 ComposeTiles::Grid ComposeTiles::grid_for(glm::ivec2 view, glm::ivec2 layer) {
+  if (view.x <= 0 || view.y <= 0 || layer.x <= 0 || layer.y <= 0 || layer.x > view.x ||
+      layer.y > view.y)
+    throw std::invalid_argument("compose tiles: a layer of " + std::to_string(layer.x) + "x" +
+                                std::to_string(layer.y) + " for a view of " +
+                                std::to_string(view.x) + "x" + std::to_string(view.y) +
+                                " (expected a non-empty layer no larger than the view)");
   Grid g;
+  g.view = view;
   g.texels_per_pixel = glm::vec2(layer) / glm::vec2(view);
-  g.tile_texels = std::max(1, static_cast<int>(std::lround(16.0 * g.texels_per_pixel.x)));
-  g.tiles = (layer + g.tile_texels - 1) / g.tile_texels;
+  g.tiles = (view + tile_pixels - 1) / tile_pixels;
   return g;
 }
 
@@ -47,23 +52,34 @@ void ComposeTiles::classify(const Grid& grid, const Classify& how, int slot) {
   auto loc = [&](const char* name) { return gpu::uniform_location(p, name); };
   glUniform2i(loc("u_tiles"), grid.tiles.x, grid.tiles.y);
   glUniform1i(loc("u_tile_count"), capacity_[s]);
-  glUniform1i(loc("u_tile_texels"), grid.tile_texels);
+  glUniform1i(loc("u_tile_pixels"), tile_pixels);
+  glUniform2i(loc("u_view_size"), grid.view.x, grid.view.y);
+  glUniform2f(loc("u_texels_per_pixel"), grid.texels_per_pixel.x, grid.texels_per_pixel.y);
   glUniform1f(loc("u_depth_tolerance"), how.depth_tolerance);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lists_[s].get());
   glDispatchCompute(static_cast<GLuint>((grid.tiles.x + 7) / 8), static_cast<GLuint>((grid.tiles.y + 7) / 8), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void ComposeTiles::draw(GLuint program, const Grid& grid, unsigned cls, int slot) {
+void ComposeTiles::draw(GLuint program, const Grid& grid, unsigned cls, int slot,
+                        glm::ivec2 origin) {
   const size_t s = static_cast<size_t>(slot);
   auto loc = [&](const char* name) { return glGetUniformLocation(program, name); };
   glUniform1i(loc("u_class"), static_cast<GLint>(cls));
   glUniform1i(loc("u_tile_count"), capacity_[s]);
+  glUniform1i(loc("u_tile_pixels"), tile_pixels);
   glUniform2i(loc("u_tiles"), grid.tiles.x, grid.tiles.y);
-  glUniform1i(loc("u_tile_texels"), grid.tile_texels);
-  glUniform2f(loc("u_texels_per_pixel"), grid.texels_per_pixel.x, grid.texels_per_pixel.y);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lists_[s].get());
-  glDrawArrays(GL_TRIANGLES, 0, 6 * grid.count());
+  // The viewport spans whole tiles, so that every tile's centre (the point's vertex, which
+  // decides whether a point is clipped) lies inside it; the scissor keeps the view's pixels.
+  glViewport(origin.x, origin.y, grid.tiles.x * tile_pixels, grid.tiles.y * tile_pixels);
+  glScissor(origin.x, origin.y, grid.view.x, grid.view.y);
+  glEnable(GL_SCISSOR_TEST);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glDrawArrays(GL_POINTS, 0, grid.count());
+  glDisable(GL_PROGRAM_POINT_SIZE);
+  glDisable(GL_SCISSOR_TEST);
+  glViewport(origin.x, origin.y, grid.view.x, grid.view.y);
 }
 
 }  // namespace pyro

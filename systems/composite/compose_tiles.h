@@ -4,8 +4,9 @@
 // On llvmpipe a fragment shader pays for every instruction on every pixel, branches and discards
 // included, so work is skipped per pixel only by not rasterising it: a compute pass
 // (content/shaders/compose_tiles.comp, which says what decides a class) appends each tile to its
-// class's list, and each class is drawn with its variant by one draw of tile quads
-// (content/shaders/compose_tile.vert). Tiles without media or without fire give exactly the full
+// class's list, and each class is drawn with its variant by one draw of point sprites, a tile
+// each (content/shaders/compose_tile.vert): llvmpipe rasterises a point as one square, where a
+// quad's two triangles cost a fifth more on its diagonal's blocks. Tiles without media or without fire give exactly the full
 // variant's image; depth edges are found in the layer's depths, so geometry thinner than a layer
 // texel can differ (the comp file says how): tests/composite/compose_tiles_test.cpp bounds it.
 #include <array>
@@ -23,13 +24,16 @@ class ComposeTiles {
   static constexpr std::array<unsigned, 5> classes = {0u, media, media | edge, media | fire,
                                                       media | edge | fire};
 
+  // Square tiles of tile_pixels from the view's lower-left corner; the last column and row may
+  // reach past the view (the draw scissors them to it).
+  static constexpr int tile_pixels = 16;
   struct Grid {
-    int tile_texels = 1;                 // B: layer texels per tile side
-    glm::vec2 texels_per_pixel{1.0f};    // s, per axis
+    glm::ivec2 view{0};                  // pixels
+    glm::vec2 texels_per_pixel{1.0f};    // s = layer size / view size, per axis (at most 1)
     glm::ivec2 tiles{0};                 // across and up
     int count() const { return tiles.x * tiles.y; }
   };
-  // About 16 pixels a side whatever the layer scale.
+  // Throws std::invalid_argument for an empty view or a layer larger than the view.
   static Grid grid_for(glm::ivec2 view, glm::ivec2 layer);
 
   struct Classify {
@@ -42,8 +46,9 @@ class ComposeTiles {
   // views' depth and media textures on compose.frag's units.
   void classify(const Grid& grid, const Classify& how, int slot);
   // Draws class `cls` of list set `slot` with `program` (a compose.frag variant linked with
-  // compose_tile.vert, in use, its other uniforms set).
-  void draw(GLuint program, const Grid& grid, unsigned cls, int slot);
+  // compose_tile.vert, in use, its other uniforms set) into the view whose lower-left corner is
+  // `origin` in the bound framebuffer. Leaves the viewport on the view, the scissor test off.
+  void draw(GLuint program, const Grid& grid, unsigned cls, int slot, glm::ivec2 origin);
 
  private:
   std::array<gpu::Buffer, 2> lists_;

@@ -161,7 +161,7 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
     if ((f.depth_aware && !all.depth_aware) || (f.shimmer && !all.shimmer)) continue;  // never filled
     const gpu::Program& program = variant(use_left, use_right, f);
     draw_with(program);
-    tiles_.draw(program.get(), grid, cls, slot);
+    tiles_.draw(program.get(), grid, cls, slot, {x, y});
   }
   glUseProgram(0);
 }

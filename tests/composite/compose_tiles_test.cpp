@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "components/explosion_shading.h"
@@ -65,17 +66,20 @@ Difference compare(const std::vector<T>& a, const std::vector<T>& b, double step
   return {std::sqrt(sum / (3.0 * pixels)), over / pixels};
 }
 
-TEST(ComposeTiles, GridIsAboutSixteenPixelsPerTileAtEveryScale) {
+TEST(ComposeTiles, GridCoversTheViewInWholeTiles) {
   for (int layer : {512, 256, 128, 64}) {
     const ComposeTiles::Grid g = ComposeTiles::grid_for({512, 512}, {layer, layer});
-    EXPECT_NEAR(g.tile_texels / g.texels_per_pixel.x, 16.0, 1e-6) << layer;
-    EXPECT_EQ(g.tiles.x * g.tile_texels, layer);
+    EXPECT_EQ(g.tiles, glm::ivec2(512 / ComposeTiles::tile_pixels)) << layer;
+    EXPECT_FLOAT_EQ(g.texels_per_pixel.x, layer / 512.0f) << layer;
   }
-  // A layer size the tile does not divide: the last tile is partial, none is left out.
+  // A view the tile does not divide: the last column and row reach past it, none is left out.
   const ComposeTiles::Grid odd = ComposeTiles::grid_for({300, 200}, {38, 25});
-  EXPECT_GE(odd.tiles.x * odd.tile_texels, 38);
-  EXPECT_LT((odd.tiles.x - 1) * odd.tile_texels, 38);
-  EXPECT_GE(odd.tiles.y * odd.tile_texels, 25);
+  EXPECT_GE(odd.tiles.x * ComposeTiles::tile_pixels, 300);
+  EXPECT_LT((odd.tiles.x - 1) * ComposeTiles::tile_pixels, 300);
+  EXPECT_GE(odd.tiles.y * ComposeTiles::tile_pixels, 200);
+  EXPECT_LT((odd.tiles.y - 1) * ComposeTiles::tile_pixels, 200);
+  EXPECT_THROW(ComposeTiles::grid_for({64, 64}, {65, 64}), std::invalid_argument);
+  EXPECT_THROW(ComposeTiles::grid_for({0, 64}, {0, 64}), std::invalid_argument);
 }
 
 TEST(ComposeTiles, TiledImageMatchesTheFullVariantMono) {
@@ -101,28 +105,38 @@ TEST(ComposeTiles, TiledImageMatchesTheFullVariantInStereo) {
   }
 }
 
-TEST(ComposeTiles, WithoutTheFeaturesTheClassesNeedTheImageIsExact) {
-  // Bilinear upsampling and no shimmer: only "media" and "scene alone" tiles, both exact.
+// Bilinear upsampling and no shimmer: only "media" and "scene alone" tiles, both exact. The views
+// are sized so that the tiles do not divide them, side by side as well: a pixel left out or a
+// tile spilling into the other view would show.
+std::vector<uint8_t> render_plain(glm::ivec2 size, StereoMode mode, bool tiles) {
   const SceneDescription scene = load_scene(std::string(PYRO_SOURCE_DIR) + "/content/scenes/explosion.json");
-  std::vector<std::vector<uint8_t>> out;
-  for (bool tiles : {true, false}) {
-    RuntimeOptions o;
-    o.width_override = o.height_override = 192;
-    o.layer_scale = 0.25f;
-    SceneRuntime run(scene, o);
-    MediaComposition m;
-    m.tiles = tiles;
-    m.depth_aware = false;
-    run.world().set_resource<MediaComposition>(m);
-    ExplosionShading shading;
-    shading.shimmer = 0.0f;
-    run.world().set_resource<ExplosionShading>(shading);
-    for (int f = 0; f < 8; ++f) run.step();
-    out.push_back(run.world().resource<GpuFrame>().output->read_rgba8());
+  RuntimeOptions o;
+  o.width_override = size.x;
+  o.height_override = size.y;
+  o.layer_scale = 0.25f;
+  o.stereo_mode = mode;
+  SceneRuntime run(scene, o);
+  MediaComposition m;
+  m.tiles = tiles;
+  m.depth_aware = false;
+  run.world().set_resource<MediaComposition>(m);
+  ExplosionShading shading;
+  shading.shimmer = 0.0f;
+  run.world().set_resource<ExplosionShading>(shading);
+  for (int f = 0; f < 8; ++f) run.step();
+  return run.world().resource<GpuFrame>().output->read_rgba8();
+}
+
+TEST(ComposeTiles, WithoutTheFeaturesTheClassesNeedTheImageIsExact) {
+  for (StereoMode mode : {StereoMode::mono, StereoMode::side_by_side}) {
+    for (glm::ivec2 size : {glm::ivec2(192, 192), glm::ivec2(203, 141)}) {
+      const std::vector<uint8_t> tiled = render_plain(size, mode, true);
+      const std::vector<uint8_t> full = render_plain(size, mode, false);
+      const Difference d = compare(tiled, full, 1.0);
+      EXPECT_EQ(d.share_over_one_step, 0.0) << size.x << " " << static_cast<int>(mode);
+      EXPECT_LT(d.rmse, 1.0 / 255.0) << size.x << " " << static_cast<int>(mode);
+    }
   }
-  const Difference d = compare(out[0], out[1], 1.0);
-  EXPECT_EQ(d.share_over_one_step, 0.0);
-  EXPECT_LT(d.rmse, 1.0 / 255.0);
 }
 
 }  // namespace
