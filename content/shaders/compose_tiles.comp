@@ -85,7 +85,7 @@ uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
   // Depth edges: second differences of the layer's view depths along x and y, row by row (three
   // rows kept), at every footprint texel.
   bool edge = false;
-  const int span = 24;  // >= footprint width + 2: at most P s + 6 <= 22 (s <= 1, grid_for)
+  const int span = 40;  // >= footprint width + 2: at most P s + 6 <= 38 (P = 32, s <= 1: grid_for)
   float rows[3][span];
   int width = t1.x - t0.x + 3;
   for (int y = t0.y - 1; y <= t1.y + 1; ++y) {
