@@ -37,10 +37,17 @@ MeshData make_ground_plane(float h) {
 }
 
 MeshData make_box(const glm::vec3& lo, const glm::vec3& hi) {
+  return make_slanted_box({lo.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, hi.y, lo.z},
+                          {hi.x, hi.y, hi.z});
+}
+
+MeshData make_slanted_box(const glm::vec3& bottom_lo, const glm::vec3& bottom_hi,
+                          const glm::vec3& top_lo, const glm::vec3& top_hi) {
   MeshData m;
-  const glm::vec3 p000{lo.x, lo.y, lo.z}, p100{hi.x, lo.y, lo.z}, p010{lo.x, hi.y, lo.z},
-      p110{hi.x, hi.y, lo.z}, p001{lo.x, lo.y, hi.z}, p101{hi.x, lo.y, hi.z},
-      p011{lo.x, hi.y, hi.z}, p111{hi.x, hi.y, hi.z};
+  const glm::vec3 p000{bottom_lo.x, bottom_lo.y, bottom_lo.z}, p100{bottom_hi.x, bottom_lo.y, bottom_lo.z},
+      p001{bottom_lo.x, bottom_lo.y, bottom_hi.z}, p101{bottom_hi.x, bottom_lo.y, bottom_hi.z},
+      p010{top_lo.x, top_lo.y, top_lo.z}, p110{top_hi.x, top_lo.y, top_lo.z},
+      p011{top_lo.x, top_lo.y, top_hi.z}, p111{top_hi.x, top_lo.y, top_hi.z};
   add_quad(m, p001, p101, p111, p011);  // +z
   add_quad(m, p100, p000, p010, p110);  // -z
   add_quad(m, p101, p100, p110, p111);  // +x
@@ -102,16 +109,13 @@ MeshData make_cone(float r, float y0, float y1, int segments) {
 MeshData make_water_tower() {
   MeshData m;
   const float leg = 0.09f, foot = 0.95f, head = 0.7f, top = 4.0f;
-  // Four slanted legs, each built from short boxes stacked along the slant.
-  const int pieces = 8;
+  // Four slanted legs, a slanted box each (12 triangles: the vertex and setup work of a small
+  // mesh dominates its cost on llvmpipe).
   for (int sx : {-1, 1}) {
     for (int sz : {-1, 1}) {
-      for (int k = 0; k < pieces; ++k) {
-        const float t0 = static_cast<float>(k) / pieces, t1 = static_cast<float>(k + 1) / pieces;
-        const float o = foot + (head - foot) * (t0 + t1) / 2.0f;
-        const glm::vec3 c{sx * o, 0, sz * o};
-        m.append(make_box({c.x - leg, top * t0, c.z - leg}, {c.x + leg, top * t1, c.z + leg}));
-      }
+      const glm::vec3 b{sx * foot, 0.0f, sz * foot}, t{sx * head, top, sz * head};
+      m.append(make_slanted_box(b - glm::vec3(leg, 0, leg), b + glm::vec3(leg, 0, leg),
+                                t - glm::vec3(leg, 0, leg), t + glm::vec3(leg, 0, leg)));
     }
   }
   // Horizontal braces between the legs at two heights.

@@ -17,11 +17,20 @@ struct MeshData {
   void append(const MeshData& other, const glm::vec3& offset = glm::vec3(0.0f), float scale = 1.0f);
 };
 
+// Every triangle winds counter-clockwise seen from the side its normals point to (outwards on
+// the closed meshes: box, cylinder, cone), so back faces may be culled.
+
 // A square in the y = 0 plane with half side `half_size`, normal +y.
 MeshData make_ground_plane(float half_size);
 
 // A box between corners lo and hi, with flat faces.
 MeshData make_box(const glm::vec3& lo, const glm::vec3& hi);
+
+// A box whose horizontal bottom face spans bottom_lo..bottom_hi in x and z at height bottom_lo.y,
+// and top face top_lo..top_hi at top_lo.y: sheared or tapered, its faces flat where opposite
+// sides stay parallel (a sheared box: a slanted leg).
+MeshData make_slanted_box(const glm::vec3& bottom_lo, const glm::vec3& bottom_hi,
+                          const glm::vec3& top_lo, const glm::vec3& top_hi);
 
 // A capped cylinder about the y axis from y0 to y1 (smooth sides).
 MeshData make_cylinder(float radius, float y0, float y1, int segments);

@@ -28,6 +28,10 @@ const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(MeshKind kind) {
   glNamedBufferStorage(g.indices.get(), static_cast<GLsizeiptr>(data.indices.size() * sizeof(uint32_t)),
                        data.indices.data(), 0);
   g.index_count = static_cast<GLsizei>(data.indices.size());
+  // The ground is a single sheet, shaded on both sides (mesh.frag); the tower is closed, wound
+  // counter-clockwise outside (engine/mesh/mesh_data.h), and culling its back faces halves its
+  // rasterisation (on llvmpipe, 1.1 -> 0.7 ms at 512x512).
+  g.closed = kind != MeshKind::ground_plane;
   g.vao = gpu::make_vertex_array();
   const GLuint vao = g.vao.get();
   glVertexArrayVertexBuffer(vao, 0, g.vertices.get(), 0, 6 * sizeof(float));
@@ -52,7 +56,7 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
   glUseProgram(program_.get());
   glUniformMatrix4fv(gpu::uniform_location(program_, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(frame.view_projection));
@@ -68,9 +72,17 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
     glUniform3fv(offset, 1, glm::value_ptr(m.position));
     glUniform1f(scale, m.scale);
     glUniform3fv(albedo, 1, glm::value_ptr(m.color));
+    if (g.closed) {
+      glEnable(GL_CULL_FACE);
+      glFrontFace(m.scale < 0.0f ? GL_CW : GL_CCW);  // a mirroring scale turns the winding
+    } else {
+      glDisable(GL_CULL_FACE);
+    }
     glBindVertexArray(g.vao.get());
     glDrawElements(GL_TRIANGLES, g.index_count, GL_UNSIGNED_INT, nullptr);
   }
+  glDisable(GL_CULL_FACE);
+  glFrontFace(GL_CCW);
   glBindVertexArray(0);
 }
 

@@ -23,6 +23,7 @@ class MeshRenderer {
     gpu::Buffer vertices, indices;
     gpu::VertexArray vao;
     GLsizei index_count = 0;
+    bool closed = false;  // seen only from outside: back faces culled
   };
   const GpuMesh& mesh_for(MeshKind kind);
 
