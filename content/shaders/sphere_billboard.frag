@@ -23,7 +23,7 @@
 // L = I (1 - alpha) + alpha a C + alpha (1 - a) L_e, written premultiplied as
 // (alpha a C + alpha (1 - a) L_e, alpha):
 //   1, dust and smoke: L_e = 0; C = E P(mu) T_light + ambient, P the Cornette-Shanks phase
-//      function from the table engine/math/phase_function.h makes (texture over cos theta and g),
+//      function (cornette_shanks below),
 //      T_light the light's transmittance from the sphere's surface to the middle of the ray's
 //      segment; opacity perturbed by the detail noise;
 //   2, fire: a = 0; L_e from the black-body table engine/math/blackbody.h makes, at the
@@ -49,10 +49,8 @@ uniform vec4 u_projection_terms;  // P[0][0], P[1][1], P[2][0], P[2][1] (off-axi
 uniform float u_near;
 uniform float u_far;
 
-layout(binding = 2) uniform sampler2D u_phase;      // p(mu, g): x over mu in [-1, 1], y over g
 layout(binding = 3) uniform sampler1D u_blackbody;  // emitted radiance over [T_min, T_max]
 layout(binding = 4) uniform sampler2D u_detail;     // periodic noise slice in [0, 1], rg
-uniform vec4 u_phase_range;     // g_min, g_max, cos texels, g texels
 uniform vec3 u_light_view;      // direction the light travels, view space, unit
 uniform vec3 u_light_irradiance;  // E, linear rgb
 uniform vec3 u_ambient;
@@ -69,6 +67,18 @@ layout(location = 0) out vec4 o_color;
 // the nodes).
 float node_coord(float x, float lo, float hi, float n) {
   return (clamp((x - lo) / (hi - lo), 0.0, 1.0) * (n - 1.0) + 0.5) / n;
+}
+
+// Cornette & Shanks 1992, eq. 8, the paper's section 3.1 formula (engine/math/phase_function.h
+// says why it is not Henyey-Greenstein), per steradian, its integral over the sphere 1:
+// p(mu) = 3/(8 pi) (1 - g^2) (1 + mu^2) / ((2 + g^2) (1 + g^2 - 2 g mu)^(3/2)).
+// In closed form rather than the paper's (mu, g) texture: exact, and cheaper than a filtered
+// fetch on a CPU rasteriser.
+float cornette_shanks(float mu, float g) {
+  const float pi = 3.14159265358979;
+  float g2 = g * g;
+  float k = 1.0 + g2 - 2.0 * g * mu;
+  return 3.0 / (8.0 * pi) * (1.0 - g2) * (1.0 + mu * mu) / ((2.0 + g2) * k * sqrt(k));
 }
 
 float view_depth(float window_depth) {
@@ -132,9 +142,7 @@ void main() {
   alpha = clamp(alpha * (1.0 + u_detail_amplitude * (2.0 * n - 1.0)), 0.0, 1.0);
   vec3 to_eye = -normalize(dir);
   float mu = dot(u_light_view, to_eye);  // photon's direction before and after scattering
-  float phase = texture(u_phase, vec2(node_coord(mu, -1.0, 1.0, u_phase_range.z),
-                                      node_coord(u_g, u_phase_range.x, u_phase_range.y,
-                                                 u_phase_range.w))).r;
+  float phase = cornette_shanks(mu, u_g);
   // Light's path inside the sphere, from the middle of the visible segment towards the light.
 #if PLANAR
   float middle = b / a;

@@ -69,24 +69,4 @@ SphereIntegral integrate_over_sphere(PhaseFunction f, double g, int cos_interval
   return s;
 }
 
-PhaseTable make_phase_table(PhaseFunction f, int cos_size, int g_size, double g_min, double g_max) {
-  if (cos_size < 2 || g_size < 2 || !(g_min > -1.0) || !(g_max < 1.0) || !(g_max >= g_min))
-    throw std::invalid_argument("make_phase_table: need sizes >= 2 and -1 < g_min <= g_max < 1");
-  PhaseTable t;
-  t.function = f;
-  t.cos_size = cos_size;
-  t.g_size = g_size;
-  t.g_min = g_min;
-  t.g_max = g_max;
-  t.values.resize(static_cast<std::size_t>(cos_size) * g_size);
-  for (int r = 0; r < g_size; ++r) {
-    const double g = g_min + (g_max - g_min) * r / (g_size - 1);
-    for (int c = 0; c < cos_size; ++c) {
-      const double mu = -1.0 + 2.0 * c / (cos_size - 1);
-      t.values[static_cast<std::size_t>(r) * cos_size + c] = static_cast<float>(phase(f, mu, g));
-    }
-  }
-  return t;
-}
-
 }  // namespace pyro

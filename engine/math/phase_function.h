@@ -43,16 +43,4 @@ struct SphereIntegral {
 SphereIntegral integrate_over_sphere(PhaseFunction f, double g, int cos_intervals = 4096,
                                      int azimuth_steps = 96);
 
-// The paper's 2D lookup texture (section 3.1: "fetched from a prepared 2D texture addressed by
-// cos θ and g"): rows over g in [g_min, g_max], columns over μ in [−1, 1], node values p(μ, g)
-// (units 1/sr), row-major, row r at g = g_min + r (g_max − g_min) / (rows − 1).
-struct PhaseTable {
-  PhaseFunction function = PhaseFunction::henyey_greenstein;
-  int cos_size = 0, g_size = 0;
-  double g_min = -0.9, g_max = 0.9;
-  std::vector<float> values;  // g_size × cos_size
-};
-PhaseTable make_phase_table(PhaseFunction f, int cos_size = 128, int g_size = 64,
-                            double g_min = -0.9, double g_max = 0.9);
-
 }  // namespace pyro

@@ -11,7 +11,6 @@
 #include "engine/gpu/shader_program.h"
 #include "engine/math/blackbody.h"
 #include "engine/math/detail_noise.h"
-#include "engine/math/phase_function.h"
 
 namespace pyro {
 
@@ -32,15 +31,6 @@ void split_by_medium(const DrawList& list, std::array<DrawList, 3>& out) {
 
 ExplosionRenderer::ExplosionRenderer(const ExplosionShading& shading)
     : shading_(shading) {
-  // The paper's 2D phase texture over (cos theta, g), Cornette-Shanks (section 3.1's formula).
-  const PhaseTable phase = make_phase_table(PhaseFunction::cornette_shanks, 128, 64);
-  phase_g_min_ = static_cast<float>(phase.g_min);
-  phase_g_max_ = static_cast<float>(phase.g_max);
-  phase_cos_size_ = phase.cos_size;
-  phase_g_size_ = phase.g_size;
-  phase_ = gpu::make_texture(GL_TEXTURE_2D);
-  glTextureStorage2D(phase_.get(), 1, GL_R32F, phase.cos_size, phase.g_size);
-  glTextureSubImage2D(phase_.get(), 0, 0, 0, phase.cos_size, phase.g_size, GL_RED, GL_FLOAT, phase.values.data());
   // Black-body emission over the fire's range: chromaticity times luminance relative to T_max.
   const int bb_size = 128;
   const BlackbodyTable bb = make_blackbody_table(shading.fire_t_min, shading.fire_t_max, bb_size);
@@ -57,14 +47,11 @@ ExplosionRenderer::ExplosionRenderer(const ExplosionShading& shading)
   detail_volume_ = make_detail_noise(64, 4, 3, 0x5eedull);
   detail_ = gpu::make_texture(GL_TEXTURE_2D);
   glTextureStorage2D(detail_.get(), 1, GL_RG16F, detail_volume_.size, detail_volume_.size);
-  for (GLuint t : {phase_.get(), blackbody_.get(), detail_.get()}) {
+  for (GLuint t : {blackbody_.get(), detail_.get()}) {
     glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   }
-  for (GLuint t : {phase_.get(), blackbody_.get()}) {
-    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
+  glTextureParameteri(blackbody_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T})
     glTextureParameteri(detail_.get(), w, GL_REPEAT);
 }
@@ -121,12 +108,9 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     glUniform3fv(loc("u_light_view"), 1, glm::value_ptr(light));
     glUniform3fv(loc("u_light_irradiance"), 1, glm::value_ptr(irradiance));
     glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(settings.ambient));
-    glUniform4f(loc("u_phase_range"), phase_g_min_, phase_g_max_, static_cast<float>(phase_cos_size_),
-                static_cast<float>(phase_g_size_));
     glUniform1f(loc("u_detail_frequency"), shading_.detail_frequency);
     glUniform4f(loc("u_fire"), shading_.fire_t_min, shading_.fire_t_max, shading_.fire_scale, shading_.fire_bias);
     glUniform1f(loc("u_fire_detail_range"), shading_.fire_detail_range);
-    glBindTextureUnit(2, phase_.get());
     glBindTextureUnit(3, blackbody_.get());
     glBindTextureUnit(4, detail_.get());
     const MediumShading& s = shading_.media[m];

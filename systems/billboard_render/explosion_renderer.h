@@ -1,8 +1,8 @@
 #pragma once
 // GPU state of explosion shading (Umenhoffer et al. 2006, sections 3 and 4): spherical (or, for
 // comparison, planar) billboards of dust, smoke and fire, each medium into its own layer, shaded
-// by eq. 1 through tables made in engine/math: the Cornette-Shanks phase table, the black-body
-// table and the detail-noise volume (its slice at each frame's time).
+// by eq. 1: the Cornette-Shanks phase function in closed form (in the shader), and tables made in
+// engine/math: the black-body table and the detail-noise volume (its slice at each frame's time).
 #include <array>
 #include <memory>
 
@@ -39,11 +39,9 @@ class ExplosionRenderer {
   std::array<InstanceBuffer, 3> instances_;
   std::array<DrawList, 3> split_;
   void upload_detail_slice(double time);
-  gpu::Texture phase_, blackbody_, detail_;
+  gpu::Texture blackbody_, detail_;
   DetailNoise detail_volume_;
   float detail_time_ = -1.0f;
-  float phase_g_min_ = 0.0f, phase_g_max_ = 0.0f;
-  int phase_cos_size_ = 0, phase_g_size_ = 0;
 };
 
 }  // namespace pyro

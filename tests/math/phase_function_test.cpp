@@ -57,13 +57,5 @@ TEST(PhaseFunction, PapersFormulaIsCornetteShanks) {
     }
 }
 
-TEST(PhaseFunction, TableHoldsNodeValues) {
-  const PhaseTable t = make_phase_table(PhaseFunction::cornette_shanks, 33, 19);
-  ASSERT_EQ(t.values.size(), 33u * 19u);
-  // Row 9 is g = 0, column 32 is μ = 1.
-  EXPECT_NEAR(t.values[9 * 33 + 32], cornette_shanks(1.0, 0.0), 1e-7);
-  EXPECT_NEAR(t.values[18 * 33 + 0], cornette_shanks(-1.0, 0.9), 1e-7);
-}
-
 }  // namespace
 }  // namespace pyro

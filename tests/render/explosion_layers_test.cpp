@@ -44,26 +44,33 @@ SceneDescription dust_scene(const glm::vec3& at, float radius, float tau) {
 }
 
 TEST(ExplosionShading, DustCentrePixelFollowsEquationOne) {
-  const float r = 0.6f, tau = 1.2f;
-  const SceneDescription s = dust_scene({0, 0, -3}, r, tau);
-  SceneRuntime run(s);
-  ExplosionShading shading;
-  for (MediumShading& m : shading.media) m.detail_amplitude = 0.0f;
-  run.world().set_resource<ExplosionShading>(shading);
-  run.step();
-  const FrameImage& img = run.image();
-  const int x = img.width / 2, y = img.height / 2;
-  // The centre pixel's ray passes within half a pixel of the centre: d ~ 0, ds ~ 2r.
-  const float alpha = 1.0f - std::exp(-tau * 2.0f * r);
-  const glm::vec3 light = glm::normalize(s.light.direction);
-  const double mu = glm::dot(light, glm::vec3(0, 0, 1));  // towards the eye: +z
-  const double p = cornette_shanks(mu, 0.0);
-  // From the centre towards the light the chord is r.
-  const double c = shading.light_irradiance * p * std::exp(-tau * r) + 0.1;
-  const double expected = alpha * shading.media[0].albedo * c;
-  const float* px = &img.rgba[4 * (static_cast<size_t>(y) * img.width + x)];
-  EXPECT_NEAR(px[0], expected, 0.02 * expected);
-  EXPECT_NEAR(px[1], expected, 0.02 * expected);
+  // The phase function's parameter g as the paper's (0) and either side: the shader's closed
+  // form against engine/math's.
+  for (float g : {0.0f, 0.6f, -0.5f}) {
+    const float r = 0.6f, tau = 1.2f;
+    const SceneDescription s = dust_scene({0, 0, -3}, r, tau);
+    SceneRuntime run(s);
+    ExplosionShading shading;
+    for (MediumShading& m : shading.media) {
+      m.detail_amplitude = 0.0f;
+      m.g = g;
+    }
+    run.world().set_resource<ExplosionShading>(shading);
+    run.step();
+    const FrameImage& img = run.image();
+    const int x = img.width / 2, y = img.height / 2;
+    // The centre pixel's ray passes within half a pixel of the centre: d ~ 0, ds ~ 2r.
+    const float alpha = 1.0f - std::exp(-tau * 2.0f * r);
+    const glm::vec3 light = glm::normalize(s.light.direction);
+    const double mu = glm::dot(light, glm::vec3(0, 0, 1));  // towards the eye: +z
+    const double p = cornette_shanks(mu, g);
+    // From the centre towards the light the chord is r.
+    const double c = shading.light_irradiance * p * std::exp(-tau * r) + 0.1;
+    const double expected = alpha * shading.media[0].albedo * c;
+    const float* px = &img.rgba[4 * (static_cast<size_t>(y) * img.width + x)];
+    EXPECT_NEAR(px[0], expected, 0.02 * expected) << g;
+    EXPECT_NEAR(px[1], expected, 0.02 * expected) << g;
+  }
 }
 
 // Returns the largest particle light on pixels of the opaque plane farther than `bound` pixels
