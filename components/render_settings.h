@@ -35,6 +35,9 @@ struct RenderSettings {
   StereoMode stereo_mode = StereoMode::mono;
   // Motion blur: output = (1 - b) new + b previous output, linear (scene key render.motion_blur).
   float motion_blur = 0.0f;
+  // Spherical and planar billboards as point sprites where they fit, else quads
+  // (systems/billboard_render/sphere_billboard_programs.h); off: quads throughout, to compare.
+  bool billboard_sprites = true;
   // explosion: dust, smoke and fire each in its own layer at layer_scale (components/gpu_frame.h).
   ParticleShading shading = ParticleShading::color;
   bool media_layers() const {

@@ -15,9 +15,6 @@
 #ifndef SHADING
 #define SHADING 0
 #endif
-#ifndef CELLS
-#define CELLS 0  // 1: the target is an atlas of layers (sphere_billboard.vert); ours from u_cell_origin
-#endif
 //
 // SHADING 1 and 2 shade explosion media (section 3) by eq. 1,
 // L = I (1 - alpha) + alpha a C + alpha (1 - a) L_e, written premultiplied as
@@ -39,12 +36,8 @@ flat in vec4 v_medium;  // temperature, opacity, medium, detail key
 
 layout(binding = 1) uniform sampler2D u_scene_depth;  // window depth of the opaque scene
 uniform vec2 u_depth_scale;     // scene-depth texels per target pixel
-uniform vec2 u_viewport;        // target (CELLS: cell) size in pixels
-#if CELLS
-uniform float u_cell_origin;    // the cell's first column in the atlas
-#else
-const float u_cell_origin = 0.0;
-#endif
+uniform vec2 u_viewport;        // target size in pixels (a cell of the media atlas, or all of it)
+uniform vec2 u_target_origin;   // its lower-left corner in the framebuffer
 uniform vec4 u_projection_terms;  // P[0][0], P[1][1], P[2][0], P[2][1] (off-axis terms)
 uniform float u_near;
 uniform float u_far;
@@ -87,7 +80,7 @@ float view_depth(float window_depth) {
 }
 
 void main() {
-  vec2 frag = gl_FragCoord.xy - vec2(u_cell_origin, 0.0);  // in the layer
+  vec2 frag = gl_FragCoord.xy - u_target_origin;  // in the target
   vec2 ndc = frag / u_viewport * 2.0 - 1.0;
   // The ray through this pixel, scaled so that its parameter is the view depth.
   vec3 dir = vec3((ndc.x + u_projection_terms.z) / u_projection_terms.x,

@@ -1,23 +1,25 @@
 #version 450 core
 // Spherical billboards (Umenhoffer, Szirmay-Kalos & Szijarto 2006, section 2): each particle is
-// a sphere of radius r; its quad only has to cover the sphere's image, and the fragment shader
-// finds the real path length of the pixel's ray inside the sphere.
-// Unlike the paper's quad (perpendicular to z at the sphere's far point, half size r), ours is
-// perpendicular to the eye-to-centre axis at distance D + r with half size r (D + r) / sqrt(D^2 -
-// r^2): it contains the tangent cone, so the whole silhouette is covered under perspective, and
-// it lies behind every point of the sphere, so the near plane never cuts it before the sphere.
-// An eye inside (or very near) the sphere gets a full-viewport quad.
+// a sphere of radius r; its primitive only has to cover the sphere's image, and the fragment
+// shader finds the real path length of the pixel's ray inside the sphere.
+//
+// Two primitives, chosen per particle by the caller (systems/billboard_render/
+// sphere_billboard_programs.cpp) and drawn in runs that keep the back-to-front order:
+// - a point sprite (u_sprite 1, one vertex) over the exact screen rectangle of the sphere's
+//   image (engine/math/projected_sphere.h derives it), for spheres wholly in front of the near
+//   plane whose sprite fits the implementation's largest point size. One square per particle:
+//   llvmpipe shades the 4x4 blocks a quad's diagonal crosses once for each of its triangles.
+// - a quad (u_sprite 0, a 4-vertex strip) otherwise. Unlike the paper's quad (perpendicular to
+//   z at the sphere's far point, half size r), ours is perpendicular to the eye-to-centre axis at
+//   distance D + r with half size r (D + r) / sqrt(D^2 - r^2): it contains the tangent cone, so
+//   the whole silhouette is covered under perspective, and it lies behind every point of the
+//   sphere, so the near plane never cuts it before the sphere. An eye inside (or very near) the
+//   sphere gets a quad over the whole target.
 // PLANAR 1 (a define: see sphere_billboard.frag) draws the classic planar billboard instead
-// (through the centre, facing the viewplane, depth tested) for comparison.
+// (through the centre, facing the viewplane, depth tested) for comparison: a square of half side
+// r at the centre's depth, as a sprite of its screen size or as a quad.
 #ifndef PLANAR
 #define PLANAR 0
-#endif
-// CELLS 1 (explosion media): the target is an atlas of layers side by side; this draw's layer is
-// the cell of u_viewport's size from column u_cell_origin. The view maps onto the cell, whose
-// sides clip (gl_ClipDistance 0 and 1: GL_CLIP_DISTANCE0/1 enabled), so no billboard spills into
-// its neighbour.
-#ifndef CELLS
-#define CELLS 0
 #endif
 layout(location = 0) in vec4 a_center_radius;  // world xyz, radius
 layout(location = 1) in vec4 a_color_tau;      // linear rgb, extinction tau (1 / length)
@@ -25,22 +27,28 @@ layout(location = 2) in vec4 a_medium;  // temperature K, opacity, medium, detai
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
-#if CELLS
-uniform vec2 u_viewport;       // the cell's size in pixels
-uniform float u_cell_origin;   // its first column in the atlas
-uniform float u_atlas_width;   // the atlas's width in pixels
+uniform int u_sprite;          // 1: this draw's particles are point sprites; 0: quads
+// The target: u_viewport pixels from u_target_origin in the framebuffer (a cell of the media
+// atlas, or all of it). The GL viewport reaches u_guard pixels past the framebuffer on every side,
+// so that a sprite whose centre lies off the target but which overlaps it is not clipped with
+// its centre; the scissor keeps the target's pixels.
+uniform vec2 u_viewport;
+uniform vec2 u_target_origin;
+uniform vec4 u_gl_viewport;    // the GL viewport: x, y, width, height
 
-// Clip position q in the cell's view to the atlas: x_ndc in [-1, 1] onto the cell's columns,
-// x_window = origin + (x_ndc + 1) / 2 * cell width, written for clip coordinates (times w).
-vec4 into_cell(vec4 q) {
-  gl_ClipDistance[0] = q.w + q.x;
-  gl_ClipDistance[1] = q.w - q.x;
-  q.x = (q.x + q.w) * (u_viewport.x / u_atlas_width) + q.w * (2.0 * u_cell_origin / u_atlas_width - 1.0);
+// Clip position q of the target's view to the GL viewport: window = origin + (ndc + 1) / 2 size
+// in the target, then to the GL viewport's ndc, written for clip coordinates (times w).
+vec4 into_viewport(vec4 q) {
+  vec2 scale = u_viewport / u_gl_viewport.zw;
+  vec2 shift = 2.0 * (u_target_origin - u_gl_viewport.xy) / u_gl_viewport.zw - 1.0;
+  q.xy = (q.xy + q.w) * scale + q.w * shift;
   return q;
 }
-#else
-vec4 into_cell(vec4 q) { return q; }
-#endif
+
+// Target pixels to the GL viewport's ndc.
+vec2 pixels_to_ndc(vec2 pixels) {
+  return (pixels + u_target_origin - u_gl_viewport.xy) / u_gl_viewport.zw * 2.0 - 1.0;
+}
 
 flat out vec3 v_center;  // view space
 flat out float v_radius;
@@ -55,12 +63,33 @@ void main() {
   v_radius = r;
   v_color_tau = a_color_tau;
   v_medium = a_medium;
+  vec2 scale = vec2(u_projection[0][0], u_projection[1][1]);
+  vec2 shift = vec2(u_projection[2][0], u_projection[2][1]);
 #if PLANAR
-  gl_Position = into_cell(u_projection * vec4(p + vec3(corner * r, 0.0), 1.0));
+  if (u_sprite == 1) {
+    // The square of half side r at depth D = -p.z: half side scale * r / D in ndc.
+    vec4 q = u_projection * vec4(p, 1.0);
+    vec2 half_side = scale * (r / -p.z) * 0.5 * u_viewport;
+    gl_PointSize = 2.0 * max(half_side.x, half_side.y);
+    gl_Position = vec4(pixels_to_ndc((q.xy / q.w * 0.5 + 0.5) * u_viewport), q.z / q.w, 1.0);
+    return;
+  }
+  gl_Position = into_viewport(u_projection * vec4(p + vec3(corner * r, 0.0), 1.0));
 #else
+  if (u_sprite == 1) {
+    // engine/math/projected_sphere.h: u = (c D -+ r sqrt(c^2 + D^2 - r^2)) / (D^2 - r^2) per axis.
+    float D = -p.z;
+    float den = D * D - r * r;
+    vec2 root = sqrt(p.xy * p.xy + den);
+    vec2 lo = ((scale * (p.xy * D - r * root) / den - shift) * 0.5 + 0.5) * u_viewport;
+    vec2 hi = ((scale * (p.xy * D + r * root) / den - shift) * 0.5 + 0.5) * u_viewport;
+    gl_PointSize = max(hi.x - lo.x, hi.y - lo.y);
+    gl_Position = vec4(pixels_to_ndc(0.5 * (lo + hi)), 0.0, 1.0);
+    return;
+  }
   float d = length(p);
   if (d < 2.0 * r) {
-    gl_Position = into_cell(vec4(corner, 0.0, 1.0));
+    gl_Position = into_viewport(vec4(corner, 0.0, 1.0));
     return;
   }
   vec3 axis = p / d;
@@ -69,6 +98,6 @@ void main() {
   vec3 up = cross(right, axis);
   float distance = d + r;
   float half_size = r * distance / sqrt(d * d - r * r);
-  gl_Position = into_cell(u_projection * vec4(axis * distance + (right * corner.x + up * corner.y) * half_size, 1.0));
+  gl_Position = into_viewport(u_projection * vec4(axis * distance + (right * corner.x + up * corner.y) * half_size, 1.0));
 #endif
 }

@@ -79,7 +79,7 @@ ecs::SystemDesc billboard_render_system() {
               if (t.layer) prepare_layer(t);
               spheres.draw(lists->eyes[v], view.eyes[v], t.layer ? *t.layer : *t.scene,
                            t.scene->depth_texture(), t.scene->width(), t.scene->height(),
-                           settings.particles == ParticleShape::planar);
+                           settings.particles == ParticleShape::planar, settings.billboard_sprites);
             }
           }};
 }

@@ -84,9 +84,6 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
                              GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   }
   atlas.bind();
-  // Each cell clips its billboards at its sides (sphere_billboard.vert, CELLS).
-  glEnable(GL_CLIP_DISTANCE0);
-  glEnable(GL_CLIP_DISTANCE1);
   const glm::vec3 light = glm::normalize(glm::vec3(frame.view * glm::vec4(settings.light_direction, 0.0f)));
   const glm::vec3 irradiance = settings.light_color * shading_.light_irradiance;
   for (int m = 0; m < 3; ++m) {
@@ -100,11 +97,8 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
         programs_.get(planar, m == static_cast<int>(ParticleMedium::fire) ? 2 : 1);
     begin_sphere_billboards(program, frame, planar, scene.depth_texture());
     auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
-    glUniform2f(loc("u_depth_scale"), static_cast<float>(scene_width) / cell_width,
-                static_cast<float>(scene_height) / atlas.height());
-    glUniform2f(loc("u_viewport"), static_cast<float>(cell_width), static_cast<float>(atlas.height()));
-    glUniform1f(loc("u_cell_origin"), static_cast<float>(m * cell_width));
-    glUniform1f(loc("u_atlas_width"), static_cast<float>(atlas.width()));
+    const glm::ivec2 cell(cell_width, atlas.height());
+    set_sphere_billboard_depth_scale(program, cell, scene_width, scene_height);
     glUniform3fv(loc("u_light_view"), 1, glm::value_ptr(light));
     glUniform3fv(loc("u_light_irradiance"), 1, glm::value_ptr(irradiance));
     glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(settings.ambient));
@@ -119,10 +113,10 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     glUniform1f(loc("u_detail_amplitude"), s.detail_amplitude);
     const GLuint vao = instances_[m].upload(l, true);
     glBindVertexArray(vao);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(l.size()));
+    // Each medium in its cell of the atlas (the scissor keeps it there).
+    draw_sphere_billboards(program, l, frame, {glm::ivec2(m * cell_width, 0), cell, {atlas.width(), atlas.height()}},
+                           planar, settings.billboard_sprites);
   }
-  glDisable(GL_CLIP_DISTANCE0);
-  glDisable(GL_CLIP_DISTANCE1);
   end_sphere_billboards();
 }
 

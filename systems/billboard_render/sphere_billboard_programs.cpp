@@ -1,10 +1,13 @@
 #include "systems/billboard_render/sphere_billboard_programs.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include "engine/gpu/shader_program.h"
+#include "engine/math/projected_sphere.h"
 
 namespace pyro {
 
@@ -13,8 +16,7 @@ const gpu::Program& SphereBillboardPrograms::get(bool planar, int shading) {
   if (p.get() == 0)
     p = gpu::load_program("sphere_billboard.vert", "sphere_billboard.frag",
                           {std::string("PLANAR ") + (planar ? "1" : "0"),
-                           "SHADING " + std::to_string(shading),
-                           std::string("CELLS ") + (shading != 0 ? "1" : "0")});
+                           "SHADING " + std::to_string(shading)});
   return p;
 }
 
@@ -37,12 +39,74 @@ void begin_sphere_billboards(const gpu::Program& program, const CameraFrame& fra
   glBindTextureUnit(1, scene_depth);
 }
 
-void set_sphere_billboard_target(const gpu::Program& program, const gpu::RenderTarget& target,
-                                 int scene_width, int scene_height) {
+void set_sphere_billboard_depth_scale(const gpu::Program& program, glm::ivec2 target_size,
+                                      int scene_width, int scene_height) {
+  glUniform2f(gpu::uniform_location(program, "u_depth_scale"),
+              static_cast<float>(scene_width) / target_size.x,
+              static_cast<float>(scene_height) / target_size.y);
+}
+
+bool sphere_billboard_as_sprite(const glm::vec3& centre_view, float radius, const CameraFrame& frame,
+                                glm::vec2 target_size, bool planar, float largest_point) {
+  const float depth = -centre_view.z, limit = 0.9f * largest_point;
+  if (planar) {
+    if (!(depth > 1.001f * frame.near)) return false;
+    const float side = std::max(frame.projection[0][0] * target_size.x,
+                                frame.projection[1][1] * target_size.y) * radius / depth;
+    return side <= limit;
+  }
+  if (!(depth - radius > 1.001f * frame.near)) return false;
+  ScreenRect rect;
+  if (!projected_sphere_rect(centre_view, radius, frame.projection, target_size, rect)) return false;
+  return std::max(rect.size().x, rect.size().y) <= limit;
+}
+
+void draw_sphere_billboards(const gpu::Program& program, const DrawList& list,
+                            const CameraFrame& frame, const BillboardTarget& target, bool planar,
+                            bool sprites) {
+  const size_t n = list.size();
+  if (n == 0) return;
+  GLfloat point_range[2] = {1.0f, 1.0f};
+  glGetFloatv(GL_POINT_SIZE_RANGE, point_range);
+  // The viewport reaches past the framebuffer by half the largest sprite, so that no sprite that
+  // overlaps the target has its centre (which decides clipping) outside it.
+  const int guard = static_cast<int>(std::ceil(point_range[1] / 2.0f)) + 1;
+  const glm::ivec4 viewport(-guard, -guard, target.framebuffer.x + 2 * guard,
+                            target.framebuffer.y + 2 * guard);
+  glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
+  glScissor(target.origin.x, target.origin.y, target.size.x, target.size.y);
+  glEnable(GL_SCISSOR_TEST);
+  glEnable(GL_PROGRAM_POINT_SIZE);
   auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
-  glUniform2f(loc("u_depth_scale"), static_cast<float>(scene_width) / target.width(),
-              static_cast<float>(scene_height) / target.height());
-  glUniform2f(loc("u_viewport"), static_cast<float>(target.width()), static_cast<float>(target.height()));
+  glUniform2f(loc("u_viewport"), static_cast<float>(target.size.x), static_cast<float>(target.size.y));
+  glUniform2f(loc("u_target_origin"), static_cast<float>(target.origin.x),
+              static_cast<float>(target.origin.y));
+  glUniform4f(loc("u_gl_viewport"), static_cast<float>(viewport.x), static_cast<float>(viewport.y),
+              static_cast<float>(viewport.z), static_cast<float>(viewport.w));
+  const GLint sprite_location = loc("u_sprite");
+  auto is_sprite = [&](size_t i) {
+    if (!sprites) return false;
+    const glm::vec4& c = list.center_radius[i];
+    const glm::vec3 centre = glm::vec3(frame.view * glm::vec4(glm::vec3(c), 1.0f));
+    return sphere_billboard_as_sprite(centre, c.w, frame, glm::vec2(target.size), planar,
+                                      point_range[1]);
+  };
+  // Runs of one primitive, in the list's (back-to-front) order.
+  size_t first = 0;
+  bool run_sprite = is_sprite(0);
+  for (size_t i = 1; i <= n; ++i) {
+    const bool next = i < n ? is_sprite(i) : !run_sprite;
+    if (i < n && next == run_sprite) continue;
+    glUniform1i(sprite_location, run_sprite ? 1 : 0);
+    glDrawArraysInstancedBaseInstance(run_sprite ? GL_POINTS : GL_TRIANGLE_STRIP, 0,
+                                      run_sprite ? 1 : 4, static_cast<GLsizei>(i - first),
+                                      static_cast<GLuint>(first));
+    first = i;
+    run_sprite = next;
+  }
+  glDisable(GL_PROGRAM_POINT_SIZE);
+  glDisable(GL_SCISSOR_TEST);
+  glViewport(0, 0, target.framebuffer.x, target.framebuffer.y);
 }
 
 void end_sphere_billboards() {

@@ -17,8 +17,9 @@ class SphereBillboardRenderer {
   // Blends the (back-to-front) particles into `target`; `scene_depth` is the opaque scene's
   // depth texture (window depth) of size scene_width x scene_height, which may be larger than
   // the target (a reduced-resolution layer). `planar`: classic billboards through the centres.
+  // `sprites`: point sprites where they fit (draw_sphere_billboards), else quads throughout.
   void draw(const DrawList& list, const CameraFrame& frame, const gpu::RenderTarget& target,
-            GLuint scene_depth, int scene_width, int scene_height, bool planar);
+            GLuint scene_depth, int scene_width, int scene_height, bool planar, bool sprites);
 
  private:
   SphereBillboardPrograms programs_;

@@ -13,6 +13,7 @@
 
 #include "components/frame_image.h"
 #include "components/particle_set.h"
+#include "components/render_settings.h"
 #include "engine/ecs/world.h"
 #include "engine/io/scene_loader.h"
 #include "systems/composite/compositor.h"
@@ -34,19 +35,20 @@ struct FrameTiming {
   double cpu_ms_per_frame = 0.0;  // all of the process's threads (llvmpipe's included)
 };
 
-void choose_upsampling(SceneRuntime& runtime, bool depth_aware, bool tiles) {
+void choose_methods(SceneRuntime& runtime, bool depth_aware, bool tiles, bool sprites) {
   MediaComposition m;
   m.depth_aware = depth_aware;
   m.tiles = tiles;
   runtime.world().set_resource<MediaComposition>(m);
+  runtime.world().resource<RenderSettings>().billboard_sprites = sprites;
 }
 
 // `progress` (may be null) advances by one per timed frame, from `done`.
 FrameTiming time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames,
                         nlohmann::json* system_ms, bool depth_aware = true, bool tiles = true,
-                        Progress* progress = nullptr, size_t done = 0) {
+                        bool sprites = true, Progress* progress = nullptr, size_t done = 0) {
   SceneRuntime runtime(scene, options);
-  choose_upsampling(runtime, depth_aware, tiles);
+  choose_methods(runtime, depth_aware, tiles, sprites);
   runtime.step();  // warm up: shaders, tables, targets
   glFinish();
   const double cpu0 = process_cpu_seconds();
@@ -83,8 +85,8 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     timed.sync_timing = o.sync_timing;
     nlohmann::json system_ms = nlohmann::json::object();
     progress.stage(done, "scale " + std::to_string(scale).substr(0, 5) + ", timing");
-    const FrameTiming timing = time_frames(scene, timed, o.frames, &system_ms, o.depth_aware, o.compose_tiles,
-                                             &progress, done);
+    const FrameTiming timing = time_frames(scene, timed, o.frames, &system_ms, o.depth_aware,
+                                           o.compose_tiles, o.billboard_sprites, &progress, done);
     const double fps = timing.fps;
     done += size_t(o.frames);
     progress.stage(done, "scale " + std::to_string(scale).substr(0, 5) + ", error");
@@ -94,7 +96,7 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     measured_options.readback = reference_options.readback = true;
     reference_options.layer_scale = 1.0f;
     SceneRuntime measured(scene, measured_options), reference(scene, reference_options);
-    choose_upsampling(measured, o.depth_aware, o.compose_tiles);
+    choose_methods(measured, o.depth_aware, o.compose_tiles, o.billboard_sprites);
     double sum = 0.0;
     int samples = 0;
     const int every = std::max(1, o.frames / std::max(1, o.error_frames));
@@ -118,7 +120,8 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
   return {{"scene", o.scene}, {"width", o.width}, {"height", o.height}, {"frames", o.frames},
           {"error_frames", o.error_frames},
           {"upsampling", o.depth_aware ? "depth-aware" : "bilinear"},
-          {"compose", o.compose_tiles ? "tiled" : "per-pixel"}, {"scales", scales}};
+          {"compose", o.compose_tiles ? "tiled" : "per-pixel"},
+          {"billboards", o.billboard_sprites ? "sprites" : "quads"}, {"scales", scales}};
 }
 
 nlohmann::json bench_table1(const Table1BenchOptions& o) {
@@ -165,7 +168,7 @@ nlohmann::json bench_table1(const Table1BenchOptions& o) {
       progress.stage(done, std::to_string(counts[i]) + " particles, " +
                                (shape == ParticleShape::planar ? "planar" : "spherical"));
       row[shape == ParticleShape::planar ? "planar_fps" : "spherical_fps"] =
-          time_frames(s, ro, o.frames, nullptr, true, true, &progress, done).fps;
+          time_frames(s, ro, o.frames, nullptr, true, true, true, &progress, done).fps;
       done += size_t(o.frames);
       row["live_particles"] = live;
     }

@@ -22,6 +22,8 @@ struct LayersBenchOptions {
   // The final pass in tiles sorted by the work they need (MediaComposition::tiles); false: the
   // full variant on every pixel.
   bool compose_tiles = true;
+  // Billboards as point sprites where they fit (RenderSettings::billboard_sprites); false: quads.
+  bool billboard_sprites = true;
 };
 
 // Per layer scale 1, 1/2, 1/4, 1/8: fps over the same frames, and the RMSE (linear rgb, the

@@ -82,7 +82,7 @@ void add_bench_commands(CLI::App& app) {
 
   struct LayersArgs {
     LayersBenchOptions options;
-    std::string upsampling = "depth-aware", compose = "tiled";
+    std::string upsampling = "depth-aware", compose = "tiled", billboards = "sprites";
     bool json = false;
   };
   auto layers = std::make_shared<LayersArgs>();
@@ -105,10 +105,15 @@ void add_bench_commands(CLI::App& app) {
                          "Final pass: tiled (default; each screen tile runs only the work it needs) "
                          "or per-pixel (the full variant everywhere; the same image)")
       ->check(CLI::IsMember({"tiled", "per-pixel"}));
+  layers_cmd->add_option("--billboards", layers->billboards,
+                         "Billboard primitive: sprites (default; a point sprite per particle where "
+                         "it fits) or quads (the same image)")
+      ->check(CLI::IsMember({"sprites", "quads"}));
   layers_cmd->add_flag("--json", layers->json, "Print one JSON object");
   layers_cmd->callback([layers] {
     layers->options.depth_aware = layers->upsampling == "depth-aware";
     layers->options.compose_tiles = layers->compose == "tiled";
+    layers->options.billboard_sprites = layers->billboards == "sprites";
     print(bench_layers(layers->options), layers->json);
   });
 
