@@ -5,7 +5,8 @@
 // al. 2006, section 4) upsampled depth-aware and composited over the scene, whose lookup the
 // fire distorts (heat shimmer). Then the output is L * left + R * right, clamped, on linear
 // values (engine/math/anaglyph.h gives the matrices: identity/zero for a single view, Dubois or
-// colour/half-colour for anaglyphs). The target is sRGB: GL encodes.
+// colour/half-colour for anaglyphs). The target is sRGB: with SRGB_ENCODE the shader encodes
+// (GL_FRAMEBUFFER_SRGB off: cheaper on llvmpipe), else GL does (or the target is linear).
 //
 // Variants (defines from systems/composite/compositor.cpp; on llvmpipe a branch on a uniform
 // runs both sides, fetches included, so what is off is compiled out):
@@ -31,6 +32,10 @@
 #ifndef SHIMMER
 #define SHIMMER 0
 #endif
+#ifndef SRGB_ENCODE
+#define SRGB_ENCODE 0
+#endif
+#include "srgb_encode.glsl"
 
 layout(binding = 0) uniform sampler2D u_left;
 layout(binding = 1) uniform sampler2D u_right;
@@ -134,5 +139,9 @@ void main() {
   c += u_right_matrix * view_color(u_right, u_right_layer, texel, uv);
 #endif
 #endif
-  o_color = vec4(clamp(c, 0.0, 1.0), 1.0);
+  c = clamp(c, 0.0, 1.0);
+#if SRGB_ENCODE
+  c = srgb_encode(c);
+#endif
+  o_color = vec4(c, 1.0);
 }

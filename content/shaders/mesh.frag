@@ -1,5 +1,11 @@
 #version 450 core
 // Lambertian surface under one directional light plus ambient light, in linear RGB.
+// SRGB_ENCODE 1: the target is sRGB and GL's conversion is off (systems/mesh_render/
+// mesh_renderer.cpp): the shader writes the encoded value.
+#ifndef SRGB_ENCODE
+#define SRGB_ENCODE 0
+#endif
+#include "srgb_encode.glsl"
 in vec3 v_normal;
 
 uniform vec3 u_albedo;
@@ -13,5 +19,9 @@ void main() {
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
   float lambert = max(dot(n, -u_light_direction), 0.0);
-  o_color = vec4(u_albedo * (u_ambient + u_light_color * lambert), 1.0);
+  vec3 c = u_albedo * (u_ambient + u_light_color * lambert);
+#if SRGB_ENCODE
+  c = srgb_encode(c);
+#endif
+  o_color = vec4(c, 1.0);
 }

@@ -1,6 +1,7 @@
 #include "engine/gpu/shader_program.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "engine/core/content_path.h"
 #include "engine/gpu/gpu_error.h"
@@ -21,9 +22,41 @@ const char* stage_name(GLenum stage) {
 
 }  // namespace
 
+std::string expand_includes(const std::string& source, const std::string& file, int depth) {
+  std::istringstream in(source);
+  std::string line, out;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line.compare(start, 8, "#include") != 0) {
+      out += line + "\n";
+      continue;
+    }
+    const std::string where = file + ":" + std::to_string(number) + ": ";
+    const size_t open = line.find('"', start + 8);
+    const size_t close = open == std::string::npos ? open : line.find('"', open + 1);
+    if (close == std::string::npos || close == open + 1)
+      throw GpuError(where + "expected #include \"file\" (a file under content/shaders)");
+    if (depth >= 4) throw GpuError(where + "includes nested deeper than 4");
+    const std::string name = line.substr(open + 1, close - open - 1);
+    const std::string path = content_path("shaders/" + name);
+    std::string text;
+    try {
+      text = read_text_file(path);
+    } catch (const std::exception& e) {
+      throw GpuError(where + "cannot include " + name + ": " + e.what());
+    }
+    out += "#line 1\n" + expand_includes(text, path, depth + 1);
+    if (!out.empty() && out.back() != '\n') out += "\n";
+    out += "#line " + std::to_string(number + 1) + "\n";
+  }
+  return out;
+}
+
 ShaderStageSource load_shader_stage(GLenum stage, const std::string& relative) {
   const std::string path = content_path(relative);
-  return ShaderStageSource{stage, path, read_text_file(path)};
+  return ShaderStageSource{stage, path, expand_includes(read_text_file(path), path)};
 }
 
 Program link_program(const std::vector<ShaderStageSource>& stages) {

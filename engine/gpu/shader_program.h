@@ -14,8 +14,15 @@ struct ShaderStageSource {
   std::string source;
 };
 
-// Reads `relative` (e.g. "shaders/billboard.vert") from the content directory.
+// Reads `relative` (e.g. "shaders/billboard.vert") from the content directory, its includes
+// expanded (expand_includes).
 ShaderStageSource load_shader_stage(GLenum stage, const std::string& relative);
+
+// `source` (read from `file`, for messages) with each line `#include "name"` replaced by the
+// text of content/shaders/name (its own includes expanded, at most 4 deep), framed by #line
+// directives so that compile errors after it keep the file's line numbers. A malformed or
+// missing include throws GpuError naming the file and line.
+std::string expand_includes(const std::string& source, const std::string& file, int depth = 0);
 
 Program link_program(const std::vector<ShaderStageSource>& stages);
 

@@ -11,6 +11,23 @@ inline float linear_to_srgb(float v) {
   return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
+// The same transfer function as content/shaders/srgb_encode.glsl evaluates it where a pass writes
+// sRGB bytes itself (GL_FRAMEBUFFER_SRGB off): the linear toe, then a degree-5 polynomial in
+// sqrt(v), fitted here by iteratively reweighted least squares on [0.0031308, 1]. Its largest
+// error is 3.4e-4, a twelfth of an 8-bit step, so every byte's decoded value encodes back to the
+// byte. On llvmpipe it costs a quarter of GL's own conversion (512x512 opaque pass, one
+// thread: 2.06 ms with GL's, 1.59 ms with a polynomial, 1.45 ms with none).
+inline constexpr float kSrgbPolynomial[6] = {-0.0400807126f, 1.51741072f, -1.39971863f,
+                                             2.02471918f,   -1.61693199f, 0.51493223f};
+inline float linear_to_srgb_polynomial(float v) {
+  v = std::clamp(v, 0.0f, 1.0f);
+  if (v <= 0.0031308f) return 12.92f * v;
+  const float t = std::sqrt(v);
+  float p = kSrgbPolynomial[5];
+  for (int k = 4; k >= 0; --k) p = p * t + kSrgbPolynomial[k];
+  return p;
+}
+
 inline float srgb_to_linear(float s) {
   s = std::clamp(s, 0.0f, 1.0f);
   return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);

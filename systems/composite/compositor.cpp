@@ -21,14 +21,15 @@ const gpu::Program& Compositor::variant(bool use_left, bool use_right, const Fea
   const bool layers = layers_ && !media_bound_;
   const size_t key = size_t(use_left) | size_t(use_right) << 1 | size_t(layers) << 2 |
                      size_t(media) << 3 | size_t(depth_aware) << 4 | size_t(shimmer) << 5 |
-                     size_t(f.tiled) << 6;
+                     size_t(f.tiled) << 6 | size_t(encode_) << 7;
   gpu::Program& p = compose_[key];
   if (p.get() == 0) {
     auto flag = [](const char* name, bool on) { return std::string(name) + (on ? " 1" : " 0"); };
     p = gpu::load_program(f.tiled ? "compose_tile.vert" : "fullscreen.vert", "compose.frag",
                           {flag("USE_LEFT", use_left), flag("USE_RIGHT", use_right),
                            flag("LAYERS", layers), flag("MEDIA", media),
-                           flag("DEPTH_AWARE", depth_aware), flag("SHIMMER", shimmer)});
+                           flag("DEPTH_AWARE", depth_aware), flag("SHIMMER", shimmer),
+                           flag("SRGB_ENCODE", encode_)});
   }
   return p;
 }
@@ -179,6 +180,9 @@ void Compositor::compose(StereoMode mode, GpuFrame& frame, bool swap_eyes, float
     glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
     glEnable(GL_FRAMEBUFFER_SRGB);  // linear in, sRGB-encoded bytes out (on for every pass)
   }
+  // The output's bytes written by the shaders (the history, when blurring, stays linear).
+  encode_ = !blur && out.format() == GL_SRGB8_ALPHA8;
+  if (encode_) glDisable(GL_FRAMEBUFFER_SRGB);
   const size_t first = swap_eyes && frame.eyes.size() > 1 ? 1 : 0;
   const EyeTargets& l = frame.eyes[first];
   const EyeTargets& r = frame.eyes.size() > 1 ? frame.eyes[1 - first] : frame.eyes[0];
@@ -224,6 +228,8 @@ void Compositor::compose(StereoMode mode, GpuFrame& frame, bool swap_eyes, float
       break;
     }
   }
+  if (encode_) glEnable(GL_FRAMEBUFFER_SRGB);
+  encode_ = false;
   if (blur) {
     glDisable(GL_BLEND);
     frame.history_valid = true;

@@ -67,12 +67,15 @@ class Compositor {
   const gpu::Program& variant(bool use_left, bool use_right, const Features& features);
   void upload_shimmer_noise(float time);
 
-  std::array<gpu::Program, 128> compose_;  // compose.frag variants, compiled on first use
+  std::array<gpu::Program, 256> compose_;  // compose.frag variants, compiled on first use
   gpu::Program media_prepare_;
   gpu::Framebuffer prepare_fbo_;  // two outputs: media_combined and media_depth
   gpu::VertexArray empty_;
   MediaComposition media_;
   bool layers_ = false, media_bound_ = false;  // what bind_views bound
+  // The draws write the sRGB output's bytes themselves (srgb_encode.glsl, GL_FRAMEBUFFER_SRGB
+  // off): cheaper than GL's conversion on llvmpipe. Set by compose for its draws.
+  bool encode_ = false;
   glm::ivec2 media_layer_size_{0};              // with media bound: the layers' size
   ComposeTiles tiles_;
   DetailNoise shimmer_volume_;    // made on first use

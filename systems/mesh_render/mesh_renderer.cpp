@@ -7,7 +7,9 @@
 
 namespace pyro {
 
-MeshRenderer::MeshRenderer() : program_(gpu::load_program("mesh.vert", "mesh.frag")) {}
+MeshRenderer::MeshRenderer()
+    : program_(gpu::load_program("mesh.vert", "mesh.frag")),
+      encode_program_(gpu::load_program("mesh.vert", "mesh.frag", {"SRGB_ENCODE 1"})) {}
 
 const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(MeshKind kind) {
   auto it = meshes_.find(kind);
@@ -57,16 +59,22 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
   glDepthFunc(GL_LESS);
   glDisable(GL_BLEND);
   glCullFace(GL_BACK);
-  glUseProgram(program_.get());
-  glUniformMatrix4fv(gpu::uniform_location(program_, "u_view_projection"), 1, GL_FALSE,
+  // An sRGB target is written by the shader's own encoding, cheaper than GL's on llvmpipe
+  // (engine/math/color.h, linear_to_srgb_polynomial); the clear above was encoded by GL.
+  const bool encode = target.format() == GL_SRGB8_ALPHA8;
+  const gpu::Program& program = encode ? encode_program_ : program_;
+  const GLboolean srgb_writes = glIsEnabled(GL_FRAMEBUFFER_SRGB);
+  if (encode) glDisable(GL_FRAMEBUFFER_SRGB);
+  glUseProgram(program.get());
+  glUniformMatrix4fv(gpu::uniform_location(program, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(frame.view_projection));
   const glm::vec3 light = glm::normalize(settings.light_direction);
-  glUniform3fv(gpu::uniform_location(program_, "u_light_direction"), 1, glm::value_ptr(light));
-  glUniform3fv(gpu::uniform_location(program_, "u_light_color"), 1, glm::value_ptr(settings.light_color));
-  glUniform3fv(gpu::uniform_location(program_, "u_ambient"), 1, glm::value_ptr(settings.ambient));
-  const GLint offset = gpu::uniform_location(program_, "u_offset");
-  const GLint scale = gpu::uniform_location(program_, "u_scale");
-  const GLint albedo = gpu::uniform_location(program_, "u_albedo");
+  glUniform3fv(gpu::uniform_location(program, "u_light_direction"), 1, glm::value_ptr(light));
+  glUniform3fv(gpu::uniform_location(program, "u_light_color"), 1, glm::value_ptr(settings.light_color));
+  glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(settings.ambient));
+  const GLint offset = gpu::uniform_location(program, "u_offset");
+  const GLint scale = gpu::uniform_location(program, "u_scale");
+  const GLint albedo = gpu::uniform_location(program, "u_albedo");
   for (const MeshInstance& m : instances) {
     const GpuMesh& g = mesh_for(m.kind);
     glUniform3fv(offset, 1, glm::value_ptr(m.position));
@@ -84,6 +92,7 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
   glDisable(GL_CULL_FACE);
   glFrontFace(GL_CCW);
   glBindVertexArray(0);
+  if (srgb_writes) glEnable(GL_FRAMEBUFFER_SRGB);
 }
 
 }  // namespace pyro

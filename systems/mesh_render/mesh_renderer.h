@@ -27,7 +27,8 @@ class MeshRenderer {
   };
   const GpuMesh& mesh_for(MeshKind kind);
 
-  gpu::Program program_;
+  gpu::Program program_;         // linear output: a floating-point target, or GL encodes
+  gpu::Program encode_program_;  // writes sRGB itself (srgb_encode.glsl), GL_FRAMEBUFFER_SRGB off
   std::map<MeshKind, GpuMesh> meshes_;
 };
 
