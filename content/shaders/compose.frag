@@ -35,7 +35,9 @@
 #ifndef SRGB_ENCODE
 #define SRGB_ENCODE 0
 #endif
+#if SRGB_ENCODE
 #include "srgb_encode.glsl"
+#endif
 
 layout(binding = 0) uniform sampler2D u_left;
 layout(binding = 1) uniform sampler2D u_right;

@@ -5,7 +5,9 @@
 #ifndef SRGB_ENCODE
 #define SRGB_ENCODE 0
 #endif
+#if SRGB_ENCODE
 #include "srgb_encode.glsl"
+#endif
 in vec3 v_normal;
 
 uniform vec3 u_albedo;

@@ -6,9 +6,11 @@
 // Two primitives, chosen per particle by the caller (systems/billboard_render/
 // sphere_billboard_programs.cpp) and drawn in runs that keep the back-to-front order:
 // - a point sprite (u_sprite 1, one vertex) over the exact screen rectangle of the sphere's
-//   image (engine/math/projected_sphere.h derives it), for spheres wholly in front of the near
-//   plane whose sprite fits the implementation's largest point size. One square per particle:
-//   llvmpipe shades the 4x4 blocks a quad's diagonal crosses once for each of its triangles.
+//   image, for spheres wholly in front of the near plane whose sprite fits the implementation's
+//   largest point size: its centre, side and depth come with the instance (a_sprite), made on
+//   the CPU, which chooses the primitive (sphere_billboard_sprite; engine/math/
+//   projected_sphere.h derives the rectangle). One square per particle: llvmpipe shades the 4x4
+//   blocks a quad's diagonal crosses once for each of its triangles.
 // - a quad (u_sprite 0, a 4-vertex strip) otherwise. Unlike the paper's quad (perpendicular to
 //   z at the sphere's far point, half size r), ours is perpendicular to the eye-to-centre axis at
 //   distance D + r with half size r (D + r) / sqrt(D^2 - r^2): it contains the tangent cone, so
@@ -17,13 +19,14 @@
 //   sphere gets a quad over the whole target.
 // PLANAR 1 (a define: see sphere_billboard.frag) draws the classic planar billboard instead
 // (through the centre, facing the viewplane, depth tested) for comparison: a square of half side
-// r at the centre's depth, as a sprite of its screen size or as a quad.
+// r at the centre's depth, as a sprite of its screen size (a_sprite likewise) or as a quad.
 #ifndef PLANAR
 #define PLANAR 0
 #endif
 layout(location = 0) in vec4 a_center_radius;  // world xyz, radius
 layout(location = 1) in vec4 a_color_tau;      // linear rgb, extinction tau (1 / length)
 layout(location = 2) in vec4 a_medium;  // temperature K, opacity, medium, detail key (explosions)
+layout(location = 3) in vec4 a_sprite;  // u_sprite 1: centre (target pixels), side (pixels), ndc depth
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
@@ -63,30 +66,14 @@ void main() {
   v_radius = r;
   v_color_tau = a_color_tau;
   v_medium = a_medium;
-  vec2 scale = vec2(u_projection[0][0], u_projection[1][1]);
-  vec2 shift = vec2(u_projection[2][0], u_projection[2][1]);
-#if PLANAR
   if (u_sprite == 1) {
-    // The square of half side r at depth D = -p.z: half side scale * r / D in ndc.
-    vec4 q = u_projection * vec4(p, 1.0);
-    vec2 half_side = scale * (r / -p.z) * 0.5 * u_viewport;
-    gl_PointSize = 2.0 * max(half_side.x, half_side.y);
-    gl_Position = vec4(pixels_to_ndc((q.xy / q.w * 0.5 + 0.5) * u_viewport), q.z / q.w, 1.0);
+    gl_PointSize = a_sprite.z;
+    gl_Position = vec4(pixels_to_ndc(a_sprite.xy), a_sprite.w, 1.0);
     return;
   }
+#if PLANAR
   gl_Position = into_viewport(u_projection * vec4(p + vec3(corner * r, 0.0), 1.0));
 #else
-  if (u_sprite == 1) {
-    // engine/math/projected_sphere.h: u = (c D -+ r sqrt(c^2 + D^2 - r^2)) / (D^2 - r^2) per axis.
-    float D = -p.z;
-    float den = D * D - r * r;
-    vec2 root = sqrt(p.xy * p.xy + den);
-    vec2 lo = ((scale * (p.xy * D - r * root) / den - shift) * 0.5 + 0.5) * u_viewport;
-    vec2 hi = ((scale * (p.xy * D + r * root) / den - shift) * 0.5 + 0.5) * u_viewport;
-    gl_PointSize = max(hi.x - lo.x, hi.y - lo.y);
-    gl_Position = vec4(pixels_to_ndc(0.5 * (lo + hi)), 0.0, 1.0);
-    return;
-  }
   float d = length(p);
   if (d < 2.0 * r) {
     gl_Position = into_viewport(vec4(corner, 0.0, 1.0));

@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 namespace pyro {
 
@@ -26,6 +28,18 @@ inline float linear_to_srgb_polynomial(float v) {
   float p = kSrgbPolynomial[5];
   for (int k = 4; k >= 0; --k) p = p * t + kSrgbPolynomial[k];
   return p;
+}
+
+// The define content/shaders/srgb_encode.glsl takes its coefficients from ("SRGB_POLYNOMIAL
+// c0, c1, ..., c5"): one set of numbers for the CPU and the shaders.
+inline std::string srgb_polynomial_define() {
+  std::string d = "SRGB_POLYNOMIAL ";
+  char number[32];
+  for (int k = 0; k < 6; ++k) {
+    std::snprintf(number, sizeof number, "%s%.9g", k ? ", " : "", kSrgbPolynomial[k]);
+    d += number;
+  }
+  return d;
 }
 
 inline float srgb_to_linear(float s) {

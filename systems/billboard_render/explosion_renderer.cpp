@@ -114,7 +114,7 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     const GLuint vao = instances_[m].upload(l, true);
     glBindVertexArray(vao);
     // Each medium in its cell of the atlas (the scissor keeps it there).
-    draw_sphere_billboards(program, l, frame, {glm::ivec2(m * cell_width, 0), cell, {atlas.width(), atlas.height()}},
+    draw_sphere_billboards(program, l, instances_[m], frame, {glm::ivec2(m * cell_width, 0), cell, {atlas.width(), atlas.height()}},
                            planar, settings.billboard_sprites);
   }
   end_sphere_billboards();

@@ -46,24 +46,31 @@ void set_sphere_billboard_depth_scale(const gpu::Program& program, glm::ivec2 ta
               static_cast<float>(scene_height) / target_size.y);
 }
 
-bool sphere_billboard_as_sprite(const glm::vec3& centre_view, float radius, const CameraFrame& frame,
-                                glm::vec2 target_size, bool planar, float largest_point) {
+std::optional<glm::vec4> sphere_billboard_sprite(const glm::vec3& centre_view, float radius,
+                                                 const CameraFrame& frame, glm::vec2 target_size,
+                                                 bool planar, float largest_point) {
   const float depth = -centre_view.z, limit = 0.9f * largest_point;
   if (planar) {
-    if (!(depth > 1.001f * frame.near)) return false;
+    if (!(depth > 1.001f * frame.near)) return std::nullopt;
     const float side = std::max(frame.projection[0][0] * target_size.x,
                                 frame.projection[1][1] * target_size.y) * radius / depth;
-    return side <= limit;
+    if (!(side <= limit)) return std::nullopt;
+    const glm::vec4 q = frame.projection * glm::vec4(centre_view, 1.0f);
+    const glm::vec2 centre = (glm::vec2(q) / q.w * 0.5f + 0.5f) * target_size;
+    return glm::vec4(centre, side, q.z / q.w);
   }
-  if (!(depth - radius > 1.001f * frame.near)) return false;
+  if (!(depth - radius > 1.001f * frame.near)) return std::nullopt;
   ScreenRect rect;
-  if (!projected_sphere_rect(centre_view, radius, frame.projection, target_size, rect)) return false;
-  return std::max(rect.size().x, rect.size().y) <= limit;
+  if (!projected_sphere_rect(centre_view, radius, frame.projection, target_size, rect))
+    return std::nullopt;
+  const float side = std::max(rect.size().x, rect.size().y);
+  if (!(side <= limit)) return std::nullopt;
+  return glm::vec4(rect.centre(), side, 0.0f);
 }
 
 void draw_sphere_billboards(const gpu::Program& program, const DrawList& list,
-                            const CameraFrame& frame, const BillboardTarget& target, bool planar,
-                            bool sprites) {
+                            InstanceBuffer& instances, const CameraFrame& frame,
+                            const BillboardTarget& target, bool planar, bool sprites) {
   const size_t n = list.size();
   if (n == 0) return;
   GLfloat point_range[2] = {1.0f, 1.0f};
@@ -84,13 +91,17 @@ void draw_sphere_billboards(const gpu::Program& program, const DrawList& list,
   glUniform4f(loc("u_gl_viewport"), static_cast<float>(viewport.x), static_cast<float>(viewport.y),
               static_cast<float>(viewport.z), static_cast<float>(viewport.w));
   const GLint sprite_location = loc("u_sprite");
-  auto is_sprite = [&](size_t i) {
-    if (!sprites) return false;
+  // Each particle's sprite, or a zero side for a quad.
+  std::vector<glm::vec4> sprite(n, glm::vec4(0.0f));
+  for (size_t i = 0; sprites && i < n; ++i) {
     const glm::vec4& c = list.center_radius[i];
     const glm::vec3 centre = glm::vec3(frame.view * glm::vec4(glm::vec3(c), 1.0f));
-    return sphere_billboard_as_sprite(centre, c.w, frame, glm::vec2(target.size), planar,
-                                      point_range[1]);
-  };
+    if (const auto s = sphere_billboard_sprite(centre, c.w, frame, glm::vec2(target.size), planar,
+                                               point_range[1]))
+      sprite[i] = *s;
+  }
+  instances.upload_sprites(sprite);
+  auto is_sprite = [&](size_t i) { return sprite[i].z > 0.0f; };
   // Runs of one primitive, in the list's (back-to-front) order.
   size_t first = 0;
   bool run_sprite = is_sprite(0);

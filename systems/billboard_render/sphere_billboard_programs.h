@@ -5,6 +5,8 @@
 // particle's colour, 1 dust or smoke, 2 fire) — compiled on first use: on llvmpipe a branch on a
 // uniform runs both sides, so each variant carries only its own fetches and arithmetic.
 #include <array>
+#include <optional>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -12,6 +14,7 @@
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
+#include "systems/billboard_render/instance_buffer.h"
 
 namespace pyro {
 
@@ -37,18 +40,22 @@ void set_sphere_billboard_depth_scale(const gpu::Program& program, glm::ivec2 ta
 struct BillboardTarget {
   glm::ivec2 origin{0}, size{1}, framebuffer{1};
 };
-// Whether the particle (centre in view space) is drawn as a point sprite, given the largest
-// point size: its sphere (planar: its square) wholly in front of the near plane, and the sprite
-// at most nine tenths of the largest size (the CPU's and the GPU's float rounding apart).
-bool sphere_billboard_as_sprite(const glm::vec3& centre_view, float radius, const CameraFrame& frame,
-                                glm::vec2 target_size, bool planar, float largest_point);
-// Draws `list` (its instances in the bound vertex array, back to front) with `program` in use
-// into `target`: each particle a point sprite where sphere_billboard_as_sprite says so and
-// `sprites` is on, else a quad, in runs that keep the order. Leaves the viewport on the whole
-// framebuffer and the scissor test off.
+// The particle's point sprite, if it is drawn as one: its centre in target pixels, its side in
+// pixels and its window-space depth in ndc (planar; 0 for spherical billboards, which are not
+// depth tested). None unless its sphere (planar: its square) lies wholly in front of the near
+// plane and the side is at most nine tenths of the largest point size. Spherical: the exact
+// rectangle of the sphere's image (engine/math/projected_sphere.h), its longer side; planar: the
+// square of half side r at the centre's depth.
+std::optional<glm::vec4> sphere_billboard_sprite(const glm::vec3& centre_view, float radius,
+                                                 const CameraFrame& frame, glm::vec2 target_size,
+                                                 bool planar, float largest_point);
+// Draws `list` (uploaded to `instances`, whose vertex array is bound, back to front) with
+// `program` in use into `target`: each particle a point sprite where sphere_billboard_sprite
+// gives one and `sprites` is on (the sprites uploaded as attribute 3), else a quad, in runs that
+// keep the order. Leaves the viewport on the whole framebuffer and the scissor test off.
 void draw_sphere_billboards(const gpu::Program& program, const DrawList& list,
-                            const CameraFrame& frame, const BillboardTarget& target, bool planar,
-                            bool sprites);
+                            InstanceBuffer& instances, const CameraFrame& frame,
+                            const BillboardTarget& target, bool planar, bool sprites);
 // Back to the engine's default state (depth test and writes on, no blending).
 void end_sphere_billboards();
 

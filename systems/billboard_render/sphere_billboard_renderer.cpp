@@ -13,7 +13,7 @@ void SphereBillboardRenderer::draw(const DrawList& list, const CameraFrame& fram
   const glm::ivec2 size(target.width(), target.height());
   set_sphere_billboard_depth_scale(program, size, scene_width, scene_height);
   glBindVertexArray(vao);
-  draw_sphere_billboards(program, list, frame, {glm::ivec2(0), size, size}, planar, sprites);
+  draw_sphere_billboards(program, list, instances_, frame, {glm::ivec2(0), size, size}, planar, sprites);
   end_sphere_billboards();
 }
 

@@ -5,6 +5,7 @@
 
 #include "engine/gpu/shader_program.h"
 #include "engine/math/anaglyph.h"
+#include "engine/math/color.h"
 #include "engine/math/detail_noise.h"
 
 namespace pyro {
@@ -25,11 +26,12 @@ const gpu::Program& Compositor::variant(bool use_left, bool use_right, const Fea
   gpu::Program& p = compose_[key];
   if (p.get() == 0) {
     auto flag = [](const char* name, bool on) { return std::string(name) + (on ? " 1" : " 0"); };
-    p = gpu::load_program(f.tiled ? "compose_tile.vert" : "fullscreen.vert", "compose.frag",
-                          {flag("USE_LEFT", use_left), flag("USE_RIGHT", use_right),
-                           flag("LAYERS", layers), flag("MEDIA", media),
-                           flag("DEPTH_AWARE", depth_aware), flag("SHIMMER", shimmer),
-                           flag("SRGB_ENCODE", encode_)});
+    std::vector<std::string> defines = {flag("USE_LEFT", use_left), flag("USE_RIGHT", use_right),
+                                        flag("LAYERS", layers), flag("MEDIA", media),
+                                        flag("DEPTH_AWARE", depth_aware), flag("SHIMMER", shimmer),
+                                        flag("SRGB_ENCODE", encode_)};
+    if (encode_) defines.push_back(srgb_polynomial_define());
+    p = gpu::load_program(f.tiled ? "compose_tile.vert" : "fullscreen.vert", "compose.frag", defines);
   }
   return p;
 }

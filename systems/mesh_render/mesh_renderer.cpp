@@ -4,12 +4,14 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "engine/gpu/shader_program.h"
+#include "engine/math/color.h"
 
 namespace pyro {
 
 MeshRenderer::MeshRenderer()
     : program_(gpu::load_program("mesh.vert", "mesh.frag")),
-      encode_program_(gpu::load_program("mesh.vert", "mesh.frag", {"SRGB_ENCODE 1"})) {}
+      encode_program_(gpu::load_program("mesh.vert", "mesh.frag",
+                                        {"SRGB_ENCODE 1", srgb_polynomial_define()})) {}
 
 const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(MeshKind kind) {
   auto it = meshes_.find(kind);

@@ -52,8 +52,8 @@ Render render(float layer_scale, ParticleShape shape, StereoMode mode, bool spri
   for (size_t i = 0; i < list.size(); ++i) {
     const glm::vec4& c = list.center_radius[i];
     const glm::vec3 v = glm::vec3(eye.view * glm::vec4(glm::vec3(c), 1.0f));
-    const bool sprite = sphere_billboard_as_sprite(v, c.w, eye, layer, shape == ParticleShape::planar,
-                                                   range[1]);
+    const bool sprite = sphere_billboard_sprite(v, c.w, eye, layer, shape == ParticleShape::planar,
+                                                range[1]).has_value();
     (sprite ? r.sprites : r.quads) += 1;
     const glm::vec4 q = eye.projection * glm::vec4(v, 1.0f);
     if (sprite && (std::abs(q.x / q.w) > 1.0f || std::abs(q.y / q.w) > 1.0f)) ++r.off_view_sprites;

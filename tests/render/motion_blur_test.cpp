@@ -17,20 +17,13 @@
 #include "engine/io/scene_loader.h"
 #include "engine/math/color.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "tests/support/small_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
 namespace {
 
 namespace fs = std::filesystem;
-
-RuntimeOptions small() {
-  RuntimeOptions o;
-  o.readback = false;
-  o.width_override = 48;
-  o.height_override = 48;
-  return o;
-}
 
 std::vector<uint8_t> output_png(SceneRuntime& run, const fs::path& dir, int f) {
   const std::vector<std::string> files = run.write_png((dir / ("f" + std::to_string(f))).string());
@@ -39,10 +32,10 @@ std::vector<uint8_t> output_png(SceneRuntime& run, const fs::path& dir, int f) {
 
 TEST(MotionBlur, EachOutputBlendsTheNewFrameWithThePreviousOutputInLinearLight) {
   SceneDescription scene = load_scene(test::scene_path("explosion.json"));
-  SceneRuntime plain(scene, small());
+  SceneRuntime plain(scene, test::small_runtime());
   const float b = 0.6f;
   scene.render.motion_blur = b;
-  SceneRuntime blurred(scene, small());
+  SceneRuntime blurred(scene, test::small_runtime());
   const fs::path dir = test::scratch_dir("motion_blur");
   std::vector<uint8_t> previous;
   double largest_change = 0.0, worst = 0.0, worst_srgb_blend = 0.0;

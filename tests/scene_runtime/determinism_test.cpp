@@ -12,6 +12,7 @@
 #include "engine/math/camera_math.h"
 #include "systems/reference/particle_reference.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "tests/support/small_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -36,17 +37,9 @@ std::string particle_state(SceneRuntime& runtime) {
   return bytes;
 }
 
-RuntimeOptions small() {
-  RuntimeOptions o;
-  o.readback = false;
-  o.width_override = 48;
-  o.height_override = 48;
-  return o;
-}
-
 TEST(Determinism, SimulatedFramesLeaveTheStateRenderedFramesLeave) {
   const SceneDescription scene = load_scene(test::scene_path("explosion.json"));
-  SceneRuntime rendered(scene, small()), simulated(scene, small()), mixed(scene, small());
+  SceneRuntime rendered(scene, test::small_runtime()), simulated(scene, test::small_runtime()), mixed(scene, test::small_runtime());
   for (int f = 0; f < 40; ++f) {
     rendered.step();
     simulated.simulate_step();
