@@ -40,4 +40,4 @@ shot explosion explosion 30 384 384
 shot flipbook_fire flipbook_fire 12 128 192
 shot campfire campfire 20 320 240 --stereo side-by-side
 shot flipbook_grid flipbook_grid 20 320 240 --stereo side-by-side
-shot clouds_anaglyph clouds 30 480 360 --stereo anaglyph
+shot explosion_anaglyph explosion 30 384 384 --stereo anaglyph
