@@ -186,10 +186,10 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     prewarm_particles(world_, static_cast<uint64_t>(std::llround(scene.prewarm / clock.dt)));
 
   std::vector<ecs::SystemDesc> systems = {
-      cloud_emitter_system(), particle_emitter_system(), drift_system(), particle_animation_system(),
-      camera_orbit_system(),
-      depth_sort_system(),    camera_system(),          flipbook_orient_system(),
-      mesh_render_system(),   flipbook_render_system(), billboard_render_system(), stereo_compose_system()};
+      cloud_emitter_system(),   emitter_system(),          cloud_drift_system(),
+      animation_system(),       camera_orbit_system(),     stereo_camera_system(),
+      sorting_system(),         flipbook_orient_system(),  mesh_render_system(),
+      flipbook_render_system(), billboard_render_system(), composite_system()};
   if (options.readback) systems.push_back(frame_readback_system());
   profiling_ = options.profile;
   if (profiling_) {
@@ -197,14 +197,14 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     gpu_timer_ = std::make_unique<gpu::GpuPassTimer>(profile_origin_);
   }
   for (ecs::SystemDesc& d : systems) {
-    if (profiling_ && d.phase >= ecs::Phase::render) {
+    if (profiling_ && d.main_thread) {
       // Systems that issue GL commands: their GPU time is a pass of its own on the GPU track.
       d.run = [run = std::move(d.run), name = d.name](ecs::World& w) {
         gpu::GpuPassScope pass(name.c_str());
         run(w);
       };
     }
-    if (options.sync_timing) {
+    if (options.sync_timing && d.main_thread) {
       d.run = [run = std::move(d.run)](ecs::World& w) {
         run(w);
         glFinish();
@@ -212,6 +212,7 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     }
     schedule_.add(std::move(d));
   }
+  schedule_.setup(world_);
 }
 
 void SceneRuntime::step() {
@@ -274,7 +275,7 @@ void SceneRuntime::redraw() {
   FrameClock& clock = world_.resource<FrameClock>();
   const uint64_t next = clock.frame;
   if (next > 0) clock.frame = next - 1;
-  schedule_.run_phases(world_, ecs::Phase::sort, ecs::Phase::output);
+  schedule_.run_phases(world_, ecs::Phase::camera, ecs::Phase::output);
   world_.resource<FrameClock>().frame = next;
 }
 

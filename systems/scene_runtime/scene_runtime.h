@@ -1,13 +1,15 @@
 #pragma once
 // A scene brought to life: the world built from a SceneDescription (a camera entity, one entity
 // per cloud and per mesh, the resources) and the standard schedule of systems:
-//   spawn:     emitter (clouds), particle_emitter (explosion emitters)
-//   simulate:  animation (cloud drift), particle_animation (explosion particles), camera_orbit
-//   sort:      sorting (one draw list per view)
-//   camera:    camera (mono frame and eye frames)
-//   render:    mesh_render, billboard_render (per view; particles into a layer when reduced)
+//   spawn:     cloud_emitter (clouds), emitter (explosion emitters)
+//   simulate:  cloud_drift (cloud drift), animation (explosion particles), camera_orbit
+//   camera:    stereo_camera (mono frame and eye frames, into View)
+//   sort:      sorting (one draw list per view, for View's eyes), flipbook_orient
+//   render:    mesh_render, flipbook_render, billboard_render (per view; particles into a layer
+//              when reduced)
 //   composite: composite (particle layers over the scene, views into the output image)
-//   output:    readback (optional: every view, linear, for tests and measurements)
+//   output:    frame_readback (optional: every view, linear, for tests and measurements)
+// Each system's setup runs once at the end of construction (renderers, scratch, outputs).
 // Frame f shows the state after f simulation steps of dt = 1 / fps (after prewarm + f steps when
 // the scene asks for a prewarm: those steps run in the constructor). Both eyes of a stereo pair
 // render the same simulation state: simulation runs once per frame.
@@ -70,7 +72,7 @@ class SceneRuntime {
   // output), then advances the clock: the particle state afterwards is the one step() leaves.
   // `pyro render --frames A:B` uses it to reach frame A without drawing the frames before it.
   void simulate_step();
-  // Draws the last frame's state again (sort, camera, render, composite and output phases, at
+  // Draws the last frame's state again (camera, sort, render, composite and output phases, at
   // the last frame's time) without running spawn or simulate and without advancing the clock:
   // the viewer paused, with the camera moving. After step(), redraw() gives the same image.
   void redraw();
