@@ -7,9 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/content_location.h"
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/io/png_file.h"
 #include "engine/io/staging_folder.h"
 #include "engine/math/color.h"
@@ -88,7 +89,7 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
 
 std::string default_flipbook_folder() {
   if (const char* env = std::getenv("PYRO_FLIPBOOK_DIR"); env && *env) return env;
-  return PYRO_DEFAULT_FLIPBOOK_DIR;
+  return built_in_flipbook_dir();
 }
 
 std::string ensure_default_flipbook() {

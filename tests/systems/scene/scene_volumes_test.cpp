@@ -1,0 +1,112 @@
+// The scene format's `volumes[]`: parse errors of every kind (JSON pointer, the volume file named,
+// did-you-mean), path resolution against the scene file's folder, the fallback.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <string>
+
+#include "engine/core/user_error.h"
+#include "systems/scene/scene_loader.h"
+#include "tests/support/test_paths.h"
+
+namespace pyro {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SceneVolumes : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::scratch_dir("scene_volumes");
+    fs::create_directories(dir_ / "scenes");
+    fs::create_directories(dir_ / "volumes");
+    std::ofstream(dir_ / "volumes" / "cloud.vdb") << "not read by the loader";
+    std::ofstream(dir_ / "volumes" / "cloud.pyrop") << "not read by the loader";
+    scene_ = (dir_ / "scenes" / "scene.json").string();
+  }
+  std::string with_volumes(const std::string& volumes) const {
+    return "{\"volumes\": [" + volumes + "]}";
+  }
+  std::string expect_error(const std::string& volumes, const std::string& place,
+                           std::initializer_list<std::string> fragments) const {
+    try {
+      parse_scene(with_volumes(volumes), scene_);
+    } catch (const UserError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(e.file(), scene_) << what;
+      EXPECT_EQ(e.place(), place) << what;
+      for (const std::string& f : fragments)
+        EXPECT_NE(what.find(f), std::string::npos) << "missing [" << f << "] in: " << what;
+      return what;
+    }
+    ADD_FAILURE() << "no error for: " << volumes;
+    return {};
+  }
+  fs::path dir_;
+  std::string scene_;
+};
+
+TEST_F(SceneVolumes, ResolvesAgainstTheSceneFolderWithDefaults) {
+  const SceneDescription s = parse_scene(with_volumes(R"({"file": "../volumes/cloud.vdb"})"), scene_);
+  ASSERT_EQ(s.volumes.size(), 1u);
+  const VolumeDescription& v = s.volumes[0];
+  EXPECT_EQ(fs::path(v.path), (dir_ / "volumes" / "cloud.vdb").lexically_normal());
+  EXPECT_EQ(v.kind, VolumeFileKind::vdb);
+  EXPECT_FALSE(v.used_fallback);
+  EXPECT_EQ(v.pointer, "/volumes/0");
+  EXPECT_TRUE(v.anchor_center);
+  EXPECT_FLOAT_EQ(v.scale, 1.0f);
+  EXPECT_FLOAT_EQ(v.error, 0.03f);
+  EXPECT_EQ(v.grid_index, -1);
+}
+
+TEST_F(SceneVolumes, UsesTheFallbackOnlyWhenTheFileIsAbsent) {
+  SceneDescription s = parse_scene(
+      with_volumes(R"({"file": "../missing/big.vdb", "fallback": "../volumes/cloud.pyrop", "size": 4})"),
+      scene_);
+  EXPECT_TRUE(s.volumes[0].used_fallback);
+  EXPECT_EQ(s.volumes[0].kind, VolumeFileKind::particles);
+  EXPECT_EQ(fs::path(s.volumes[0].path), (dir_ / "volumes" / "cloud.pyrop").lexically_normal());
+  s = parse_scene(
+      with_volumes(R"({"file": "../volumes/cloud.vdb", "fallback": "../volumes/cloud.pyrop"})"), scene_);
+  EXPECT_FALSE(s.volumes[0].used_fallback);
+  EXPECT_EQ(s.volumes[0].kind, VolumeFileKind::vdb);
+}
+
+TEST_F(SceneVolumes, MissingFilesNameTheResolvedPaths) {
+  expect_error(R"({"file": "cloud.vdb"})", "/volumes/0/file",
+               {"no file at", (dir_ / "scenes" / "cloud.vdb").string()});
+  expect_error(R"({"file": "../volumes/cloud.vdb"}, {"file": "a.vdb", "fallback": "b.pyrop"})",
+               "/volumes/1/file",
+               {"neither", (dir_ / "scenes" / "a.vdb").string(), (dir_ / "scenes" / "b.pyrop").string()});
+}
+
+TEST_F(SceneVolumes, RefusesEveryKindOfMistake) {
+  expect_error(R"({})", "/volumes/0", {"missing required key \"file\""});
+  expect_error(R"(3)", "/volumes/0", {"expected an object describing a volume"});
+  expect_error(R"({"file": "../volumes/cloud.txt"})", "/volumes/0/file", {".vdb", ".pyrop"});
+  expect_error(R"({"file": ""})", "/volumes/0/file", {"found \"\""});
+  expect_error(R"({"file": 7})", "/volumes/0/file", {"found 7"});
+  expect_error(R"({"file": "../volumes/cloud.vdb", "fallback": "x.png"})", "/volumes/0/fallback", {".pyrop"});
+  expect_error(R"({"file": "../volumes/cloud.vdb", "scael": 2})", "/volumes/0/scael",
+               {"did you mean \"scale\""});
+  expect_error(R"({"file": "../volumes/cloud.vdb", "scale": 0})", "/volumes/0/scale", {"(0, 1e6]"});
+  expect_error(R"({"file": "../volumes/cloud.vdb", "scale": 2, "size": 3})", "/volumes/0/size",
+               {"either \"scale\" or \"size\""});
+  expect_error(R"({"file": "../volumes/cloud.vdb", "grid": "density", "grid_index": 1})",
+               "/volumes/0/grid_index", {"either \"grid\" or \"grid_index\""});
+  expect_error(R"({"file": "../volumes/cloud.vdb", "grid_index": -1})", "/volumes/0/grid_index",
+               {"an integer in [0, 1000000]"});
+  expect_error(R"({"file": "../volumes/cloud.vdb", "error": 0})", "/volumes/0/error", {"(0, 1]"});
+  expect_error(R"({"file": "../volumes/cloud.vdb", "anchor": "centre"})", "/volumes/0/anchor",
+               {"did you mean \"center\""});
+  expect_error(R"({"file": "../volumes/cloud.vdb", "position": [1, 2]})", "/volumes/0/position",
+               {"array of 3 numbers"});
+  expect_error(R"({"file": "../volumes/cloud.pyrop", "grid": "density"})", "/volumes/0/grid",
+               {"particle file (.pyrop)", "cloud.pyrop"});
+}
+
+}  // namespace
+}  // namespace pyro

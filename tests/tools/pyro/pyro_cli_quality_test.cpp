@@ -1,0 +1,180 @@
+// Quality from an error target end to end (issue 6, part 3), on a small cheap Gaussian scene:
+// `pyro render` of a scene with quality.max_rmse picks settings whose frame, as written to PNG,
+// is within the target of the CPU reference computed here (render_particles_reference over the
+// scene's background: an independent path); the pick is cached and reused without measuring,
+// and measured again when the scene changes; bad values exit 2 naming the JSON pointer.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "components/particle_set.h"
+#include "components/view.h"
+#include "engine/io/png_file.h"
+#include "systems/scene/scene_loader.h"
+#include "engine/math/color.h"
+#include "systems/reference/particle_reference.h"
+#include "systems/scene_runtime/scene_runtime.h"
+#include "tests/support/json_output.h"
+#include "tests/support/test_paths.h"
+
+namespace pyro {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+constexpr double kTarget = 0.03;
+
+// 64x48, 60 Gaussian particles, no meshes (so the reference needs no opaque scene).
+std::string tiny_scene(const std::string& extra_quality = "\"quality\": {\"max_rmse\": 0.03}",
+                       int seed = 7) {
+  return "{\"name\": \"tiny fog\", \"seed\": " + std::to_string(seed) +
+         ", \"output\": {\"width\": 64, \"height\": 48, \"fps\": 30},"
+         " \"background\": [0.5, 0.55, 0.6],"
+         " \"camera\": {\"position\": [0, 1.5, 8], \"target\": [0, 1.5, 0], \"fov_y_deg\": 45},"
+         " \"clouds\": [{\"count\": 60, \"radius\": 0.6, \"density\": 0.3, \"color\": 0.85,"
+         " \"box\": {\"min\": [-2, 0.5, -2], \"max\": [2, 2.5, 2]}, \"drift\": [0.1, 0, 0]}]" +
+         (extra_quality.empty() ? std::string() : ", " + extra_quality) + "}";
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream out(p);
+  out << text;
+}
+
+// Points the quality cache at a scratch folder for this test (restored after).
+class CacheDir {
+ public:
+  explicit CacheDir(const fs::path& dir) {
+    if (const char* old = std::getenv("PYRO_CACHE_DIR")) saved_ = old, had_ = true;
+    setenv("PYRO_CACHE_DIR", dir.c_str(), 1);
+  }
+  ~CacheDir() {
+    if (had_) setenv("PYRO_CACHE_DIR", saved_.c_str(), 1);
+    else unsetenv("PYRO_CACHE_DIR");
+  }
+
+ private:
+  std::string saved_;
+  bool had_ = false;
+};
+
+TEST(PyroCliQuality, RenderedPickMeetsTheTargetAgainstTheCpuReference) {
+  const fs::path dir = test::scratch_dir("quality_render");
+  const CacheDir cache(dir / "cache");
+  const fs::path scene_file = dir / "tiny.json";
+  write(scene_file, tiny_scene());
+  const auto r = test::run_pyro({"render", scene_file.string(), "--out", (dir / "out").string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("pyro: quality: max RMSE 0.03 -> layer scale"), std::string::npos) << r.err;
+  const json summary = test::last_json_line(r.out);
+  ASSERT_TRUE(summary.contains("quality")) << summary.dump();
+  const json& q = summary["quality"];
+  EXPECT_TRUE(q["met"].get<bool>());
+  EXPECT_LE(q["expected_rmse"].get<double>(), kTarget);
+  EXPECT_EQ(summary["layer_scale"], q["settings"]["layer_scale"]);
+
+  // The reference, independently: the particles at frame 0 and the camera, integrated exactly.
+  const SceneDescription scene = load_scene(scene_file.string());
+  RuntimeOptions o;
+  o.readback = false;
+  SceneRuntime runtime(scene, o);
+  runtime.step();
+  const CameraFrame camera = runtime.world().resource<View>().eyes.at(0);
+  ParticlePool all(60);
+  runtime.world().each<ParticleSet>([&](ecs::Entity, ParticleSet& s) {
+    for (size_t i = 0; i < s.pool.size(); ++i) {
+      ParticleInit init;
+      init.position = {s.pool.px[i], s.pool.py[i], s.pool.pz[i]};
+      init.radius = s.pool.radius[i];
+      init.density = s.pool.density[i];
+      init.color = {s.pool.r[i], s.pool.g[i], s.pool.b[i]};
+      all.spawn(init);
+    }
+  });
+  ASSERT_EQ(all.size(), 60u);
+  const RgbImage reference = render_particles_reference(all, camera, glm::dvec3(scene.background));
+  const PngImage png = read_png((dir / "out" / "frame_0000.png").string());
+  ASSERT_EQ(png.width, reference.width);
+  ASSERT_EQ(png.height, reference.height);
+  RgbImage rendered = reference;
+  for (size_t i = 0, n = size_t(png.width) * png.height; i < n; ++i)
+    for (size_t ch = 0; ch < 3; ++ch)
+      rendered.rgb[3 * i + ch] = srgb_to_linear(png.pixels[i * png.channels + ch] / 255.0f);
+  const double rmse = image_rmse(rendered, reference);
+  EXPECT_LE(rmse, kTarget) << "picked " << q["settings"].dump();
+  EXPECT_GT(rmse, 0.0);
+}
+
+TEST(PyroCliQuality, PickIsCachedAndMeasuredAgainWhenTheSceneChanges) {
+  const fs::path dir = test::scratch_dir("quality_cache");
+  const CacheDir cache(dir / "cache");
+  const fs::path scene_file = dir / "tiny.json";
+  write(scene_file, tiny_scene());
+  const std::vector<std::string> args = {"quality", scene_file.string(), "--no-verify", "--json"};
+
+  const auto first = test::run_pyro(args);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const json a = test::last_json_line(first.out);
+  EXPECT_FALSE(a["from_cache"].get<bool>());
+  EXPECT_EQ(a["measured_candidates"], 12);
+  EXPECT_NE(first.err.find("measuring"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "cache" / "quality.json"));
+
+  const auto second = test::run_pyro(args);
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  const json b = test::last_json_line(second.out);
+  EXPECT_TRUE(b["from_cache"].get<bool>());
+  EXPECT_EQ(b["measured_candidates"], 0);
+  EXPECT_EQ(second.err.find("measuring"), std::string::npos) << second.err;
+  EXPECT_EQ(b["settings"], a["settings"]);
+  EXPECT_EQ(b["expected_rmse"], a["expected_rmse"]);
+  EXPECT_EQ(b["cache_key"], a["cache_key"]);
+
+  write(scene_file, tiny_scene("\"quality\": {\"max_rmse\": 0.03}", 8));  // another seed
+  const auto third = test::run_pyro(args);
+  ASSERT_EQ(third.exit_code, 0) << third.err;
+  const json c = test::last_json_line(third.out);
+  EXPECT_FALSE(c["from_cache"].get<bool>());
+  EXPECT_EQ(c["measured_candidates"], 12);
+  EXPECT_NE(c["cache_key"], a["cache_key"]);
+}
+
+TEST(PyroCliQuality, BadTargetsExitTwoNamingThePointer) {
+  const fs::path dir = test::scratch_dir("quality_bad");
+  const CacheDir cache(dir / "cache");
+  const struct {
+    std::string quality, pointer;
+  } cases[] = {
+      {"\"quality\": {\"max_rmse\": 0}", "/quality/max_rmse"},
+      {"\"quality\": {\"max_rmse\": 1.5}", "/quality/max_rmse"},
+      {"\"quality\": {\"max_rmse\": \"low\"}", "/quality/max_rmse"},
+      {"\"quality\": {}", "at /quality: missing required key \"max_rmse\""},
+      {"\"quality\": {\"max_rmse\": 0.02, \"max_rsme\": 1}", "/quality/max_rsme"},
+      {"\"quality\": 0.02", "at /quality: expected an object"},
+  };
+  for (const auto& c : cases) {
+    const fs::path scene_file = dir / "bad.json";
+    write(scene_file, tiny_scene(c.quality));
+    const fs::path out = dir / "out";
+    const auto r = test::run_pyro({"render", scene_file.string(), "--out", out.string()});
+    EXPECT_EQ(r.exit_code, 2) << c.quality << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.pointer), std::string::npos) << c.quality << "\n" << r.err;
+    EXPECT_NE(r.err.find(scene_file.string()), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(dir / "cache"));
+  }
+  // pyro quality without any target names the key it needs.
+  const fs::path plain = dir / "plain.json";
+  write(plain, tiny_scene(""));
+  const auto r = test::run_pyro({"quality", plain.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("/quality/max_rmse"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace pyro
