@@ -8,7 +8,7 @@
 // each (content/shaders/compose_tile.vert): llvmpipe rasterises a point as one square, where a
 // quad's two triangles cost a fifth more on its diagonal's blocks. Tiles without media or without fire give exactly the full
 // variant's image; depth edges are found in the layer's depths, so geometry thinner than a layer
-// texel can differ (the comp file says how): tests/composite/compose_tiles_test.cpp bounds it.
+// texel can differ (the comp file says how): tests/systems/composite/compose_tiles_test.cpp bounds it.
 #include <array>
 
 #include <glm/vec2.hpp>
