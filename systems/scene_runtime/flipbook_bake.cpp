@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/content_location.h"
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "systems/scene/scene_loader.h"
@@ -88,7 +89,7 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
 
 std::string default_flipbook_folder() {
   if (const char* env = std::getenv("PYRO_FLIPBOOK_DIR"); env && *env) return env;
-  return PYRO_DEFAULT_FLIPBOOK_DIR;
+  return built_in_flipbook_dir();
 }
 
 std::string ensure_default_flipbook(const NoteSink& on_note) {

@@ -40,7 +40,9 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
                                  const std::string& out);
 
 // Where fires without a `flipbook` find theirs: $PYRO_FLIPBOOK_DIR when set, else the build
-// folder's flipbooks/fire (baked by the build's `default_flipbook` target).
+// folder's flipbooks/fire (baked by the build's `default_flipbook` target), or
+// <prefix>/share/pyrocumulus/flipbooks/fire in an installed package
+// (engine/core/content_location.h).
 std::string default_flipbook_folder();
 
 // The default flipbook's folder, baked from content/scenes/flipbook_fire.json with the default
