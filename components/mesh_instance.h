@@ -2,9 +2,10 @@
 // An opaque procedural mesh placed in the scene, drawn before the particles with depth.
 #include <glm/vec3.hpp>
 
-#include "engine/io/scene_description.h"
-
 namespace pyro {
+
+// The procedural meshes (engine/mesh/mesh_data.h).
+enum class MeshKind { ground_plane, water_tower };
 
 struct MeshInstance {
   MeshKind kind = MeshKind::ground_plane;

@@ -2,7 +2,7 @@
 // Resource: what the render systems need from the scene that is not an entity.
 #include <glm/vec3.hpp>
 
-#include "engine/io/scene_description.h"
+#include "components/render_modes.h"
 
 namespace pyro {
 

@@ -7,13 +7,13 @@
 //   offset 16  uint64    particle count N
 //   offset 24  uint32    metadata length M
 //   offset 28  M bytes   metadata: a UTF-8 JSON object (source file, grid, error, ...)
-//   then       N x 8 float32: x, y, z, radius, density, r, g, b (components/gaussian_particle.h)
+//   then       N x 8 float32: x, y, z, radius, density, r, g, b (engine/particles/gaussian_particle.h)
 // The file size must be exactly 28 + M + 32 N. Written to a temporary name, then renamed, so a
 // reader never sees half a file.
 #include <string>
 #include <vector>
 
-#include "components/gaussian_particle.h"
+#include "engine/particles/gaussian_particle.h"
 
 namespace pyro {
 

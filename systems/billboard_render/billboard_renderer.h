@@ -3,7 +3,7 @@
 // instance buffer, and the programs (the real one and a trivial one used as a fill-rate
 // baseline by `pyro bench render`).
 #include "components/draw_list.h"
-#include "engine/io/scene_description.h"
+#include "systems/scene/scene_description.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"

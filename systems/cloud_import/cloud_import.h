@@ -24,7 +24,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "components/gaussian_particle.h"
+#include "engine/particles/gaussian_particle.h"
 #include "components/volume_medium.h"
 #include "engine/io/vdb_reader.h"
 

@@ -1,15 +1,15 @@
 #pragma once
 // A scene's `volumes[]` entry made into Gaussian particles: a particle file is read as it is, an
 // OpenVDB grid is imported (cloud_import.h) with the scene's light, then the placement
-// (position, scale or size, anchor; engine/io/scene_description.h) is applied.
+// (position, scale or size, anchor; systems/scene/scene_description.h) is applied.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "engine/particles/particle_pool.h"
 
-#include "components/gaussian_particle.h"
-#include "engine/io/scene_description.h"
+#include "engine/particles/gaussian_particle.h"
+#include "systems/scene/scene_description.h"
 
 namespace pyro {
 

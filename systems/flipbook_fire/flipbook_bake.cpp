@@ -9,7 +9,7 @@
 
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/io/png_file.h"
 #include "engine/io/staging_folder.h"
 #include "engine/math/color.h"

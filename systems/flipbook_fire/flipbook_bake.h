@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/io/scene_description.h"
+#include "systems/scene/scene_description.h"
 #include "systems/flipbook_fire/flipbook_frame_fade.h"
 
 namespace pyro {

@@ -8,7 +8,7 @@
 #include "components/flipbook_fire.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
-#include "engine/io/flipbook_folder.h"
+#include "systems/flipbook_fire/flipbook_folder.h"
 #include "engine/math/camera_math.h"
 #include "systems/flipbook_fire/flipbook_geometry.h"
 

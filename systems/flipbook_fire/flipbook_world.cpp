@@ -3,7 +3,7 @@
 #include <map>
 #include <tuple>
 
-#include "engine/io/flipbook_folder.h"
+#include "systems/flipbook_fire/flipbook_folder.h"
 #include "systems/flipbook_fire/flipbook_bake.h"
 #include "systems/flipbook_fire/flipbook_layout.h"
 #include "systems/flipbook_fire/flipbook_renderer.h"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/io/scene_description.h"
+#include "systems/scene/scene_description.h"
 #include "systems/quality/quality_settings.h"
 #include "systems/reference/rgb_image.h"
 

@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/io/scene_description.h"
+#include "systems/scene/scene_description.h"
 #include "systems/quality/quality_settings.h"
 
 namespace pyro {

@@ -3,7 +3,7 @@
 // resolution, the footprint table's size and the simulation's time step (as substeps per frame).
 #include <nlohmann/json.hpp>
 
-#include "engine/io/scene_description.h"
+#include "systems/scene/scene_description.h"
 
 namespace pyro {
 

@@ -4,8 +4,8 @@
 // shows of an imported cloud, for comparison with the CPU reference.
 #include <vector>
 
-#include "components/gaussian_particle.h"
-#include "engine/io/scene_description.h"
+#include "engine/particles/gaussian_particle.h"
+#include "systems/scene/scene_description.h"
 #include "systems/reference/rgb_image.h"
 
 namespace pyro {

@@ -24,7 +24,7 @@
 #include "components/volume_source.h"
 #include "engine/core/rng.h"
 #include "engine/io/png_file.h"
-#include "engine/io/scene_budget.h"
+#include "systems/scene/scene_budget.h"
 #include "engine/math/footprint.h"
 #include "systems/animation/drift_system.h"
 #include "systems/animation/particle_animation_system.h"
@@ -82,7 +82,7 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
   shading.fire_detail_range = scene.render.fire_detail_range;
   world_.set_resource<ExplosionShading>(shading);
 
-  // Budgets (engine/io/scene_budget.h): refused here, before any pool or target is allocated,
+  // Budgets (systems/scene/scene_budget.h): refused here, before any pool or target is allocated,
   // and again once the volumes' particles are known.
   GLint driver_max_texture = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &driver_max_texture);

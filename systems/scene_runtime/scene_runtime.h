@@ -25,7 +25,7 @@
 #include "engine/gpu/gl_context.h"
 #include "engine/gpu/gpu_pass_timer.h"
 #include "engine/gpu/render_target.h"
-#include "engine/io/scene_description.h"
+#include "systems/scene/scene_description.h"
 
 namespace pyro {
 

@@ -12,7 +12,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/isolated_call.h"
 #include "engine/io/png_file.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/io/vdb_file_check.h"
 #include "engine/io/vdb_reader.h"
 #include "tools/pyro/app.h"

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "components/frame_image.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 

@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/png_file.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/math/color.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tests/support/small_runtime.h"

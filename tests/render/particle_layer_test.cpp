@@ -8,7 +8,7 @@
 
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/math/color.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"

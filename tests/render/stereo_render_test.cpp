@@ -7,7 +7,7 @@
 
 #include "components/gpu_frame.h"
 #include "components/particle_set.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/math/anaglyph.h"
 #include "engine/math/color.h"
 #include "engine/math/stereo_projection.h"

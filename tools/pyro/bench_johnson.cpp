@@ -8,7 +8,7 @@
 
 #include "components/camera.h"
 #include "engine/math/image_error.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/core/content_path.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/progress.h"

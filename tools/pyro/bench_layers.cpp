@@ -15,7 +15,7 @@
 #include "components/particle_set.h"
 #include "components/render_settings.h"
 #include "engine/ecs/world.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/composite/compositor.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/progress.h"

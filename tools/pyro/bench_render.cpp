@@ -9,7 +9,7 @@
 #include "components/draw_list.h"
 #include "components/gpu_frame.h"
 #include "components/view.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/progress.h"

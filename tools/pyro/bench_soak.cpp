@@ -9,7 +9,7 @@
 
 #include "components/emitter.h"
 #include "components/particle_set.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 
 #include "tools/pyro/progress.h"

@@ -9,7 +9,7 @@
 #include "components/render_settings.h"
 #include "components/view.h"
 #include "engine/core/content_path.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/reference/particle_reference.h"
 #include "systems/reference/world_snapshot.h"
 #include "systems/scene_runtime/scene_runtime.h"

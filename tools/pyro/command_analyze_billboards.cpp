@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "components/frame_image.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/math/image_error.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/flipbook_fire/flipbook_bake.h"
 #include "systems/flipbook_fire/flipbook_layout.h"
 #include "systems/flipbook_fire/flipbook_pattern.h"

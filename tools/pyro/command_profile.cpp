@@ -19,7 +19,7 @@
 #include "components/particle_medium.h"
 #include "components/particle_set.h"
 #include "engine/core/sample_statistics.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/render_options.h"

@@ -15,7 +15,7 @@
 #include "engine/core/trace_events.h"
 #include "engine/core/user_error.h"
 #include "engine/io/text_file.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/quality/quality_measurement.h"
 #include "systems/quality/quality_picker.h"
 #include "systems/scene_runtime/scene_runtime.h"

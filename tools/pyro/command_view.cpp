@@ -28,7 +28,7 @@
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/window_context.h"
 #include "engine/io/png_file.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/math/view_controller.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"

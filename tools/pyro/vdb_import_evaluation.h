@@ -5,9 +5,9 @@
 // the camera framing the grid. The reference is rendered once per grid and reused across targets.
 #include <vector>
 
-#include "components/gaussian_particle.h"
+#include "engine/particles/gaussian_particle.h"
 #include "components/volume_medium.h"
-#include "engine/io/scene_description.h"
+#include "systems/scene/scene_description.h"
 #include "engine/io/vdb_reader.h"
 #include "systems/cloud_import/cloud_import.h"
 #include "systems/reference/rgb_image.h"

@@ -2,7 +2,7 @@
 // What `pyro import-vdb` and `pyro bench vdb` share: the default camera that frames a grid's
 // bounding box, the default medium, and the error target's mapping to the importer's tolerance.
 #include "components/volume_medium.h"
-#include "engine/io/scene_description.h"
+#include "systems/scene/scene_description.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/math/camera_math.h"
 

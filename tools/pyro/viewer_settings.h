@@ -2,7 +2,7 @@
 // What pyro view shows and how, as the keys change it: stereo mode, billboard alignment, layer
 // scale (these three need a new runtime), pause and single steps, the overlay and its help.
 #include "components/render_settings.h"
-#include "engine/io/scene_description.h"
+#include "systems/scene/scene_description.h"
 #include "tools/pyro/viewer_keys.h"
 
 namespace pyro::cli {

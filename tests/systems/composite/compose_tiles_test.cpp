@@ -16,7 +16,7 @@
 #include "components/explosion_shading.h"
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/composite/compose_tiles.h"
 #include "systems/composite/compositor.h"
 #include "systems/scene_runtime/scene_runtime.h"

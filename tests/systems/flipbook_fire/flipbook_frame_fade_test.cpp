@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "engine/io/flipbook_folder.h"
+#include "systems/flipbook_fire/flipbook_folder.h"
 #include "engine/math/color.h"
 #include "systems/flipbook_fire/flipbook_frame_fade.h"
 #include "tests/support/test_paths.h"

@@ -15,7 +15,7 @@
 #include "components/gpu_frame.h"
 #include "components/view.h"
 #include "engine/io/png_file.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/math/color.h"
 #include "engine/math/stereo_projection.h"
 #include "systems/flipbook_fire/flipbook_geometry.h"

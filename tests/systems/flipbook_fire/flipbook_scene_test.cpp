@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "engine/core/user_error.h"
-#include "engine/io/flipbook_folder.h"
-#include "engine/io/scene_loader.h"
+#include "systems/flipbook_fire/flipbook_folder.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/math/color.h"
 #include "tests/support/json_output.h"
 #include "tests/support/test_paths.h"

@@ -11,7 +11,7 @@
 #include "components/gpu_frame.h"
 #include "components/particle_set.h"
 #include "components/view.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/quality/quality_measurement.h"
 #include "systems/quality/quality_picker.h"
 #include "systems/reference/particle_reference.h"

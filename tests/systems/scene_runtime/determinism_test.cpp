@@ -8,7 +8,7 @@
 
 #include "components/particle_set.h"
 #include "engine/core/rng.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/math/camera_math.h"
 #include "systems/reference/particle_reference.h"
 #include "systems/scene_runtime/scene_runtime.h"

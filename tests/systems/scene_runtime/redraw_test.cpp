@@ -5,7 +5,7 @@
 
 #include "components/frame_clock.h"
 #include "components/particle_set.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 

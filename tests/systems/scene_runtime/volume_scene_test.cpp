@@ -12,7 +12,7 @@
 #include "components/particle_set.h"
 #include "components/volume_source.h"
 #include "engine/io/particle_file.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/io/vdb_reader.h"
 #include "systems/cloud_import/scene_volume.h"
 #include "systems/scene_runtime/scene_runtime.h"

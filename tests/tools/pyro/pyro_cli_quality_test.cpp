@@ -14,7 +14,7 @@
 #include "components/particle_set.h"
 #include "components/view.h"
 #include "engine/io/png_file.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "engine/math/color.h"
 #include "systems/reference/particle_reference.h"
 #include "systems/scene_runtime/scene_runtime.h"

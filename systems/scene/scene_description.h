@@ -8,10 +8,12 @@
 #include <glm/vec3.hpp>
 
 #include "components/emitter.h"
+#include "components/mesh_instance.h"
+#include "components/render_modes.h"
 #include "components/flipbook_fire.h"
 #include "components/particle_dynamics.h"
 #include "components/simulation_environment.h"
-#include "engine/io/scene_budget.h"
+#include "systems/scene/scene_budget.h"
 
 namespace pyro {
 
@@ -29,20 +31,6 @@ struct CameraDescription {
   float zero_parallax_distance = 8.0f; // view depth where both eyes' images coincide, > 0
   bool swap_eyes = false;              // "eye_order": "right-left" puts the right eye first
 };
-
-// How particle billboards are oriented (Johnson & McAllister 2005, section 3): all facing the
-// viewplane (one rotation per eye) or each facing the viewpoint (one rotation per particle).
-enum class BillboardAlignment { viewplane, viewpoint };
-
-// What a particle is when drawn: a Gaussian splat (Johnson & McAllister 2005: density is the
-// opacity at the kernel's centre), or a sphere of homogeneous medium (Umenhoffer et al. 2006:
-// density is the extinction coefficient tau, per unit length) drawn as a spherical billboard
-// (opacity from the real path length, clipped by the scene and the near plane) or as the planar
-// billboard it replaces (for comparison: it clips against geometry and pops at the near plane).
-enum class ParticleShape { gaussian, spherical, planar };
-// color: each particle its own colour; explosion: dust, smoke and fire shaded by Umenhoffer et
-// al. 2006's eq. 1, each medium in its own layer (spherical or planar particles only).
-enum class ParticleShading { color, explosion };
 
 struct RenderDescription {
   BillboardAlignment billboards = BillboardAlignment::viewplane;
@@ -84,8 +72,6 @@ struct CloudDescription {
   glm::vec3 drift{0.0f, 0.0f, 0.0f};         // common drift velocity, world units / s
   float jitter = 0.0f;                       // per-particle random speed, >= 0
 };
-
-enum class MeshKind { ground_plane, water_tower };
 
 struct MeshDescription {
   MeshKind kind = MeshKind::ground_plane;

@@ -1,10 +1,10 @@
-#include "engine/io/scene_budget.h"
+#include "systems/scene/scene_budget.h"
 
 #include <algorithm>
 #include <cstdio>
 
 #include "engine/core/user_error.h"
-#include "engine/io/scene_description.h"
+#include "systems/scene/scene_description.h"
 
 namespace pyro {
 

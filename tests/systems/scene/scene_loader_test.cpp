@@ -1,4 +1,4 @@
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 

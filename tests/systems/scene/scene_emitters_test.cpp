@@ -5,7 +5,7 @@
 #include "components/emitter.h"
 #include "components/particle_set.h"
 #include "engine/core/user_error.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 
 namespace pyro {

@@ -7,7 +7,7 @@
 //     remembers which keys it asked for and refuses any other key in finish().
 // The scene-specific part at the bottom is then a list of one-line reads plus the few checks
 // that involve several fields.
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_loader.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "engine/core/user_error.h"
-#include "engine/io/scene_budget.h"
-#include "engine/io/scene_loader.h"
+#include "systems/scene/scene_budget.h"
+#include "systems/scene/scene_loader.h"
 
 namespace pyro {
 namespace {

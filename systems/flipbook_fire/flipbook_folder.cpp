@@ -1,4 +1,4 @@
-#include "engine/io/flipbook_folder.h"
+#include "systems/flipbook_fire/flipbook_folder.h"
 
 #include <algorithm>
 #include <cctype>

@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "engine/core/user_error.h"
-#include "engine/io/flipbook_folder.h"
+#include "systems/flipbook_fire/flipbook_folder.h"
 #include "engine/io/png_file.h"
 #include "tests/support/test_paths.h"
 

@@ -1,0 +1,20 @@
+#pragma once
+// How particles are drawn: the choices a scene file (`render.billboards`, `render.particles`,
+// `render.shading`) and the command line make, read by the render systems.
+namespace pyro {
+
+// How particle billboards are oriented (Johnson & McAllister 2005, section 3): all facing the
+// viewplane (one rotation per eye) or each facing the viewpoint (one rotation per particle).
+enum class BillboardAlignment { viewplane, viewpoint };
+
+// What a particle is when drawn: a Gaussian splat (Johnson & McAllister 2005: density is the
+// opacity at the kernel's centre), or a sphere of homogeneous medium (Umenhoffer et al. 2006:
+// density is the extinction coefficient tau, per unit length) drawn as a spherical billboard
+// (opacity from the real path length, clipped by the scene and the near plane) or as the planar
+// billboard it replaces (for comparison: it clips against geometry and pops at the near plane).
+enum class ParticleShape { gaussian, spherical, planar };
+// color: each particle its own colour; explosion: dust, smoke and fire shaded by Umenhoffer et
+// al. 2006's eq. 1, each medium in its own layer (spherical or planar particles only).
+enum class ParticleShading { color, explosion };
+
+}  // namespace pyro
