@@ -14,10 +14,10 @@
 #include <limits>
 #include <optional>
 
-#include "engine/io/scene_description.h"
 #include "engine/math/camera_math.h"
 #include "engine/math/footprint.h"
 #include "systems/reference/particle_reference.h"
+#include "systems/scene/scene_description.h"
 
 namespace pyro {
 namespace {
