@@ -28,6 +28,16 @@ const char* phase_name(Phase phase) {
   return "unknown";
 }
 
+void run_system_once(const SystemDesc& system, World& world) {
+  if (!system.run)
+    throw std::invalid_argument("run_system_once: system '" + system.name + "' has no run function");
+  world.reserve_type_slots(std::max(system.access.type_slots(), type_id<Entities>() + 1));
+  const RunningSystem running{&system.name, &system.access};
+  const RunningSystemScope scope(running);
+  if (system.setup) system.setup(world);
+  system.run(world);
+}
+
 std::size_t Schedule::index_of(const std::string& name) const {
   for (std::size_t i = 0; i < systems_.size(); ++i)
     if (systems_[i].name == name) return i;

@@ -63,6 +63,10 @@ struct SystemStats {
   double mean_ms() const { return frames ? total_ms / double(frames) : 0.0; }
 };
 
+// Runs one system alone on `world` as a schedule would: its setup, then its run, each under
+// its declared access (for tests and tools that exercise a system on a hand-built world).
+void run_system_once(const SystemDesc& system, World& world);
+
 class Schedule {
  public:
   // Throws std::invalid_argument for an empty or duplicate name, an empty run function, or an

@@ -259,3 +259,25 @@ TEST(Schedule, SetupRunsOnceInOrderBeforeFrames) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Schedule, RunSystemOnceRunsSetupThenRunUnderTheDeclaration) {
+  World w;
+  SystemDesc count;
+  count.name = "count";
+  count.access = Access::of<Writes<Image>>();
+  count.setup = [](World& world) { world.set_resource<Image>(Image{1}); };
+  count.run = [](World& world) { world.resource<Image>().w *= 10; };
+  pyro::ecs::run_system_once(count, w);
+  EXPECT_EQ(w.resource<Image>().w, 10);  // setup first, then run
+  SystemDesc sneaky = count;
+  sneaky.name = "sneaky";
+  sneaky.setup = nullptr;
+  sneaky.run = [](World& world) { world.set_resource<Position>(); };
+  EXPECT_THROW(pyro::ecs::run_system_once(sneaky, w), std::logic_error);
+  EXPECT_FALSE(w.has_resource<Position>());
+  EXPECT_EQ(pyro::ecs::running_system(), nullptr);
+}
+
+}  // namespace
