@@ -7,13 +7,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "engine/core/content_location.h"
 #include "engine/core/user_error.h"
 
 namespace pyro {
 
 std::string content_dir() {
   if (const char* env = std::getenv("PYRO_CONTENT_DIR"); env && *env) return env;
-  return PYRO_DEFAULT_CONTENT_DIR;
+  return built_in_content_dir();
 }
 
 std::string content_path(const std::string& relative) {

@@ -3,8 +3,9 @@
 
 namespace pyro {
 
-// The folder holding scenes and shaders: $PYRO_CONTENT_DIR when set, else the source tree's
-// content/ folder recorded at build time.
+// The folder holding scenes and shaders: $PYRO_CONTENT_DIR when set, else the one this build
+// records (engine/core/content_location.h: the source tree's content/ folder in a build tree,
+// <prefix>/share/pyrocumulus once installed).
 std::string content_dir();
 std::string content_path(const std::string& relative);
 

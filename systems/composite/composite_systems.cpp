@@ -20,16 +20,33 @@
 namespace pyro {
 
 namespace {
-Compositor& compositor(ecs::World& world) {
-  if (!world.has_resource<Compositor>()) world.set_resource<Compositor>();
-  return world.resource<Compositor>();
+
+// The explosion's media layers: the composition's per-frame inputs (depth range, time, shimmer)
+// and, from the MediaComposition resource when there is one, how the layers are upsampled.
+MediaComposition media_composition(const ecs::World& world) {
+  MediaComposition m;
+  if (const View* view = world.try_resource<View>(); view && !view->eyes.empty()) {
+    m.near = view->eyes[0].near;
+    m.far = view->eyes[0].far;
+  }
+  if (const FrameClock* clock = world.try_resource<FrameClock>())
+    m.time = static_cast<float>(clock->time());
+  const ExplosionShading* shading = world.try_resource<ExplosionShading>();
+  m.shimmer = shading ? shading->shimmer : ExplosionShading{}.shimmer;
+  if (const MediaComposition* over = world.try_resource<MediaComposition>()) {
+    m.depth_aware = over->depth_aware;
+    m.depth_tolerance = over->depth_tolerance;
+    m.tiles = over->tiles;
+  }
+  return m;
 }
 
 // Each view's particle depth grid (particle_depth_grid.h) into EyeTargets::particle_depths, as
 // (near, far) from the near plane on; a cell no particle reaches gets one depth, so that every
 // depth clamps alike there. Without a draw list nothing is known: every cell spans all depths.
-void upload_particle_depths(ecs::World& world, GpuFrame& frame, const View* view, float near) {
+void upload_particle_depths(const ecs::World& world, GpuFrame& frame, float near) {
   const EyeDrawLists* lists = world.try_resource<EyeDrawLists>();
+  const View* view = world.try_resource<View>();
   for (size_t v = 0; v < frame.eyes.size(); ++v) {
     EyeTargets& eye = frame.eyes[v];
     if (!eye.particle_depths) continue;
@@ -55,50 +72,46 @@ void upload_particle_depths(ecs::World& world, GpuFrame& frame, const View* view
                         GL_FLOAT, texels.data());
   }
 }
+
+void composite(ecs::World& world) {
+  GpuFrame& frame = world.resource<GpuFrame>();
+  Compositor& compositor = world.resource<Compositor>();
+  if (!frame.eyes.empty() && frame.eyes[0].media_atlas) {
+    const MediaComposition m = media_composition(world);
+    compositor.set_media(m);
+    upload_particle_depths(world, frame, m.near);
+  }
+  bool swap_eyes = false;
+  bool found = false;
+  world.each<const StereoCamera>([&](const StereoCamera& s) {
+    if (!found) swap_eyes = s.eye_order == EyeOrder::right_left;
+    found = true;
+  });
+  const RenderSettings& settings = world.resource<const RenderSettings>();
+  compositor.compose(settings.stereo_mode, frame, swap_eyes, settings.motion_blur);
+  if (frame.display) {
+    // The frame-scale shortcut: upscale the composed image bilinearly.
+    const gpu::RenderTarget& from = *frame.output;
+    const gpu::RenderTarget& to = *frame.display;
+    glBlitNamedFramebuffer(from.framebuffer(), to.framebuffer(), 0, 0, from.width(), from.height(),
+                           0, 0, to.width(), to.height(), GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  }
+}
+
 }  // namespace
 
-ecs::SystemDesc stereo_compose_system() {
-  return {"composite", ecs::Phase::composite,
-          ecs::access<GpuFrame, RenderSettings, StereoCamera, View, FrameClock, ExplosionShading,
-                      EyeDrawLists>(),
-          ecs::access<GpuFrame>(), [](ecs::World& world) {
-            GpuFrame& frame = world.resource<GpuFrame>();
-            if (!frame.eyes.empty() && frame.eyes[0].media_atlas) {
-              MediaComposition m;
-              const View* view = world.try_resource<View>();
-              if (view && !view->eyes.empty()) {
-                m.near = view->eyes[0].near;
-                m.far = view->eyes[0].far;
-              }
-              if (const FrameClock* clock = world.try_resource<FrameClock>())
-                m.time = static_cast<float>(clock->time());
-              const ExplosionShading* shading = world.try_resource<ExplosionShading>();
-              m.shimmer = shading ? shading->shimmer : ExplosionShading{}.shimmer;
-              if (const MediaComposition* over = world.try_resource<MediaComposition>()) {
-                m.depth_aware = over->depth_aware;
-                m.depth_tolerance = over->depth_tolerance;
-                m.tiles = over->tiles;
-              }
-              compositor(world).set_media(m);
-              upload_particle_depths(world, frame, view, m.near);
-            }
-            bool swap_eyes = false;
-            bool found = false;
-            world.each<StereoCamera>([&](StereoCamera& s) {
-              if (!found) swap_eyes = s.eye_order == EyeOrder::right_left;
-              found = true;
-            });
-            const RenderSettings& settings = world.resource<RenderSettings>();
-            compositor(world).compose(settings.stereo_mode, frame, swap_eyes, settings.motion_blur);
-            if (frame.display) {
-              // The frame-scale shortcut: upscale the composed image bilinearly.
-              const gpu::RenderTarget& from = *frame.output;
-              const gpu::RenderTarget& to = *frame.display;
-              glBlitNamedFramebuffer(from.framebuffer(), to.framebuffer(), 0, 0, from.width(),
-                                     from.height(), 0, 0, to.width(), to.height(),
-                                     GL_COLOR_BUFFER_BIT, GL_LINEAR);
-            }
-          }};
+ecs::SystemDesc composite_system() {
+  return {.name = "composite",
+          .phase = ecs::Phase::composite,
+          .access = ecs::Access::of<ecs::Reads<RenderSettings, StereoCamera, View, FrameClock,
+                                               ExplosionShading, MediaComposition, EyeDrawLists>,
+                                    ecs::Writes<GpuFrame, Compositor>>(),
+          .run = composite,
+          .setup =
+              [](ecs::World& world) {
+                if (!world.has_resource<Compositor>()) world.set_resource<Compositor>();
+              },
+          .main_thread = true};
 }
 
 }  // namespace pyro

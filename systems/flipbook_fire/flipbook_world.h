@@ -1,17 +1,28 @@
 #pragma once
-// Builds the flipbook fires of a scene into a world: one entity per fire with its billboards
-// expanded (flipbook_layout.h), its flipbook read from its folder (the engine's baked one when
-// the scene names none, baked first if missing: flipbook_bake.h), prepared (crop, black base
-// line, softened base) and uploaded to the FlipbookRenderer resource (made on first use). Fires
-// that use the same folder with the same preparation share one texture. A bad folder or frame
-// throws UserError naming it.
+// Flipbook fires into a world, in two steps. load_flipbooks reads each fire's folder (resolved:
+// the runtime's asset step names the engine's baked flipbook where the scene named none) and
+// prepares its frames (crop, black base line, softened base); fires that use the same folder
+// with the same preparation share one set of frames. add_flipbook_fires uploads those frames to
+// the FlipbookRenderer resource (made on first use) and makes one entity per fire with its
+// billboards expanded (flipbook_layout.h). A bad folder or frame throws UserError naming it.
+#include <cstddef>
 #include <vector>
 
 #include "components/flipbook_fire.h"
 #include "engine/ecs/world.h"
+#include "systems/flipbook_fire/flipbook_folder.h"
 
 namespace pyro {
 
-void add_flipbook_fires(ecs::World& world, const std::vector<FlipbookFire>& fires);
+struct FlipbookAssets {
+  std::vector<FlipbookFrames> frames;  // prepared, in the order the fires first use them
+  std::vector<size_t> fire_frames;     // per fire: its index into `frames`
+};
+
+// Every fire's `flipbook` must name a folder (not be empty).
+FlipbookAssets load_flipbooks(const std::vector<FlipbookFire>& fires);
+
+void add_flipbook_fires(ecs::World& world, const std::vector<FlipbookFire>& fires,
+                        const FlipbookAssets& assets);
 
 }  // namespace pyro

@@ -1,5 +1,5 @@
 #pragma once
-// The settings a quality target chooses (systems/quality/quality_picker.h): the particle layer's
+// The settings a quality target chooses (systems/quality_picker/quality_picker.h): the particle layer's
 // resolution, the footprint table's size and the simulation's time step (as substeps per frame).
 #include <nlohmann/json.hpp>
 

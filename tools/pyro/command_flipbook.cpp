@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "systems/scene/scene_loader.h"
-#include "systems/flipbook_fire/flipbook_bake.h"
+#include "systems/scene_runtime/flipbook_bake.h"
 #include "systems/flipbook_fire/flipbook_layout.h"
 #include "systems/flipbook_fire/flipbook_pattern.h"
 #include "tools/pyro/commands.h"

@@ -1,7 +1,7 @@
 // pyro quality SCENE [--max-rmse E] [--width W] [--height H] [--no-cache] [--no-verify] [--json]
 //
-// Shows a quality target end to end (issue 6, part 3): picks the cheapest settings meeting the
-// target (systems/quality/quality_picker.h; from the cache when this scene was measured on this
+// Shows a quality target end to end: picks the cheapest settings meeting the
+// target (systems/quality_picker/quality_picker.h; from the cache when this scene was measured on this
 // machine), then checks the pick on frames the search never saw: its RMSE against the ground
 // truth beside the full-resolution defaults' RMSE, and the time per frame of both, measured in
 // this run, alternating, best of two runs each.
@@ -14,10 +14,11 @@
 
 #include "engine/core/user_error.h"
 #include "systems/scene/scene_loader.h"
-#include "systems/quality/quality_measurement.h"
-#include "systems/quality/quality_picker.h"
+#include "systems/quality_picker/quality_measurement.h"
+#include "systems/quality_picker/quality_picker.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/print_note.h"
 
 namespace pyro::cli {
 
@@ -41,7 +42,8 @@ void run_quality(const QualityArgs& a) {
   const int width = a.width > 0 ? a.width : scene.width;
   const int height = a.height > 0 ? a.height : scene.height;
   const std::string renderer = shared_headless_context().description();
-  const QualityPick pick = pick_quality(scene, width, height, target, renderer, !a.no_cache);
+  const QualityPick pick =
+      pick_quality(scene, width, height, target, renderer, !a.no_cache, QualitySearch{}, print_note);
 
   nlohmann::json summary = pick.to_json();
   summary["scene"] = scene.file;

@@ -6,7 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/scene_runtime/runtime_options.h"
+#include "tools/pyro/print_note.h"
 
 namespace pyro::cli {
 
@@ -36,7 +37,9 @@ inline const std::map<std::string, ParticleShape>& particle_shape_names() {
 }
 
 // Adds --stereo, --billboards, --particles, --layer-scale, --interocular, --zero-parallax.
+// The runtime's notes go to stderr.
 inline void add_render_options(CLI::App* cmd, RuntimeOptions& o) {
+  o.on_note = print_note;
   cmd->add_option("--stereo", o.stereo_mode,
                   "Stereo output: mono, left-right (two files per frame), side-by-side, "
                   "side-by-side-crossed, anaglyph (Dubois red-cyan), anaglyph-color, "

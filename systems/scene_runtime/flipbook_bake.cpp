@@ -1,4 +1,4 @@
-#include "systems/flipbook_fire/flipbook_bake.h"
+#include "systems/scene_runtime/flipbook_bake.h"
 
 #include <chrono>
 #include <cstdio>
@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/content_location.h"
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "systems/scene/scene_loader.h"
@@ -88,17 +89,17 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
 
 std::string default_flipbook_folder() {
   if (const char* env = std::getenv("PYRO_FLIPBOOK_DIR"); env && *env) return env;
-  return PYRO_DEFAULT_FLIPBOOK_DIR;
+  return built_in_flipbook_dir();
 }
 
-std::string ensure_default_flipbook() {
+std::string ensure_default_flipbook(const NoteSink& on_note) {
   const std::string folder = default_flipbook_folder();
   std::error_code ec;
   if (std::filesystem::is_regular_file(std::filesystem::path(folder) / "flipbook.json", ec))
     return folder;
   const std::string scene = content_path("scenes/flipbook_fire.json");
-  std::fprintf(stderr, "pyro: baking the default flame flipbook from %s into %s (first run)\n",
-               scene.c_str(), folder.c_str());
+  if (on_note)
+    on_note("baking the default flame flipbook from " + scene + " into " + folder + " (first run)");
   bake_flipbook(load_scene(scene), FlipbookBakeOptions{}, folder);
   return folder;
 }

@@ -1,10 +1,10 @@
-#include "tools/pyro/frame_range.h"
+#include "systems/scene_runtime/frame_range.h"
 
 #include <charconv>
 
 #include "engine/core/user_error.h"
 
-namespace pyro::cli {
+namespace pyro {
 
 namespace {
 
@@ -37,4 +37,4 @@ FrameRange parse_frame_range(const std::string& text, const std::string& argumen
   return {a, b};
 }
 
-}  // namespace pyro::cli
+}  // namespace pyro

@@ -1,10 +1,10 @@
 #pragma once
-// The `--frames` argument of `pyro render`: "N" (frames 0 .. N-1) or "A:B" (frames A .. B, both
-// included, as render farms' job schedulers split sequences). Frame numbers are absolute: frame
-// f is the scene after f simulation steps, and is written as frame_%04d with that f.
+// A run of output frames: "N" (frames 0 .. N-1) or "A:B" (frames A .. B, both included, as
+// render farms' job schedulers split sequences). Frame numbers are absolute: frame f is the
+// scene after f frames (frame_sequencer.h), whichever frames are drawn.
 #include <string>
 
-namespace pyro::cli {
+namespace pyro {
 
 struct FrameRange {
   int first = 0;
@@ -16,4 +16,4 @@ struct FrameRange {
 // with 0 <= A <= B < 1,000,000.
 FrameRange parse_frame_range(const std::string& text, const std::string& argument);
 
-}  // namespace pyro::cli
+}  // namespace pyro

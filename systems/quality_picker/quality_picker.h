@@ -1,5 +1,5 @@
 #pragma once
-// Quality from an error target (issue 6): a scene that says "quality": {"max_rmse": E} gets the
+// Quality from an error target: a scene that says "quality": {"max_rmse": E} gets the
 // cheapest settings whose image RMSE against the ground truth (quality_measurement.h) is at most
 // E, with a margin. Every candidate (layer scale 1 .. 1/8; footprint table 16, 32, 64 for
 // Gaussian splats; 1 or 2 substeps per frame where emitters integrate dynamics) is rendered on
@@ -8,6 +8,7 @@
 //
 // Particle budgets are not searched: the scenes' particle counts are their content (a different
 // count is a different random sample of the medium, an error the target would have to absorb).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 
 #include "systems/scene/scene_description.h"
 #include "systems/quality/quality_settings.h"
+#include "systems/scene_runtime/runtime_options.h"
 
 namespace pyro {
 
@@ -46,9 +48,21 @@ QualitySettings full_resolution_defaults(const SceneDescription& scene);
 
 // The scene's file bytes (read from scene.file) key the cache with `renderer`, the size and the
 // target. `max_rmse` > 0. Measures (and caches) when the cache has no entry; `use_cache` false
-// measures and writes nothing.
+// measures and writes nothing. Notes (a measurement starting, a cache that cannot be written)
+// go to `on_note`.
 QualityPick pick_quality(const SceneDescription& scene, int width, int height, double max_rmse,
                          const std::string& renderer, bool use_cache = true,
-                         const QualitySearch& search = {});
+                         const QualitySearch& search = {}, const NoteSink& on_note = {});
+
+// The pick for the scene's own target (scene key quality.max_rmse) at the size it will run at
+// with `options`, cached or measured; nothing when the scene sets no target. Its settings go
+// into RuntimeOptions::quality, which resolve_scene applies.
+std::optional<QualityPick> pick_scene_quality(const SceneDescription& scene,
+                                              const RuntimeOptions& options,
+                                              const std::string& renderer,
+                                              const NoteSink& on_note = {});
+
+// One line describing the pick, for the user: the target, the settings, the expected error.
+std::string quality_pick_note(const QualityPick& pick, const SceneDescription& scene);
 
 }  // namespace pyro

@@ -1,5 +1,5 @@
 #pragma once
-// Flames from anywhere (issue 7): no video ships with the engine, so a flipbook can be baked
+// Flames from anywhere: no video ships with the engine, so a flipbook can be baked
 // from its own black-body fire simulation. A small scene (content/scenes/flipbook_fire.json: a
 // fire column on black, seen from the side) is rendered mono into `frames` PNG frames
 // (frame_0000.png, ...; cross-faded over the wrap so that the loop does not jump; borders
@@ -9,8 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "systems/scene/scene_description.h"
 #include "systems/flipbook_fire/flipbook_frame_fade.h"
+#include "systems/scene/scene_description.h"
+#include "systems/scene_runtime/runtime_options.h"
 
 namespace pyro {
 
@@ -39,11 +40,15 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
                                  const std::string& out);
 
 // Where fires without a `flipbook` find theirs: $PYRO_FLIPBOOK_DIR when set, else the build
-// folder's flipbooks/fire (baked by the build's `default_flipbook` target).
+// folder's flipbooks/fire (baked by the build's `default_flipbook` target), or
+// <prefix>/share/pyrocumulus/flipbooks/fire in an installed package
+// (engine/core/content_location.h).
 std::string default_flipbook_folder();
 
 // The default flipbook's folder, baked from content/scenes/flipbook_fire.json with the default
-// options first when it holds no manifest yet (a fresh clone's first run; a note on stderr).
-std::string ensure_default_flipbook();
+// options first when it holds no manifest yet (a fresh clone's first run; a note to `on_note`
+// before the bake starts). The bake runs its own SceneRuntime: it sits above the runtime, in
+// the runtime's asset step (load_scene_assets.h), never inside a world being built.
+std::string ensure_default_flipbook(const NoteSink& on_note = {});
 
 }  // namespace pyro

@@ -1,10 +1,10 @@
-#include "systems/quality/quality_measurement.h"
+#include "systems/quality_picker/quality_measurement.h"
 
 #include <epoxy/gl.h>
 
 #include <chrono>
 #include <cmath>
-#include <stdexcept>
+#include <optional>
 
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
@@ -22,24 +22,17 @@ namespace {
 
 constexpr int kTruthSubsteps = 4;
 
-RuntimeOptions mono_options(int width, int height, bool readback) {
+// Mono at width x height, with `q` (a quality pick: its substeps make the runtime's frames finer
+// than the scene's; SceneRuntime::draw_frame counts in the scene's frames).
+RuntimeOptions mono_options(int width, int height, bool readback,
+                            std::optional<QualitySettings> q = std::nullopt) {
   RuntimeOptions o;
   o.readback = readback;
   o.width_override = width;
   o.height_override = height;
+  o.quality = q;
   return o;
 }
-
-// Steps `runtime` (whose frames are `substeps` per scene frame) to scene frame `frame`: the
-// simulation-only steps in between, then one full step that draws it.
-void render_frame(SceneRuntime& runtime, int frame, int substeps) {
-  const uint64_t target = static_cast<uint64_t>(frame) * static_cast<uint64_t>(substeps);
-  if (runtime.frame() > target) throw std::logic_error("render_frame: frames must ascend");
-  while (runtime.frame() < target) runtime.simulate_step();
-  runtime.step();
-}
-
-
 
 }  // namespace
 
@@ -65,8 +58,8 @@ QualityGroundTruth::QualityGroundTruth(const SceneDescription& scene, int width,
     SceneRuntime particles(scene, mono_options(width, height, false));
     SceneRuntime background(opaque, mono_options(width, height, true));
     for (int f : frames_) {
-      render_frame(particles, f, 1);
-      render_frame(background, f, 1);
+      particles.draw_frame(f);
+      background.draw_frame(f);
       const CameraFrame camera = particles.world().resource<View>().eyes.at(0);
       const RgbImage behind = rgb_of(background.image());
       const std::vector<float> stop =
@@ -79,9 +72,9 @@ QualityGroundTruth::QualityGroundTruth(const SceneDescription& scene, int width,
     finest.layer_scale = 1.0f;
     finest.footprint_size = scene.footprint.size;
     finest.substeps = has_dynamics(scene) ? kTruthSubsteps : 1;
-    SceneRuntime runtime(apply_quality_settings(scene, finest), mono_options(width, height, true));
+    SceneRuntime runtime(scene, mono_options(width, height, true, finest));
     for (int f : frames_) {
-      render_frame(runtime, f, finest.substeps);
+      runtime.draw_frame(f);
       images_.push_back(rgb_of(runtime.image()));
     }
   }
@@ -97,10 +90,10 @@ std::string QualityGroundTruth::description() const {
 
 double measure_rmse(const SceneDescription& scene, int width, int height, const QualitySettings& q,
                     const QualityGroundTruth& truth) {
-  SceneRuntime runtime(apply_quality_settings(scene, q), mono_options(width, height, true));
+  SceneRuntime runtime(scene, mono_options(width, height, true, q));
   double sum = 0.0;
   for (size_t k = 0; k < truth.frames().size(); ++k) {
-    render_frame(runtime, truth.frames()[k], q.substeps);
+    runtime.draw_frame(truth.frames()[k]);
     const double e = image_rmse(rgb_of(runtime.image()), truth.image(k));
     sum += e * e;
   }
@@ -109,15 +102,15 @@ double measure_rmse(const SceneDescription& scene, int width, int height, const 
 
 double measure_ms_per_frame(const SceneDescription& scene, int width, int height,
                             const QualitySettings& q, int frames) {
-  SceneRuntime runtime(apply_quality_settings(scene, q), mono_options(width, height, false));
-  render_frame(runtime, 0, q.substeps);  // warm up: shaders, tables, targets
+  SceneRuntime runtime(scene, mono_options(width, height, false, q));
+  runtime.draw_frame(0);  // warm up: shaders, tables, targets
   glFinish();
   // The fastest frame: other work on a shared machine only ever adds time, so the least
   // disturbed frame estimates the setting's own cost best (a mean or median follows the load).
   std::vector<double> ms;
   for (int f = 1; f <= std::max(1, frames); ++f) {
     const auto t0 = std::chrono::steady_clock::now();
-    render_frame(runtime, f, q.substeps);
+    runtime.draw_frame(f);
     glFinish();
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }

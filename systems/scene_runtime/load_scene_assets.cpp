@@ -1,0 +1,60 @@
+#include "systems/scene_runtime/load_scene_assets.h"
+
+#include "systems/cloud_import/scene_volume.h"
+#include "systems/scene_runtime/flipbook_bake.h"
+#include "systems/scene_runtime/resolve_scene.h"
+
+namespace pyro {
+
+namespace {
+
+struct Notes {
+  SceneAssets& assets;
+  const NoteSink& sink;
+  void operator()(const std::string& note) const {
+    assets.notes.push_back(note);
+    if (sink) sink(note);
+  }
+};
+
+std::string volume_file_note(const SceneDescription& scene, const VolumeDescription& v) {
+  const std::string place = scene.file + ": " + v.pointer + ": ";
+  if (v.used_fallback)
+    return place + "volume file \"" + v.file + "\" not found; using the fallback \"" + v.path + "\"";
+  return place + "using volume file \"" + v.path + "\"";
+}
+
+void load_volumes(const SceneDescription& scene, SceneAssets& assets, const Notes& note) {
+  for (const VolumeDescription& v : scene.volumes) {
+    note(volume_file_note(scene, v));
+    SceneVolume loaded = load_scene_volume(scene, v);
+    if (!loaded.note.empty()) note(v.path + ": " + loaded.note);
+    assets.volumes.push_back(
+        {to_particle_pool(loaded.particles),
+         VolumeSource{v.path, v.used_fallback, loaded.active_voxels, loaded.particles.size()}});
+  }
+}
+
+void load_fires(const SceneDescription& scene, SceneAssets& assets, const Notes& note) {
+  assets.fires = scene.fires;
+  for (FlipbookFire& fire : assets.fires)
+    if (fire.flipbook.empty()) fire.flipbook = ensure_default_flipbook(note);
+  assets.flipbooks = load_flipbooks(assets.fires);
+}
+
+}  // namespace
+
+SceneAssets load_scene_assets(const ResolvedScene& resolved, const NoteSink& on_note) {
+  SceneAssets assets;
+  const Notes note{assets, on_note};
+  load_volumes(resolved.scene, assets, note);
+  if (!assets.volumes.empty()) {
+    uint64_t volume_particles = 0;
+    for (const VolumeAsset& v : assets.volumes) volume_particles += v.source.particles;
+    check_resolved_budget(resolved, volume_particles);
+  }
+  load_fires(resolved.scene, assets, note);
+  return assets;
+}
+
+}  // namespace pyro

@@ -1,0 +1,77 @@
+#include "systems/scene_runtime/resolve_scene.h"
+
+#include "systems/scene/scene_budget.h"
+
+namespace pyro {
+
+namespace {
+
+RenderSettings merge_render_settings(const SceneDescription& scene, const RuntimeOptions& options) {
+  RenderSettings s;
+  s.width = options.width_override > 0 ? options.width_override : scene.width;
+  s.height = options.height_override > 0 ? options.height_override : scene.height;
+  s.background = scene.background;
+  s.light_direction = scene.light.direction;
+  s.light_color = scene.light.color;
+  s.ambient = scene.light.ambient;
+  s.alignment = options.alignment.value_or(scene.render.billboards);
+  s.particles = options.particles.value_or(scene.render.particles);
+  s.layer_scale = options.layer_scale.value_or(scene.render.layer_scale);
+  s.frame_scale = options.frame_scale;
+  s.stereo_mode = options.stereo_mode;
+  s.shading = options.shading.value_or(scene.render.shading);
+  s.motion_blur = scene.render.motion_blur;
+  return s;
+}
+
+ExplosionShading explosion_shading(const RenderDescription& render) {
+  ExplosionShading shading;
+  shading.fire_t_min = render.fire_t_min;
+  shading.fire_t_max = render.fire_t_max;
+  shading.fire_emission = render.fire_emission;
+  shading.fire_detail_range = render.fire_detail_range;
+  return shading;
+}
+
+StereoCamera stereo_camera(const CameraDescription& camera, const RuntimeOptions& options) {
+  StereoCamera stereo;
+  stereo.parameters.interocular = options.interocular.value_or(camera.interocular);
+  stereo.parameters.zero_parallax_distance =
+      options.zero_parallax_distance.value_or(camera.zero_parallax_distance);
+  stereo.eye_order =
+      options.swap_eyes.value_or(camera.swap_eyes) ? EyeOrder::right_left : EyeOrder::left_right;
+  return stereo;
+}
+
+bool side_by_side(StereoMode mode) {
+  return mode == StereoMode::side_by_side || mode == StereoMode::side_by_side_crossed ||
+         mode == StereoMode::left_right;
+}
+
+}  // namespace
+
+ResolvedScene resolve_scene(const SceneDescription& scene, const RuntimeOptions& options,
+                            int driver_max_texture) {
+  ResolvedScene r;
+  r.scene = options.quality ? apply_quality_settings(scene, *options.quality) : scene;
+  r.quality = options.quality;
+  r.substeps = options.quality ? options.quality->substeps : 1;
+  r.settings = merge_render_settings(r.scene, options);
+  r.shading = explosion_shading(r.scene.render);
+  r.stereo = stereo_camera(r.scene.camera, options);
+  r.clock.dt = 1.0f / r.scene.frames_per_second;
+  r.views = is_stereo(r.settings.stereo_mode) ? 2 : 1;
+  r.output_width = side_by_side(r.settings.stereo_mode) ? 2 * r.settings.width : r.settings.width;
+  r.driver_max_texture = driver_max_texture;
+  check_resolved_budget(r, 0);
+  return r;
+}
+
+void check_resolved_budget(const ResolvedScene& r, uint64_t volume_particles) {
+  check_scene_budget(r.scene,
+                     estimate_scene_cost(r.scene, r.settings.width, r.settings.height, r.views,
+                                         r.output_width, volume_particles),
+                     r.driver_max_texture);
+}
+
+}  // namespace pyro

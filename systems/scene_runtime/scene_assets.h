@@ -1,0 +1,29 @@
+#pragma once
+// What a scene needs from files, read before its world is built: the volumes' particles
+// (particle files read, VDB grids imported) and the flipbooks' frames (read from their folders,
+// prepared; the engine's default flipbook baked first when missing). Plain data:
+// load_scene_assets.h makes it, build_world.h consumes it.
+#include <string>
+#include <vector>
+
+#include "components/volume_source.h"
+#include "engine/particles/particle_pool.h"
+#include "systems/flipbook_fire/flipbook_world.h"
+
+namespace pyro {
+
+struct VolumeAsset {
+  ParticlePool particles;  // exactly sized, fixed after loading
+  VolumeSource source;
+};
+
+struct SceneAssets {
+  std::vector<VolumeAsset> volumes;  // one per scene.volumes entry, in order
+  // scene.fires with their folders resolved (the default flipbook's where they named none),
+  // and the prepared frames they use.
+  std::vector<FlipbookFire> fires;
+  FlipbookAssets flipbooks;
+  std::vector<std::string> notes;  // every note reported while loading, in order
+};
+
+}  // namespace pyro
