@@ -6,9 +6,11 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "components/render_modes.h"
 #include "components/render_settings.h"
+#include "engine/ecs/schedule.h"
 #include "systems/quality/quality_settings.h"
 
 namespace pyro {
@@ -46,6 +48,9 @@ struct RuntimeOptions {
   std::function<void()> make_context_current;
   // Where notes go while the assets load (empty: they are only kept, SceneRuntime::notes()).
   NoteSink on_note;
+  // Systems of the embedding program's own (docs/embedding.md), added to the standard schedule
+  // after its systems, each in its phase, with the same profiling wrappers.
+  std::vector<ecs::SystemDesc> extra_systems;
 };
 
 }  // namespace pyro
