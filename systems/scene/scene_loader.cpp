@@ -742,7 +742,7 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
 }
 
 // ---------------------------------------------------------------------------------------------
-// Flipbook fires (Rose 2007, chapter 4; issue 7)
+// Flipbook fires (Rose 2007, chapter 4)
 
 // A non-empty array of numbers in `range` (at most `max_size`).
 std::vector<float> read_number_array(const json& v, const Where& at, const Range& range,
@@ -850,7 +850,7 @@ void read_fire(ObjectReader& r, FlipbookFire& f, const std::string& scene_file) 
 }
 
 // ---------------------------------------------------------------------------------------------
-// Explosion emitters (issue 4)
+// Explosion emitters
 
 bool read_bool(const json& v, const Where& at) {
   if (!v.is_boolean()) at.fail("expected true or false, found " + describe(v));

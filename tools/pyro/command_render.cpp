@@ -36,7 +36,7 @@ struct RenderArgs {
   int width = 0, height = 0;
   std::string frames = "1";
   bool json = false;
-  std::string trace;  // --trace FILE: Chrome trace-event JSON of the session
+  std::string trace;  // --trace FILE: Chrome trace-event JSON of the run
   RuntimeOptions runtime;
 };
 
