@@ -8,16 +8,13 @@
 #     declarations); FIND is what PyrocumulusConfig.cmake runs to find it again for a consumer.
 #
 #   pyro_add_module(<name> FOLDER <folder> [FILES <file names>...] [PUBLIC <deps>...]
-#                   [PRIVATE <deps>...] [EXPORT_SET <set>] [BUILD_TREE_ONLY]
-#                   [KNOWN_CYCLE <modules>...])
+#                   [PRIVATE <deps>...] [EXPORT_SET <set>] [BUILD_TREE_ONLY])
 #     A library pyro_<name> (alias Pyrocumulus::<name>) made of the .h and .cpp files of <folder>
 #     (globbed: a new file in the folder needs no CMake edit) or, with FILES, of those files of
 #     <folder> only (which the folder's globbing module then leaves out). A module without .cpp
 #     files is an INTERFACE library. PUBLIC dependencies are those its headers include, PRIVATE
 #     those only its sources include. EXPORT_SET names the installed target file it goes into
-#     (default: engine); BUILD_TREE_ONLY modules are not installed. KNOWN_CYCLE names modules
-#     with which a dependency cycle exists today and is being removed: the include check reports
-#     it as a warning instead of a failure.
+#     (default: engine); BUILD_TREE_ONLY modules are not installed.
 #
 #   pyro_finalize_modules(<json>)
 #     Creates the targets, writes the module table <json> that tools/check_includes.py reads,
@@ -34,7 +31,7 @@ endfunction()
 
 function(pyro_add_module name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "BUILD_TREE_ONLY" "FOLDER;EXPORT_SET"
-                        "FILES;PUBLIC;PRIVATE;KNOWN_CYCLE")
+                        "FILES;PUBLIC;PRIVATE")
   if(NOT arg_FOLDER)
     message(FATAL_ERROR "pyro_add_module(${name}): FOLDER is required")
   endif()
@@ -56,7 +53,7 @@ function(pyro_add_module name)
   endforeach()
   set_property(GLOBAL APPEND PROPERTY PYRO_MODULES ${name})
   set_property(GLOBAL APPEND PROPERTY PYRO_CLAIMED_FILES ${files})
-  foreach(key FOLDER FILES PUBLIC PRIVATE EXPORT_SET BUILD_TREE_ONLY KNOWN_CYCLE)
+  foreach(key FOLDER FILES PUBLIC PRIVATE EXPORT_SET BUILD_TREE_ONLY)
     set(value "${arg_${key}}")
     if(key STREQUAL "FILES")
       set(value "${files}")
@@ -164,7 +161,7 @@ function(_pyro_write_module_table json)
     set(fields "")
     get_property(folder GLOBAL PROPERTY PYRO_MODULE_${name}_FOLDER)
     list(APPEND fields "\"folder\": \"${folder}\"")
-    foreach(key FILES PUBLIC PRIVATE KNOWN_CYCLE)
+    foreach(key FILES PUBLIC PRIVATE)
       get_property(values GLOBAL PROPERTY PYRO_MODULE_${name}_${key})
       _pyro_json_list(list ${values})
       string(TOLOWER ${key} field)

@@ -11,8 +11,7 @@ configuring writes them to <build>/pyro_modules.json, which this script reads. T
   * a module includes only its own files and the modules and third-party libraries it declares
     (PUBLIC or PRIVATE); a header includes only PUBLIC ones; a PUBLIC dependency is one that some
     header of the module includes (otherwise it must be PRIVATE); no declared dependency is unused;
-  * the declared dependencies between modules form no cycle (a cycle every edge of which is declared
-    KNOWN_CYCLE on both ends is reported as a warning: one that is being removed).
+  * the declared dependencies between modules form no cycle.
 
 Exit status 0 when every rule holds, 1 with one line per violation (file:line: what and how to mend
 it) otherwise, 2 on bad arguments. `--suggest` prints, for each module, the dependency lists its
@@ -111,7 +110,6 @@ class Checker:
         self.root = root
         self.modules = modules
         self.errors = []
-        self.warnings = []
         # module -> dependency -> set of (is_header)
         self.used = {name: {} for name in modules.modules}
 
@@ -198,13 +196,7 @@ class Checker:
                 visit(name)
 
     def report_cycle(self, cycle):
-        text = " -> ".join(cycle)
-        edges = list(zip(cycle, cycle[1:]))
-        known = all(b in self.modules.modules[a].get("known_cycle", []) for a, b in edges)
-        if known:
-            self.warnings.append(f"dependencies: known cycle between modules, to be removed: {text}")
-        else:
-            self.error("dependencies", f"cycle between modules: {text}")
+        self.error("dependencies", "cycle between modules: " + " -> ".join(cycle))
 
     def run(self):
         for path in layer_files(self.root):
@@ -251,8 +243,6 @@ def main(argv=None):
     if args.suggest:
         print("\n".join(checker.suggestions()))
         return 0
-    for w in checker.warnings:
-        print(f"warning: {w}")
     for e in errors:
         print(e)
     if errors:

@@ -18,9 +18,9 @@ import check_includes  # noqa: E402
 PROJECT_ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
 
-def module(folder, public=(), private=(), files=(), known_cycle=()):
+def module(folder, public=(), private=(), files=()):
     return {"folder": folder, "files": list(files), "public": list(public),
-            "private": list(private), "known_cycle": list(known_cycle)}
+            "private": list(private)}
 
 
 class TreeTest(unittest.TestCase):
@@ -99,16 +99,6 @@ class TreeTest(unittest.TestCase):
         self.assert_fails("systems/a/a.cpp:3", "module system_a does not depend on system_b")
         self.table["modules"]["system_a"]["private"].append("system_b")
         self.assert_fails("cycle between modules: system_a -> system_b -> system_a")
-
-    def test_known_cycle_is_a_warning(self):
-        self.append("systems/a/a.cpp", '#include "systems/b/b.h"\n')
-        self.table["modules"]["system_a"]["private"].append("system_b")
-        self.table["modules"]["system_a"]["known_cycle"] = ["system_b"]
-        self.assert_fails("cycle between modules")  # declared on one end only
-        self.table["modules"]["system_b"]["known_cycle"] = ["system_a"]
-        status, lines = self.check()
-        self.assertEqual(status, 0, lines)
-        self.assertTrue(any(line.startswith("warning: dependencies: known cycle") for line in lines))
 
     def test_private_dependency_in_a_header_fails(self):
         self.append("systems/a/a.h", '#include "engine/gpu/gl.h"\n')

@@ -53,75 +53,82 @@ std::vector<uint8_t> to_rgba(const PngImage& img) {
   return out;
 }
 
-}  // namespace
-
-FlipbookFrames read_flipbook_folder(const std::string& folder) {
+// The folder's PNG files (any case of .png), sorted by name; UserError when there is no folder,
+// it cannot be listed or it holds no PNG.
+std::vector<std::string> list_png_files(const std::string& folder) {
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
     throw UserError(folder, "", "expected a folder of PNG flame frames, found no folder");
-  FlipbookFrames f;
-  f.folder = folder;
+  std::vector<std::string> files;
   for (const fs::directory_entry& e : fs::directory_iterator(folder, ec)) {
     if (!e.is_regular_file(ec)) continue;
     std::string ext = e.path().extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".png") f.files.push_back(e.path().string());
+    if (ext == ".png") files.push_back(e.path().string());
   }
   if (ec) throw UserError(folder, "", "cannot list the folder: " + ec.message());
-  if (f.files.empty())
+  if (files.empty())
     throw UserError(folder, "", "expected PNG flame frames (e.g. frame_0000.png, ...), found none");
-  std::sort(f.files.begin(), f.files.end());
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
-  // Numbered frames: no gaps (a missing frame would be a jump in the flame's motion).
-  std::vector<NumberedName> numbered(f.files.size());
+// When every name ends in a number: refuses gaps (a missing frame would be a jump in the flame's
+// motion) and mixed prefixes, and puts the files in number order (frame_10 after frame_9 even
+// without leading zeros). Names without numbers keep their name order.
+void order_numbered_frames(const std::string& folder, std::vector<std::string>& files) {
+  std::vector<NumberedName> numbered(files.size());
   bool all_numbered = true;
-  for (size_t i = 0; i < f.files.size(); ++i) {
-    all_numbered = all_numbered && split_number(fs::path(f.files[i]).stem().string(), numbered[i]);
-    numbered[i].file = fs::path(f.files[i]).filename().string();
+  for (size_t i = 0; i < files.size(); ++i) {
+    all_numbered = all_numbered && split_number(fs::path(files[i]).stem().string(), numbered[i]);
+    numbered[i].file = fs::path(files[i]).filename().string();
   }
-  if (all_numbered) {
-    std::stable_sort(numbered.begin(), numbered.end(), [](const NumberedName& a, const NumberedName& b) {
-      return a.prefix != b.prefix ? a.prefix < b.prefix : a.number < b.number;
-    });
-    std::vector<std::string> ordered;
-    for (size_t i = 0; i < numbered.size(); ++i) {
-      if (i > 0 && numbered[i].prefix == numbered[i - 1].prefix &&
-          numbered[i].number != numbered[i - 1].number + 1) {
-        throw UserError(folder, "frame " + std::to_string(numbered[i - 1].number + 1),
-                        "expected consecutively numbered frames, found none numbered " +
-                            std::to_string(numbered[i - 1].number + 1) + " between " +
-                            numbered[i - 1].file + " and " + numbered[i].file);
-      }
-      if (i > 0 && numbered[i].prefix != numbered[i - 1].prefix)
-        throw UserError(folder, "", "expected frames with one name prefix, found \"" +
-                                        numbered[0].prefix + "\" and \"" + numbered[i].prefix + "\"");
+  if (!all_numbered) return;
+  std::stable_sort(numbered.begin(), numbered.end(), [](const NumberedName& a, const NumberedName& b) {
+    return a.prefix != b.prefix ? a.prefix < b.prefix : a.number < b.number;
+  });
+  for (size_t i = 1; i < numbered.size(); ++i) {
+    if (numbered[i].prefix == numbered[i - 1].prefix &&
+        numbered[i].number != numbered[i - 1].number + 1) {
+      throw UserError(folder, "frame " + std::to_string(numbered[i - 1].number + 1),
+                      "expected consecutively numbered frames, found none numbered " +
+                          std::to_string(numbered[i - 1].number + 1) + " between " +
+                          numbered[i - 1].file + " and " + numbered[i].file);
     }
-    // Sort by number (frame_10 after frame_9 even without leading zeros).
-    std::sort(f.files.begin(), f.files.end(), [](const std::string& a, const std::string& b) {
-      NumberedName x, y;
-      split_number(fs::path(a).stem().string(), x);
-      split_number(fs::path(b).stem().string(), y);
-      return x.number < y.number;
-    });
+    if (numbered[i].prefix != numbered[i - 1].prefix)
+      throw UserError(folder, "", "expected frames with one name prefix, found \"" +
+                                      numbered[0].prefix + "\" and \"" + numbered[i].prefix + "\"");
   }
+  std::sort(files.begin(), files.end(), [](const std::string& a, const std::string& b) {
+    NumberedName x, y;
+    split_number(fs::path(a).stem().string(), x);
+    split_number(fs::path(b).stem().string(), y);
+    return x.number < y.number;
+  });
+}
 
+// An optional flipbook.json in the folder states the frame count: it must match `frames`.
+void check_manifest(const std::string& folder, size_t frames) {
   const fs::path manifest = fs::path(folder) / "flipbook.json";
-  if (fs::is_regular_file(manifest, ec)) {
-    nlohmann::json m;
-    try {
-      m = nlohmann::json::parse(read_text_file(manifest.string()));
-    } catch (const nlohmann::json::exception& e) {
-      throw UserError(manifest.string(), "", std::string("expected a JSON manifest: ") + e.what());
-    }
-    if (!m.is_object() || !m.contains("frames") || !m["frames"].is_number_unsigned())
-      throw UserError(manifest.string(), "/frames", "expected the frame count, a non-negative integer");
-    const auto expected = m["frames"].get<uint64_t>();
-    if (expected != f.files.size())
-      throw UserError(manifest.string(), "/frames",
-                      "expected " + std::to_string(expected) + " frames in the folder, found " +
-                          std::to_string(f.files.size()));
+  std::error_code ec;
+  if (!fs::is_regular_file(manifest, ec)) return;
+  nlohmann::json m;
+  try {
+    m = nlohmann::json::parse(read_text_file(manifest.string()));
+  } catch (const nlohmann::json::exception& e) {
+    throw UserError(manifest.string(), "", std::string("expected a JSON manifest: ") + e.what());
   }
+  if (!m.is_object() || !m.contains("frames") || !m["frames"].is_number_unsigned())
+    throw UserError(manifest.string(), "/frames", "expected the frame count, a non-negative integer");
+  const auto expected = m["frames"].get<uint64_t>();
+  if (expected != frames)
+    throw UserError(manifest.string(), "/frames",
+                    "expected " + std::to_string(expected) + " frames in the folder, found " +
+                        std::to_string(frames));
+}
 
+// Reads every file of `f.files` into `f.rgba`, all of the first frame's size.
+void read_frames(FlipbookFrames& f) {
   for (const std::string& file : f.files) {
     const PngImage img = read_png(file);  // UserError naming the file when unreadable
     if (f.rgba.empty()) {
@@ -135,6 +142,17 @@ FlipbookFrames read_flipbook_folder(const std::string& folder) {
     }
     f.rgba.push_back(to_rgba(img));
   }
+}
+
+}  // namespace
+
+FlipbookFrames read_flipbook_folder(const std::string& folder) {
+  FlipbookFrames f;
+  f.folder = folder;
+  f.files = list_png_files(folder);
+  order_numbered_frames(folder, f.files);
+  check_manifest(folder, f.files.size());
+  read_frames(f);
   return f;
 }
 

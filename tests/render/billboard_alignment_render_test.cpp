@@ -106,6 +106,7 @@ TEST(BillboardAlignmentRender, ShaderBuildsTheSameBillboardAsTheCppAxes) {
 TEST(BillboardAlignmentRender, ParticleAtTheEyeStaysFinite) {
   for (BillboardAlignment a : {BillboardAlignment::viewplane, BillboardAlignment::viewpoint}) {
     const auto img = render({0.0f, 0.0f, 0.0f}, a);
+    ASSERT_EQ(img.size(), size_t(120 * 90 * 4));
     for (float v : img) ASSERT_TRUE(std::isfinite(v));
   }
 }

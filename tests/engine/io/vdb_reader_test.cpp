@@ -122,8 +122,10 @@ TEST(VdbReader, ThirdPartyFilesImportOrAreRefusedWithAReason) {
 TEST(VdbReader, TruncatedCopiesOfEveryThirdPartyFileAreRefused) {
   SKIP_WITHOUT_SHARED_VDB();
   const fs::path dir = test::scratch_dir("vdb_shared_truncated");
+  int files = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(PYRO_SHARED_DATA_DIR) / "vdb")) {
     if (entry.path().extension() != ".vdb") continue;
+    ++files;
     const auto size = fs::file_size(entry.path());
     for (double frac : {0.05, 0.5, 0.995}) {
       fs::copy_file(entry.path(), dir / "cut.vdb", fs::copy_options::overwrite_existing);
@@ -132,6 +134,7 @@ TEST(VdbReader, TruncatedCopiesOfEveryThirdPartyFileAreRefused) {
           << entry.path() << " cut at " << frac;
     }
   }
+  EXPECT_GT(files, 0) << "no .vdb file in " PYRO_SHARED_DATA_DIR "/vdb";
 }
 
 TEST(ImportVdbCli, TruncatedFileExitsTwoAndWritesNothing) {

@@ -107,8 +107,8 @@ TEST(SceneEmitters, RuntimeSpawnsAnimatesAndPrewarms) {
   EXPECT_EQ(dust, 16u);
   for (int f = 0; f < 5; ++f) rt.step();
   const auto order = rt.schedule().order();
-  EXPECT_NE(std::find(order.begin(), order.end(), "particle_emitter"), order.end());
-  EXPECT_NE(std::find(order.begin(), order.end(), "particle_animation"), order.end());
+  EXPECT_NE(std::find(order.begin(), order.end(), "emitter"), order.end());
+  EXPECT_NE(std::find(order.begin(), order.end(), "animation"), order.end());
   // Same scene, same particles.
   SceneRuntime again(s, o);
   for (int f = 0; f < 5; ++f) again.step();
