@@ -128,9 +128,8 @@ void run_profile(const ProfileArgs& a) {
     live += set.pool.size();
     capacity += set.pool.capacity();
     if (emitter) {
-      static const char* const medium_names[3] = {"dust", "smoke", "fire"};
       for (size_t i = 0; i < set.pool.size(); ++i)
-        by_medium[medium_names[std::min<size_t>(set.pool.medium[i], 2)]] += 1;
+        by_medium[std::string(name_of(static_cast<ParticleMedium>(set.pool.medium[i])))] += 1;
     }
   });
   const size_t slot_bytes = bytes_per_particle_slot();

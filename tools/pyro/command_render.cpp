@@ -46,12 +46,6 @@ std::string frame_name(int f) {
   return name;
 }
 
-std::string stereo_name(StereoMode mode) {
-  for (const auto& [name, m] : stereo_mode_names())
-    if (m == mode) return name;
-  return "";
-}
-
 size_t drawn_particles(SceneRuntime& runtime) {
   const auto* lists = runtime.world().try_resource<EyeDrawLists>();
   return lists && !lists->eyes.empty() ? lists->eyes[0].size() : 0;
@@ -72,8 +66,8 @@ nlohmann::json render_summary(const RenderArgs& a, SceneRuntime& runtime, const 
       {"last_frame", range.last},
       {"width", rs.width},
       {"height", rs.height},
-      {"stereo", stereo_name(rs.stereo_mode)},
-      {"billboards", rs.alignment == BillboardAlignment::viewplane ? "viewplane" : "viewpoint"},
+      {"stereo", name_of(rs.stereo_mode)},
+      {"billboards", name_of(rs.alignment)},
       {"layer_scale", rs.layer_scale},
       {"particles", drawn_particles(runtime)},
       {"files", files},
