@@ -11,6 +11,8 @@ struct MediumShading {
   float albedo = 0.0f;            // a in eq. 1: dust 0.9, smoke 0.2 (section 3.1); fire 0
   float g = 0.0f;                 // Cornette-Shanks parameter; the paper uses 0
   float detail_amplitude = 0.5f;  // opacity *= 1 + amplitude (2 n - 1), n the detail noise
+
+  friend bool operator==(const MediumShading&, const MediumShading&) = default;
 };
 
 struct ExplosionShading {
@@ -38,6 +40,8 @@ struct ExplosionShading {
   // Heat shimmer (section 4): the scene lookup moves by this fraction of the view per unit of
   // fire opacity, along a noise field.
   float shimmer = 0.006f;
+
+  friend bool operator==(const ExplosionShading&, const ExplosionShading&) = default;
 };
 
 }  // namespace pyro

@@ -110,9 +110,10 @@ class PoolBase {
  private:
   friend class World;
   // World bookkeeping: the owning group (SIZE_MAX if none) and how many each<> loops are
-  // currently walking this pool (structural changes are refused while it is non-zero).
+  // currently walking this pool (structural changes are refused while it is non-zero). Atomic:
+  // systems that only read a pool may walk it from several threads at once.
   std::size_t group_ = SIZE_MAX;
-  uint32_t locks_ = 0;
+  std::atomic<uint32_t> locks_{0};
 };
 
 template <class T>

@@ -1,8 +1,10 @@
 #pragma once
 // The frame schedule: systems run phase by phase in a fixed order, and in insertion order
-// within a phase. Every run is timed, and each system declares what it reads and writes so
-// that conflicts (two systems of one phase touching the same data, one of them writing) can
-// be reported today and used to decide what may run in parallel later.
+// within a phase. Every run is timed. Each system declares by type what it reads and writes
+// (engine/ecs/access.h); while it runs, the World refuses any access it did not declare. Two
+// systems of one phase conflict when one writes what the other reads or writes; a conflicting
+// pair should be ordered explicitly (SystemDesc::after), and unordered_conflicts() lists the
+// pairs that are not.
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -10,33 +12,40 @@
 #include <utility>
 #include <vector>
 
-#include "engine/ecs/component_pool.h"
+#include "engine/ecs/access.h"
 
 namespace pyro::ecs {
 
 class World;
 
-enum class Phase { spawn, simulate, sort, camera, render, composite, output };
+// The order data flows through a frame: particles are spawned and simulated, the camera makes
+// this frame's eye frames, the sort orders particles for those eyes, the renderers draw them,
+// the views are composited into the output image, and the output is read back.
+enum class Phase { spawn, simulate, camera, sort, render, composite, output };
 
-inline constexpr Phase all_phases[] = {Phase::spawn,  Phase::simulate,  Phase::sort,  Phase::camera,
+inline constexpr Phase all_phases[] = {Phase::spawn,  Phase::simulate,  Phase::camera, Phase::sort,
                                        Phase::render, Phase::composite, Phase::output};
 
 const char* phase_name(Phase phase);
 
+// Members have default initialisers, so designated initialisers may leave any of them out.
 struct SystemDesc {
-  std::string name;
+  std::string name{};
   Phase phase = Phase::simulate;
-  std::vector<std::string> reads;
-  std::vector<std::string> writes;
-  std::function<void(World&)> run;
+  // Every component and resource type the system touches, read or written.
+  Access access{};
+  std::function<void(World&)> run{};
+  // Optional, run once by Schedule::setup when the world is built, before the first frame:
+  // creates the resources the system writes (renderers, scratch space, outputs), so that
+  // nothing is created lazily while frames run. Checked against `access` like run.
+  std::function<void(World&)> setup{};
+  // Systems, already added, of the same or an earlier phase, that must finish before this one
+  // starts (an explicit order for a conflicting pair).
+  std::vector<std::string> after{};
+  // The system issues GL calls, so it must run on the thread that owns the GL context: the
+  // thread that calls run_frame.
+  bool main_thread = false;
 };
-
-// Names of component or resource types, for SystemDesc::reads / writes:
-//   .reads = access<Position, Velocity>(), .writes = access<Position>()
-template <class... Ts>
-std::vector<std::string> access() {
-  return {type_name<Ts>()...};
-}
 
 struct SystemStats {
   std::string name;
@@ -47,15 +56,25 @@ struct SystemStats {
   double total_ms = 0;
   double max_ms = 0;
   uint64_t frames = 0;
-  std::vector<std::string> reads, writes;
+  // The thread of the last run: 0 the thread that called run_frame, k >= 1 the k-th worker
+  // thread (numbered by first use, process-wide), so traces show one track per thread.
+  int thread = 0;
 
   double mean_ms() const { return frames ? total_ms / double(frames) : 0.0; }
 };
 
+// Runs one system alone on `world` as a schedule would: its setup, then its run, each under
+// its declared access (for tests and tools that exercise a system on a hand-built world).
+void run_system_once(const SystemDesc& system, World& world);
+
 class Schedule {
  public:
-  // Throws std::invalid_argument for an empty or duplicate name or an empty run function.
+  // Throws std::invalid_argument for an empty or duplicate name, an empty run function, or an
+  // `after` naming a system that is not yet added or that runs in a later phase.
   void add(SystemDesc system);
+
+  // Runs every system's setup once, in order(), each under its declared access.
+  void setup(World& world);
 
   // Runs every system once, in order(), timing each. An exception from a system propagates;
   // the systems after it do not run and its own timing is not recorded.
@@ -65,13 +84,15 @@ class Schedule {
   // advance the simulation without sorting or rendering), timing each like run_frame.
   void run_phases_through(World& world, Phase last);
 
-  // Runs, in order(), only the systems whose phase lies in [first, last] (e.g. Phase::sort to
+  // Runs, in order(), only the systems whose phase lies in [first, last] (e.g. Phase::camera to
   // Phase::output: draw the current state again without advancing the simulation, as the
   // viewer does while paused), timing each like run_frame.
   void run_phases(World& world, Phase first, Phase last);
 
   // One entry per system, in run order.
   const std::vector<SystemStats>& stats() const { return stats_; }
+  // The systems as added, in run order.
+  const std::vector<SystemDesc>& systems() const { return systems_; }
 
   // System names in run order.
   std::vector<std::string> order() const;
@@ -79,15 +100,24 @@ class Schedule {
   // Pairs (earlier, later in run order) of systems in the same phase where one writes
   // something the other reads or writes.
   std::vector<std::pair<std::string, std::string>> conflicts() const;
+  // The conflicting pairs that no chain of `after` orders.
+  std::vector<std::pair<std::string, std::string>> unordered_conflicts() const;
+  // True when system `later` runs after `earlier` through a chain of `after` declarations.
+  bool ordered(const std::string& earlier, const std::string& later) const;
 
   std::size_t size() const { return systems_.size(); }
   uint64_t frames() const { return frames_; }
 
  private:
-  // Kept sorted by phase (stable, so insertion order holds within a phase); stats_ is
-  // parallel to it.
+  std::size_t index_of(const std::string& name) const;
+  void run_system(World& world, std::size_t i);
+
+  // Kept sorted by phase (stable, so insertion order holds within a phase); stats_ and
+  // running_ are parallel to it.
   std::vector<SystemDesc> systems_;
   std::vector<SystemStats> stats_;
+  std::vector<RunningSystem> running_;
+  std::size_t type_slots_ = 0;  // World::reserve_type_slots before running
   uint64_t frames_ = 0;
 };
 

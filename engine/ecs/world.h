@@ -11,6 +11,10 @@
 //    not add or remove any of Ts (nor destroy an entity that has one, nor touch a pool that
 //    shares a group with one): that would move data under the loop, so it throws
 //    std::logic_error. Collect such changes and apply them after the loop.
+//  - A const-qualified type reads: get<const T>, try_get<const T>, each<const T, U>,
+//    resource<const T>; so does every call through a const World. A plain T writes. While a
+//    Schedule runs a system, each typed access is checked against the system's declared
+//    Access (engine/ecs/access.h) and an undeclared one throws std::logic_error.
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -22,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/ecs/access.h"
 #include "engine/ecs/component_pool.h"
 #include "engine/ecs/entity.h"
 
@@ -32,17 +37,22 @@ template <class... Ts>
 inline constexpr bool all_distinct = true;
 template <class T, class... Rest>
 inline constexpr bool all_distinct<T, Rest...> =
-    (!std::is_same_v<T, Rest> && ...) && all_distinct<Rest...>;
+    (!std::is_same_v<std::remove_const_t<T>, std::remove_const_t<Rest>> && ...) &&
+    all_distinct<Rest...>;
 
 template <class... Ts>
 std::string type_list() {
   std::string s;
-  ((s += (s.empty() ? "" : ", ") + type_name<Ts>()), ...);
+  ((s += (s.empty() ? "" : ", ") + type_name<std::remove_const_t<Ts>>()), ...);
   return s;
 }
 }  // namespace detail
 
 class World {
+  // The component or resource type behind a possibly const-qualified T.
+  template <class T>
+  using bare = std::remove_const_t<T>;
+
  public:
   World() = default;
   World(const World&) = delete;
@@ -53,6 +63,7 @@ class World {
   // ---- entities ----------------------------------------------------------------------------
 
   Entity create() {
+    check_access<Entities>(AccessMode::write, "create");
     if (!free_.empty()) {
       const uint32_t index = free_.back();
       free_.pop_back();
@@ -70,10 +81,16 @@ class World {
 
   // Removes all of e's components and retires the handle. Throws if e is not alive.
   void destroy(Entity e) {
+    check_access<Entities>(AccessMode::write, "destroy");
     require_alive<void>(e, "destroy");
     // Check every pool before touching any, so a refused destroy changes nothing.
-    for (auto& p : pools_)
-      if (p && p->contains(e.index)) require_unlocked(*p, "destroy");
+    for (auto& p : pools_) {
+      if (!p || !p->contains(e.index)) continue;
+      require_unlocked(*p, "destroy");
+      if (const RunningSystem* s = running_system();
+          s && !s->access->allows(std::size_t(&p - pools_.data()), AccessMode::write))
+        throw_undeclared_access(*s, p->component_name(), AccessMode::write, "destroy");
+    }
     for (auto& p : pools_)
       if (p && p->contains(e.index)) erase_from(*p, e.index);
     Slot& s = slots_[e.index];
@@ -96,6 +113,7 @@ class World {
   template <class T, class... A>
   T& emplace(Entity e, A&&... args) {
     static_assert(std::is_same_v<T, std::remove_cvref_t<T>>, "component types are plain values");
+    check_access<T>(AccessMode::write, "emplace");
     require_alive<T>(e, "emplace");
     ComponentPool<T>& p = assure<T>();
     if (p.contains(e.index))
@@ -110,6 +128,7 @@ class World {
 
   template <class T>
   void remove(Entity e) {
+    check_access<T>(AccessMode::write, "remove");
     require_alive<T>(e, "remove");
     ComponentPool<T>* p = pool_ptr<T>();
     if (!p || !p->contains(e.index)) throw_absent<T>("remove", e);
@@ -119,51 +138,55 @@ class World {
 
   template <class T>
   bool has(Entity e) const {
+    check_access<T>(AccessMode::read, "has");
     require_alive<T>(e, "has");
-    const ComponentPool<T>* p = pool_ptr<T>();
+    const ComponentPool<bare<T>>* p = pool_ptr<bare<T>>();
     return p && p->contains(e.index);
   }
 
+  // get<T> writes (T&), get<const T> reads (const T&).
   template <class T>
   T& get(Entity e) {
-    require_alive<T>(e, "get");
-    ComponentPool<T>* p = pool_ptr<T>();
-    if (!p || !p->contains(e.index)) throw_absent<T>("get", e);
-    return p->get(e.index);
+    check_access<T>(mode_of<T>, "get");
+    return get_unchecked<bare<T>>(e, "get");
   }
   template <class T>
-  const T& get(Entity e) const {
-    return const_cast<World*>(this)->get<T>(e);
+  const bare<T>& get(Entity e) const {
+    check_access<T>(AccessMode::read, "get");
+    return const_cast<World*>(this)->get_unchecked<bare<T>>(e, "get");
   }
 
   template <class T>
   T* try_get(Entity e) {
-    require_alive<T>(e, "try_get");
-    ComponentPool<T>* p = pool_ptr<T>();
-    return p ? p->try_get(e.index) : nullptr;
+    check_access<T>(mode_of<T>, "try_get");
+    return try_get_unchecked<bare<T>>(e);
   }
   template <class T>
-  const T* try_get(Entity e) const {
-    return const_cast<World*>(this)->try_get<T>(e);
+  const bare<T>* try_get(Entity e) const {
+    check_access<T>(AccessMode::read, "try_get");
+    return const_cast<World*>(this)->try_get_unchecked<bare<T>>(e);
   }
 
   // Number of entities that have a T.
   template <class T>
   std::size_t size() const {
-    const ComponentPool<T>* p = pool_ptr<T>();
+    check_access<T>(AccessMode::read, "size");
+    const ComponentPool<bare<T>>* p = pool_ptr<bare<T>>();
     return p ? p->size() : 0;
   }
 
   // Read-only view of T's storage (nullptr until the first T is emplaced or grouped); for
   // tests, reports and tools that want the dense arrays.
   template <class T>
-  const ComponentPool<T>* pool() const {
-    return pool_ptr<T>();
+  const ComponentPool<bare<T>>* pool() const {
+    check_access<T>(AccessMode::read, "pool");
+    return pool_ptr<bare<T>>();
   }
 
   // ---- queries -----------------------------------------------------------------------------
 
-  // Calls f(Entity, Ts&...) or f(Ts&...) for every entity that has all of Ts.
+  // Calls f(Entity, Ts&...) or f(Ts&...) for every entity that has all of Ts; a const T is
+  // read (f gets const T&), a plain T written.
   template <class... Ts, class F>
   void each(F&& f) {
     static_assert(sizeof...(Ts) > 0, "each<Ts...> needs at least one component type");
@@ -171,8 +194,9 @@ class World {
     constexpr bool with_entity = std::is_invocable_v<F&, Entity, Ts&...>;
     static_assert(with_entity || std::is_invocable_v<F&, Ts&...>,
                   "each<Ts...>(f): f must be callable as f(Entity, Ts&...) or f(Ts&...)");
+    (check_access<Ts>(mode_of<Ts>, "each"), ...);
 
-    const std::array<PoolBase*, sizeof...(Ts)> ps{pool_ptr<Ts>()...};
+    const std::array<PoolBase*, sizeof...(Ts)> ps{pool_ptr<bare<Ts>>()...};
     for (PoolBase* p : ps)
       if (!p || p->empty()) return;
     const IterationLock lock(ps);
@@ -189,7 +213,7 @@ class World {
           (void)ents;
           for (std::size_t i = 0; i < n; ++i) f(d[i]...);
         }
-      }(pool_ptr<Ts>()->data()...);
+      }(static_cast<Ts*>(pool_ptr<bare<Ts>>()->data())...);
       return;
     }
 
@@ -199,23 +223,30 @@ class World {
         [](const PoolBase* a, const PoolBase* b) { return a->size() < b->size(); });
     const Entity* ents = lead->entities().data();
     const std::size_t n = lead->size();
-    [&](ComponentPool<Ts>*... pool) {
+    [&](ComponentPool<bare<Ts>>*... pool) {
       for (std::size_t i = 0; i < n; ++i) {
         const Entity e = ents[i];
         if (!(pool->contains(e.index) && ...)) continue;
         if constexpr (with_entity)
-          f(e, pool->get(e.index)...);
+          f(e, static_cast<Ts&>(pool->get(e.index))...);
         else
-          f(pool->get(e.index)...);
+          f(static_cast<Ts&>(pool->get(e.index))...);
       }
-    }(pool_ptr<Ts>()...);
+    }(pool_ptr<bare<Ts>>()...);
+  }
+
+  // Through a const World every component is read: f gets const Ts&.
+  template <class... Ts, class F>
+  void each(F&& f) const {
+    const_cast<World*>(this)->each<const Ts...>(std::forward<F>(f));
   }
 
   // Number of entities that have all of Ts.
   template <class... Ts>
   std::size_t count() const {
     static_assert(sizeof...(Ts) > 0 && detail::all_distinct<Ts...>);
-    const std::array<const PoolBase*, sizeof...(Ts)> ps{pool_ptr<Ts>()...};
+    (check_access<Ts>(AccessMode::read, "count"), ...);
+    const std::array<const PoolBase*, sizeof...(Ts)> ps{pool_ptr<bare<Ts>>()...};
     for (const PoolBase* p : ps)
       if (!p) return 0;
     if (const Group* g = exact_group(ps)) return g->size;
@@ -238,6 +269,10 @@ class World {
   void group() {
     static_assert(sizeof...(Ts) > 0, "group<Ts...> needs at least one component type");
     static_assert(detail::all_distinct<Ts...>, "group<Ts...> lists a type twice");
+    static_assert((std::is_same_v<Ts, std::remove_cvref_t<Ts>> && ...),
+                  "group<Ts...> takes plain component types");
+    check_access<Entities>(AccessMode::write, "group");
+    (check_access<Ts>(AccessMode::write, "group"), ...);
     const std::array<PoolBase*, sizeof...(Ts)> ps{&assure<Ts>()...};
     if (exact_group(ps)) return;
     for (PoolBase* p : ps) {
@@ -245,7 +280,7 @@ class World {
         throw std::logic_error("World::group<" + detail::type_list<Ts...>() +
                                ">: " + p->component_name() + " is already owned by group<" +
                                groups_[p->group_]->name + ">");
-      if (p->locks_)
+      if (p->locks_.load(std::memory_order_relaxed))
         throw std::logic_error("World::group<" + detail::type_list<Ts...>() +
                                ">: " + p->component_name() + " is being iterated");
     }
@@ -268,7 +303,8 @@ class World {
   // Size of the group declared with exactly Ts (any order); throws if there is none.
   template <class... Ts>
   std::size_t group_size() const {
-    const std::array<const PoolBase*, sizeof...(Ts)> ps{pool_ptr<Ts>()...};
+    (check_access<Ts>(AccessMode::read, "group_size"), ...);
+    const std::array<const PoolBase*, sizeof...(Ts)> ps{pool_ptr<bare<Ts>>()...};
     for (const PoolBase* p : ps)
       if (!p) throw_no_group<Ts...>();
     const Group* g = exact_group(ps);
@@ -282,6 +318,7 @@ class World {
   template <class T, class... A>
   T& set_resource(A&&... args) {
     static_assert(std::is_same_v<T, std::remove_cvref_t<T>>, "resource types are plain values");
+    check_access<T>(AccessMode::write, "set_resource");
     auto box = std::make_unique<ResourceBox<T>>(std::forward<A>(args)...);
     T& value = box->value;
     const std::size_t id = type_id<T>();
@@ -290,38 +327,52 @@ class World {
     return value;
   }
 
+  // resource<T> writes (T&), resource<const T> reads (const T&).
   template <class T>
   T& resource() {
-    if (T* r = try_resource<T>()) return *r;
-    throw std::logic_error("World::resource<" + type_name<T>() +
-                           ">: no such resource (call set_resource<" + type_name<T>() +
-                           ">() first)");
+    check_access<T>(mode_of<T>, "resource");
+    if (T* r = try_resource_unchecked<bare<T>>()) return *r;
+    throw_no_resource<bare<T>>();
   }
   template <class T>
-  const T& resource() const {
-    return const_cast<World*>(this)->resource<T>();
+  const bare<T>& resource() const {
+    check_access<T>(AccessMode::read, "resource");
+    if (const bare<T>* r = const_cast<World*>(this)->try_resource_unchecked<bare<T>>()) return *r;
+    throw_no_resource<bare<T>>();
   }
 
   template <class T>
   T* try_resource() {
-    const std::size_t id = type_id<T>();
-    if (id >= resources_.size() || !resources_[id]) return nullptr;
-    return &static_cast<ResourceBox<T>*>(resources_[id].get())->value;
+    check_access<T>(mode_of<T>, "try_resource");
+    return try_resource_unchecked<bare<T>>();
   }
   template <class T>
-  const T* try_resource() const {
-    return const_cast<World*>(this)->try_resource<T>();
+  const bare<T>* try_resource() const {
+    check_access<T>(AccessMode::read, "try_resource");
+    return const_cast<World*>(this)->try_resource_unchecked<bare<T>>();
   }
 
   template <class T>
   bool has_resource() const {
-    return try_resource<T>() != nullptr;
+    check_access<T>(AccessMode::read, "has_resource");
+    return const_cast<World*>(this)->try_resource_unchecked<bare<T>>() != nullptr;
   }
 
   template <class T>
   void remove_resource() {
+    check_access<T>(AccessMode::write, "remove_resource");
     const std::size_t id = type_id<T>();
     if (id < resources_.size()) resources_[id].reset();
+  }
+
+  // ---- type tables -------------------------------------------------------------------------
+
+  // Grows the pool and resource tables to hold type ids below n, so that creating a pool or a
+  // resource of such a type never reallocates a table. The schedule calls it with the ids its
+  // systems declare before running them concurrently: systems on other threads read the tables.
+  void reserve_type_slots(std::size_t n) {
+    if (pools_.size() < n) pools_.resize(n);
+    if (resources_.size() < n) resources_.resize(n);
   }
 
  private:
@@ -350,15 +401,44 @@ class World {
   template <std::size_t N>
   struct IterationLock {
     explicit IterationLock(const std::array<PoolBase*, N>& ps) : pools(ps) {
-      for (PoolBase* p : pools) ++p->locks_;
+      for (PoolBase* p : pools) p->locks_.fetch_add(1, std::memory_order_relaxed);
     }
     ~IterationLock() {
-      for (PoolBase* p : pools) --p->locks_;
+      for (PoolBase* p : pools) p->locks_.fetch_sub(1, std::memory_order_relaxed);
     }
     IterationLock(const IterationLock&) = delete;
     IterationLock& operator=(const IterationLock&) = delete;
     const std::array<PoolBase*, N>& pools;
   };
+
+  template <class T>
+  T& get_unchecked(Entity e, const char* op) {
+    require_alive<T>(e, op);
+    ComponentPool<T>* p = pool_ptr<T>();
+    if (!p || !p->contains(e.index)) throw_absent<T>(op, e);
+    return p->get(e.index);
+  }
+
+  template <class T>
+  T* try_get_unchecked(Entity e) {
+    require_alive<T>(e, "try_get");
+    ComponentPool<T>* p = pool_ptr<T>();
+    return p ? p->try_get(e.index) : nullptr;
+  }
+
+  template <class T>
+  T* try_resource_unchecked() {
+    const std::size_t id = type_id<T>();
+    if (id >= resources_.size() || !resources_[id]) return nullptr;
+    return &static_cast<ResourceBox<T>*>(resources_[id].get())->value;
+  }
+
+  template <class T>
+  [[noreturn, gnu::cold, gnu::noinline]] static void throw_no_resource() {
+    throw std::logic_error("World::resource<" + type_name<T>() +
+                           ">: no such resource (call set_resource<" + type_name<T>() +
+                           ">() first)");
+  }
 
   template <class T>
   ComponentPool<T>* pool_ptr() const {
@@ -421,9 +501,10 @@ class World {
   }
 
   void require_unlocked(const PoolBase& p, const char* op) const {
-    bool locked = p.locks_ != 0;
+    bool locked = p.locks_.load(std::memory_order_relaxed) != 0;
     if (p.group_ != SIZE_MAX)
-      for (const PoolBase* q : groups_[p.group_]->pools) locked = locked || q->locks_ != 0;
+      for (const PoolBase* q : groups_[p.group_]->pools)
+        locked = locked || q->locks_.load(std::memory_order_relaxed) != 0;
     if (locked)
       throw std::logic_error("World::" + std::string(op) + ": " + p.component_name() +
                              " (or a pool grouped with it) is being iterated by each<>; apply "

@@ -35,23 +35,28 @@ void drift_particles(const CloudVolume& c, ParticleSet& set, float dt) {
   }
 }
 
-ecs::SystemDesc drift_system() {
-  return {"animation", ecs::Phase::simulate, ecs::access<CloudVolume, FrameClock>(),
-          ecs::access<ParticleSet>(), [](ecs::World& world) {
-            const FrameClock& clock = world.resource<FrameClock>();
-            if (clock.frame == 0) return;  // frame 0 shows the emitted state
-            const float dt = clock.dt;
-            world.each<CloudVolume, ParticleSet>([dt](CloudVolume& c, ParticleSet& s) {
-              if (c.drift != glm::vec3(0.0f) || c.jitter > 0.0f) drift_particles(c, s, dt);
-            });
-          }};
+ecs::SystemDesc cloud_drift_system() {
+  return {
+      .name = "cloud_drift",
+      .phase = ecs::Phase::simulate,
+      .access = ecs::Access::of<ecs::Reads<CloudVolume, FrameClock>, ecs::Writes<ParticleSet>>(),
+      .run = [](ecs::World& world) {
+        const FrameClock& clock = world.resource<const FrameClock>();
+        if (clock.frame == 0) return;  // frame 0 shows the emitted state
+        const float dt = clock.dt;
+        world.each<const CloudVolume, ParticleSet>([dt](const CloudVolume& c, ParticleSet& s) {
+          if (c.drift != glm::vec3(0.0f) || c.jitter > 0.0f) drift_particles(c, s, dt);
+        });
+      }};
 }
 
 ecs::SystemDesc camera_orbit_system() {
-  return {"camera_orbit", ecs::Phase::simulate, ecs::access<CameraOrbit, FrameClock>(),
-          ecs::access<Camera>(), [](ecs::World& world) {
-            const double t = world.resource<FrameClock>().time();
-            world.each<Camera, CameraOrbit>([t](Camera& cam, CameraOrbit& orbit) {
+  return {.name = "camera_orbit",
+          .phase = ecs::Phase::simulate,
+          .access = ecs::Access::of<ecs::Reads<CameraOrbit, FrameClock>, ecs::Writes<Camera>>(),
+          .run = [](ecs::World& world) {
+            const double t = world.resource<const FrameClock>().time();
+            world.each<Camera, const CameraOrbit>([t](Camera& cam, const CameraOrbit& orbit) {
               const float a = glm::radians(static_cast<float>(orbit.deg_per_second * t));
               const glm::vec3 d = orbit.start_position - cam.target;
               const float c = std::cos(a), s = std::sin(a);

@@ -10,7 +10,8 @@ struct ParticleSet;
 
 // One explicit step: exact for constant velocity, so no integrator error accrues.
 void drift_particles(const CloudVolume& cloud, ParticleSet& set, float dt);
-ecs::SystemDesc drift_system();
+// The `cloud_drift` and `camera_orbit` systems.
+ecs::SystemDesc cloud_drift_system();
 ecs::SystemDesc camera_orbit_system();
 
 }  // namespace pyro

@@ -110,19 +110,25 @@ std::size_t animate_particles(ParticlePool& p, const ParticleDynamics& d, const 
   return p.kill_if([&](std::size_t i) { return p.age[i] >= p.lifetime[i]; });
 }
 
-ecs::SystemDesc particle_animation_system() {
-  return {"particle_animation", ecs::Phase::simulate,
-          ecs::access<FrameClock, SimulationEnvironment, ParticleDynamics>(), ecs::access<ParticleSet>(),
-          [](ecs::World& world) {
-            const FrameClock& clock = world.resource<FrameClock>();
-            const SimulationEnvironment& env = world.resource<SimulationEnvironment>();
-            // Step 0 shows the emitted state; after a prewarm of P steps frame 0 is step P.
-            if (clock.frame + env.prewarm_steps == 0) return;
-            const double t = static_cast<double>(clock.frame + env.prewarm_steps) * clock.dt;
-            world.each<ParticleDynamics, ParticleSet>([&](ParticleDynamics& d, ParticleSet& s) {
-              animate_particles(s.pool, d, env, clock.dt, t);
-            });
-          }};
+ecs::SystemDesc animation_system() {
+  return {.name = "animation",
+          .phase = ecs::Phase::simulate,
+          .access = ecs::Access::of<ecs::Reads<FrameClock, SimulationEnvironment, ParticleDynamics>,
+                                    ecs::Writes<ParticleSet>>(),
+          .run =
+              [](ecs::World& world) {
+                const FrameClock& clock = world.resource<const FrameClock>();
+                const SimulationEnvironment& env = world.resource<const SimulationEnvironment>();
+                // Step 0 shows the emitted state; after a prewarm of P steps frame 0 is step P.
+                if (clock.frame + env.prewarm_steps == 0) return;
+                const double t = static_cast<double>(clock.frame + env.prewarm_steps) * clock.dt;
+                world.each<const ParticleDynamics, ParticleSet>(
+                    [&](const ParticleDynamics& d, ParticleSet& s) {
+                      animate_particles(s.pool, d, env, clock.dt, t);
+                    });
+              },
+          // Both move ParticleSets (of different entities; access is per type).
+          .after = {"cloud_drift"}};
 }
 
 }  // namespace pyro

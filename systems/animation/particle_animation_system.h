@@ -27,6 +27,7 @@ std::size_t animate_particles(ParticlePool& pool, const ParticleDynamics& d,
 bool collide_particle(glm::vec3& x, glm::vec3& v, const SimulationEnvironment& env, float restitution,
                       float friction);
 
-ecs::SystemDesc particle_animation_system();
+// The `animation` system (simulate phase, after cloud_drift).
+ecs::SystemDesc animation_system();
 
 }  // namespace pyro

@@ -13,8 +13,8 @@ void prewarm_particles(ecs::World& world, uint64_t steps) {
   SimulationEnvironment& env = world.resource<SimulationEnvironment>();
   const uint64_t frame = clock.frame;
   env.prewarm_steps = 0;
-  const ecs::SystemDesc emit = particle_emitter_system();
-  const ecs::SystemDesc animate = particle_animation_system();
+  const ecs::SystemDesc emit = emitter_system();
+  const ecs::SystemDesc animate = animation_system();
   for (uint64_t g = 0; g < steps; ++g) {
     clock.frame = g;
     emit.run(world);

@@ -40,48 +40,81 @@ void prepare_layer(EyeTargets& targets) {
   glClearNamedFramebufferfv(layer.framebuffer(), GL_COLOR, 0, clear);
 }
 
+namespace {
+
+// The renderer the scene's particle shape needs: the Gaussian BillboardRenderer is made from the
+// scene's footprint table when the world is built; the others are made here, at setup.
+void make_particle_renderer(ecs::World& world) {
+  const RenderSettings& settings = world.resource<const RenderSettings>();
+  if (settings.particles == ParticleShape::gaussian) return;
+  if (settings.media_layers()) {
+    const ExplosionShading* shading = world.try_resource<const ExplosionShading>();
+    if (!world.has_resource<ExplosionRenderer>())
+      world.set_resource<ExplosionRenderer>(shading ? *shading : ExplosionShading{});
+    return;
+  }
+  if (!world.has_resource<SphereBillboardRenderer>()) world.set_resource<SphereBillboardRenderer>();
+}
+
+// Explosions (Umenhoffer et al. 2006, sections 3-4): each medium into its layer. The renderer
+// bakes the shading's tables; a changed ExplosionShading resource takes a new one.
+void draw_media(ecs::World& world, const EyeDrawLists& lists, const View& view, GpuFrame& frame,
+                const RenderSettings& settings, size_t views) {
+  const ExplosionShading* current = world.try_resource<const ExplosionShading>();
+  const ExplosionShading shading = current ? *current : ExplosionShading{};
+  ExplosionRenderer* explosion = &world.resource<ExplosionRenderer>();
+  if (!(explosion->shading() == shading))
+    explosion = &world.set_resource<ExplosionRenderer>(shading);
+  const FrameClock* clock = world.try_resource<const FrameClock>();
+  const double time = clock ? clock->time() : 0.0;
+  for (size_t v = 0; v < views; ++v)
+    explosion->draw(lists.eyes[v], view.eyes[v], settings, time, *frame.eyes[v].media_atlas,
+                    frame.eyes[v].media_combined->width(), *frame.eyes[v].scene);
+}
+
+void draw_billboards(ecs::World& world) {
+  const EyeDrawLists* lists = world.try_resource<const EyeDrawLists>();
+  if (!lists) return;
+  const View& view = world.resource<const View>();
+  GpuFrame& frame = world.resource<GpuFrame>();
+  const RenderSettings& settings = world.resource<const RenderSettings>();
+  const size_t views = std::min({view.eyes.size(), frame.eyes.size(), lists->eyes.size()});
+  if (settings.particles == ParticleShape::gaussian) {
+    BillboardRenderer& renderer = world.resource<BillboardRenderer>();
+    for (size_t v = 0; v < views; ++v)
+      draw_particles_for_view(renderer, lists->eyes[v], view.eyes[v], frame.eyes[v],
+                              settings.alignment, BillboardShading::kernel);
+    return;
+  }
+  if (settings.media_layers()) {
+    draw_media(world, *lists, view, frame, settings, views);
+    return;
+  }
+  SphereBillboardRenderer& spheres = world.resource<SphereBillboardRenderer>();
+  for (size_t v = 0; v < views; ++v) {
+    EyeTargets& t = frame.eyes[v];
+    const gpu::GpuPassScope pass("particle layer", true);  // profiling hook
+    if (t.layer) prepare_layer(t);
+    spheres.draw(lists->eyes[v], view.eyes[v], t.layer ? *t.layer : *t.scene,
+                 t.scene->depth_texture(), t.scene->width(), t.scene->height(),
+                 settings.particles == ParticleShape::planar, settings.billboard_sprites);
+  }
+}
+
+}  // namespace
+
 ecs::SystemDesc billboard_render_system() {
-  return {"billboard_render", ecs::Phase::render,
-          ecs::access<EyeDrawLists, View, RenderSettings, FrameClock, ExplosionShading>(), ecs::access<GpuFrame>(),
-          [](ecs::World& world) {
-            const EyeDrawLists* lists = world.try_resource<EyeDrawLists>();
-            if (!lists) return;
-            const View& view = world.resource<View>();
-            GpuFrame& frame = world.resource<GpuFrame>();
-            const RenderSettings& settings = world.resource<RenderSettings>();
-            const size_t views = std::min({view.eyes.size(), frame.eyes.size(), lists->eyes.size()});
-            if (settings.particles == ParticleShape::gaussian) {
-              BillboardRenderer& renderer = world.resource<BillboardRenderer>();
-              for (size_t v = 0; v < views; ++v)
-                draw_particles_for_view(renderer, lists->eyes[v], view.eyes[v], frame.eyes[v],
-                                        settings.alignment, BillboardShading::kernel);
-              return;
-            }
-            if (settings.media_layers()) {
-              // Explosions (Umenhoffer et al. 2006, sections 3-4): each medium into its layer.
-              if (!world.has_resource<ExplosionShading>()) world.set_resource<ExplosionShading>();
-              if (!world.has_resource<ExplosionRenderer>())
-                world.set_resource<ExplosionRenderer>(world.resource<ExplosionShading>());
-              ExplosionRenderer& explosion = world.resource<ExplosionRenderer>();
-              const FrameClock* clock = world.try_resource<FrameClock>();
-              const double time = clock ? clock->time() : 0.0;
-              for (size_t v = 0; v < views; ++v)
-                explosion.draw(lists->eyes[v], view.eyes[v], settings, time,
-                               *frame.eyes[v].media_atlas, frame.eyes[v].media_combined->width(),
-                               *frame.eyes[v].scene);
-              return;
-            }
-            if (!world.has_resource<SphereBillboardRenderer>()) world.set_resource<SphereBillboardRenderer>();
-            SphereBillboardRenderer& spheres = world.resource<SphereBillboardRenderer>();
-            for (size_t v = 0; v < views; ++v) {
-              EyeTargets& t = frame.eyes[v];
-              const gpu::GpuPassScope pass("particle layer", true);  // profiling hook
-              if (t.layer) prepare_layer(t);
-              spheres.draw(lists->eyes[v], view.eyes[v], t.layer ? *t.layer : *t.scene,
-                           t.scene->depth_texture(), t.scene->width(), t.scene->height(),
-                           settings.particles == ParticleShape::planar, settings.billboard_sprites);
-            }
-          }};
+  using Renderers = ecs::Writes<BillboardRenderer, ExplosionRenderer, SphereBillboardRenderer>;
+  return {.name = "billboard_render",
+          .phase = ecs::Phase::render,
+          .access = ecs::Access::of<
+              ecs::Reads<EyeDrawLists, View, RenderSettings, FrameClock, ExplosionShading>,
+              ecs::Writes<GpuFrame>, Renderers>(),
+          .run = draw_billboards,
+          .setup = make_particle_renderer,
+          // Blends over what the opaque and flipbook passes drew.
+          .after = {"flipbook_render"},
+          .main_thread = true};
 }
 
 }  // namespace pyro

@@ -1,7 +1,9 @@
 #pragma once
-// Render phase, second pass: blends each view's sorted particles over its opaque frame, or
-// into its reduced-resolution layer (composited later). Needs a BillboardRenderer resource
-// (made from the scene's footprint table).
+// Render phase, the `billboard_render` system (after the opaque and flipbook passes): blends
+// each view's sorted particles over its opaque frame, or into its reduced-resolution layer
+// (composited later). Gaussian particles need a BillboardRenderer resource (made from the
+// scene's footprint table); the system's setup makes the spherical or explosion renderer that
+// the scene's particle shape needs.
 #include "components/draw_list.h"
 #include "components/gpu_frame.h"
 #include "engine/ecs/schedule.h"

@@ -9,18 +9,27 @@
 
 namespace pyro {
 
-ecs::SystemDesc camera_system() {
-  return {"camera", ecs::Phase::camera, ecs::access<Camera, StereoCamera, RenderSettings>(),
-          ecs::access<View>(), [](ecs::World& world) {
-            const RenderSettings& settings = world.resource<RenderSettings>();
-            View& view = world.has_resource<View>() ? world.resource<View>() : world.set_resource<View>();
+ecs::SystemDesc stereo_camera_system() {
+  return {
+      .name = "stereo_camera",
+      .phase = ecs::Phase::camera,
+      .access =
+          ecs::Access::of<ecs::Reads<Camera, StereoCamera, RenderSettings>, ecs::Writes<View>>(),
+      .run =
+          [](ecs::World& world) {
+            const RenderSettings& settings = world.resource<const RenderSettings>();
+            View& view = world.resource<View>();
             bool found = false;
-            world.each<Camera>([&](ecs::Entity e, Camera& c) {
+            world.each<const Camera>([&](ecs::Entity e, const Camera& c) {
               if (found) return;  // the first camera renders
               view.frame = mono_frame(c, settings);
-              view.eyes = rendered_views(c, world.try_get<StereoCamera>(e), settings);
+              view.eyes = rendered_views(c, world.try_get<const StereoCamera>(e), settings);
               found = true;
             });
+          },
+      .setup =
+          [](ecs::World& world) {
+            if (!world.has_resource<View>()) world.set_resource<View>();
           }};
 }
 

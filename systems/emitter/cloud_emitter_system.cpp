@@ -30,8 +30,10 @@ void fill_cloud(const CloudVolume& c, ParticleSet& set) {
 }
 
 ecs::SystemDesc cloud_emitter_system() {
-  return {"emitter", ecs::Phase::spawn, ecs::access<CloudVolume>(),
-          ecs::access<CloudVolume, ParticleSet>(), [](ecs::World& world) {
+  return {.name = "cloud_emitter",
+          .phase = ecs::Phase::spawn,
+          .access = ecs::Access::of<ecs::Writes<CloudVolume, ParticleSet>>(),
+          .run = [](ecs::World& world) {
             world.each<CloudVolume, ParticleSet>([](CloudVolume& c, ParticleSet& s) {
               if (c.filled) return;
               fill_cloud(c, s);

@@ -9,6 +9,7 @@ struct CloudVolume;
 struct ParticleSet;
 
 void fill_cloud(const CloudVolume& cloud, ParticleSet& set);
+// The `cloud_emitter` system.
 ecs::SystemDesc cloud_emitter_system();
 
 }  // namespace pyro

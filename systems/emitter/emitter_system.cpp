@@ -71,19 +71,26 @@ uint64_t emit_until(Emitter& e, ParticlePool& pool, double t, uint64_t& scene_ro
   return spawned;
 }
 
-ecs::SystemDesc particle_emitter_system() {
-  return {"particle_emitter", ecs::Phase::spawn, ecs::access<FrameClock, SimulationEnvironment>(),
-          ecs::access<Emitter, ParticleSet, SimulationEnvironment>(), [](ecs::World& world) {
-            const FrameClock& clock = world.resource<FrameClock>();
-            SimulationEnvironment& env = world.resource<SimulationEnvironment>();
-            const double t = static_cast<double>(clock.frame + env.prewarm_steps) * clock.dt;
-            uint64_t live = 0;
-            world.each<Emitter, ParticleSet>([&](Emitter&, ParticleSet& s) { live += s.pool.size(); });
-            uint64_t room = live >= env.particle_budget ? 0 : env.particle_budget - live;
-            world.each<Emitter, ParticleSet>([&](Emitter& e, ParticleSet& s) {
-              emit_until(e, s.pool, t, room, &env.over_budget);
-            });
-          }};
+ecs::SystemDesc emitter_system() {
+  return {.name = "emitter",
+          .phase = ecs::Phase::spawn,
+          .access = ecs::Access::of<ecs::Reads<FrameClock>,
+                                    ecs::Writes<Emitter, ParticleSet, SimulationEnvironment>>(),
+          .run =
+              [](ecs::World& world) {
+                const FrameClock& clock = world.resource<const FrameClock>();
+                SimulationEnvironment& env = world.resource<SimulationEnvironment>();
+                const double t = static_cast<double>(clock.frame + env.prewarm_steps) * clock.dt;
+                uint64_t live = 0;
+                world.each<const Emitter, const ParticleSet>(
+                    [&](const Emitter&, const ParticleSet& s) { live += s.pool.size(); });
+                uint64_t room = live >= env.particle_budget ? 0 : env.particle_budget - live;
+                world.each<Emitter, ParticleSet>([&](Emitter& e, ParticleSet& s) {
+                  emit_until(e, s.pool, t, room, &env.over_budget);
+                });
+              },
+          // Both emitters spawn into ParticleSets (of different entities; access is per type).
+          .after = {"cloud_emitter"}};
 }
 
 }  // namespace pyro

@@ -20,6 +20,7 @@ class ParticlePool;
 uint64_t emit_until(Emitter& e, ParticlePool& pool, double t, uint64_t& scene_room,
                     uint64_t* scene_refused = nullptr);
 
-ecs::SystemDesc particle_emitter_system();
+// The `emitter` system (spawn phase, after cloud_emitter).
+ecs::SystemDesc emitter_system();
 
 }  // namespace pyro

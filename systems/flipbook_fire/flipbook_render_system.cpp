@@ -16,50 +16,67 @@
 
 namespace pyro {
 
+namespace {
+
+void orient_flipbook_fires(ecs::World& world) {
+  const View* view = world.try_resource<const View>();
+  if (!view) return;
+  FlipbookDrawList& list = world.resource<FlipbookDrawList>();
+  list.fires.clear();
+  const FrameClock* clock = world.try_resource<const FrameClock>();
+  const double time = clock ? clock->time() : 0.0;
+  // One orientation per fire for every eye: from the mid-eye point.
+  list.viewer = view->frame.eye;
+  world.each<const FlipbookFire>([&](const FlipbookFire& fire) {
+    if (fire.frame_count <= 0 || fire.texture < 0) return;
+    FlipbookDrawList::Fire f;
+    f.frame = face_viewer(fire.position, fire.up, list.viewer, -view->frame.forward);
+    f.quads = flipbook_quads(fire, f.frame, flipbook_step(time, fire.frames_per_second),
+                             fire.frame_count);
+    f.texture = fire.texture;
+    f.blend = fire.blend;
+    f.distance = glm::length(fire.position - list.viewer);
+    list.fires.push_back(std::move(f));
+  });
+  std::stable_sort(list.fires.begin(), list.fires.end(),
+                   [](const FlipbookDrawList::Fire& a, const FlipbookDrawList::Fire& b) {
+                     return a.distance > b.distance;
+                   });
+}
+
+void draw_flipbook_fires(ecs::World& world) {
+  FlipbookRenderer* renderer = world.try_resource<FlipbookRenderer>();
+  const View* view = world.try_resource<const View>();
+  const FlipbookDrawList* list = world.try_resource<const FlipbookDrawList>();
+  if (!renderer || !view || !list || list->fires.empty()) return;
+  GpuFrame& targets = world.resource<GpuFrame>();
+  for (size_t v = 0; v < view->eyes.size() && v < targets.eyes.size(); ++v)
+    for (const FlipbookDrawList::Fire& f : list->fires)
+      renderer->draw(f.quads, f.texture, f.blend, view->eyes[v], *targets.eyes[v].scene);
+}
+
+}  // namespace
+
 ecs::SystemDesc flipbook_orient_system() {
-  return {"flipbook_orient", ecs::Phase::camera, ecs::access<FlipbookFire, View, FrameClock>(),
-          ecs::access<FlipbookDrawList>(), [](ecs::World& world) {
-            const View* view = world.try_resource<View>();
-            if (!view) return;
-            FlipbookDrawList& list = world.has_resource<FlipbookDrawList>()
-                                         ? world.resource<FlipbookDrawList>()
-                                         : world.set_resource<FlipbookDrawList>();
-            list.fires.clear();
-            const FrameClock* clock = world.try_resource<FrameClock>();
-            const double time = clock ? clock->time() : 0.0;
-            // One orientation per fire for every eye: from the mid-eye point.
-            list.viewer = view->frame.eye;
-            world.each<FlipbookFire>([&](FlipbookFire& fire) {
-              if (fire.frame_count <= 0 || fire.texture < 0) return;
-              FlipbookDrawList::Fire f;
-              f.frame = face_viewer(fire.position, fire.up, list.viewer, -view->frame.forward);
-              f.quads = flipbook_quads(fire, f.frame, flipbook_step(time, fire.frames_per_second),
-                                       fire.frame_count);
-              f.texture = fire.texture;
-              f.blend = fire.blend;
-              f.distance = glm::length(fire.position - list.viewer);
-              list.fires.push_back(std::move(f));
-            });
-            std::stable_sort(list.fires.begin(), list.fires.end(),
-                             [](const FlipbookDrawList::Fire& a, const FlipbookDrawList::Fire& b) {
-                               return a.distance > b.distance;
-                             });
+  return {.name = "flipbook_orient",
+          .phase = ecs::Phase::sort,
+          .access = ecs::Access::of<ecs::Reads<FlipbookFire, View, FrameClock>,
+                                    ecs::Writes<FlipbookDrawList>>(),
+          .run = orient_flipbook_fires,
+          .setup = [](ecs::World& world) {
+            if (!world.has_resource<FlipbookDrawList>()) world.set_resource<FlipbookDrawList>();
           }};
 }
 
 ecs::SystemDesc flipbook_render_system() {
-  return {"flipbook_render", ecs::Phase::render,
-          ecs::access<FlipbookDrawList, View, FlipbookRenderer>(), ecs::access<GpuFrame>(),
-          [](ecs::World& world) {
-            FlipbookRenderer* renderer = world.try_resource<FlipbookRenderer>();
-            const View* view = world.try_resource<View>();
-            const FlipbookDrawList* list = world.try_resource<FlipbookDrawList>();
-            if (!renderer || !view || !list || list->fires.empty()) return;
-            GpuFrame& targets = world.resource<GpuFrame>();
-            for (size_t v = 0; v < view->eyes.size() && v < targets.eyes.size(); ++v)
-              for (const FlipbookDrawList::Fire& f : list->fires)
-                renderer->draw(f.quads, f.texture, f.blend, view->eyes[v], *targets.eyes[v].scene);
-          }};
+  return {.name = "flipbook_render",
+          .phase = ecs::Phase::render,
+          .access = ecs::Access::of<ecs::Reads<FlipbookDrawList, View>,
+                                    ecs::Writes<GpuFrame, FlipbookRenderer>>(),
+          .run = draw_flipbook_fires,
+          // The opaque pass clears and fills the scene targets this pass blends into.
+          .after = {"mesh_render"},
+          .main_thread = true};
 }
 
 }  // namespace pyro

@@ -1,6 +1,6 @@
 #pragma once
 // Flipbook fire (Rose 2007, sections 4.3-4.6), two systems:
-//   flipbook_orient (camera phase, after the camera system): every fire (components/
+//   flipbook_orient (sort phase, after the camera phase made View): every fire (components/
 //     flipbook_fire.h) turns to face the mid-eye point (the mono camera, View::frame) and its
 //     billboards show this frame's flame frames: the FlipbookDrawList resource, one for all eyes.
 //   flipbook_render (render phase, after the opaque meshes): that one draw list is blended into

@@ -10,19 +10,27 @@
 namespace pyro {
 
 ecs::SystemDesc mesh_render_system() {
-  return {"mesh_render", ecs::Phase::render, ecs::access<MeshInstance, View, RenderSettings>(),
-          ecs::access<GpuFrame>(), [](ecs::World& world) {
-            if (!world.has_resource<MeshRenderer>()) world.set_resource<MeshRenderer>();
+  return {
+      .name = "mesh_render",
+      .phase = ecs::Phase::render,
+      .access = ecs::Access::of<ecs::Reads<MeshInstance, View, RenderSettings>,
+                                ecs::Writes<GpuFrame, MeshRenderer>>(),
+      .run =
+          [](ecs::World& world) {
             std::vector<MeshInstance> instances;
-            world.each<MeshInstance>([&](MeshInstance& m) { instances.push_back(m); });
-            const View& view = world.resource<View>();
+            world.each<const MeshInstance>([&](const MeshInstance& m) { instances.push_back(m); });
+            const View& view = world.resource<const View>();
+            const RenderSettings& settings = world.resource<const RenderSettings>();
+            MeshRenderer& renderer = world.resource<MeshRenderer>();
             GpuFrame& frame = world.resource<GpuFrame>();
-            for (size_t v = 0; v < view.eyes.size() && v < frame.eyes.size(); ++v) {
-              world.resource<MeshRenderer>().draw(instances, view.eyes[v],
-                                                  world.resource<RenderSettings>(),
-                                                  *frame.eyes[v].scene);
-            }
-          }};
+            for (size_t v = 0; v < view.eyes.size() && v < frame.eyes.size(); ++v)
+              renderer.draw(instances, view.eyes[v], settings, *frame.eyes[v].scene);
+          },
+      .setup =
+          [](ecs::World& world) {
+            if (!world.has_resource<MeshRenderer>()) world.set_resource<MeshRenderer>();
+          },
+      .main_thread = true};
 }
 
 }  // namespace pyro

@@ -1,5 +1,6 @@
 #pragma once
-// Render phase, first pass: clears the frame and draws opaque meshes with depth.
+// Render phase, first pass, the `mesh_render` system: clears the frame and draws opaque meshes
+// with depth. Its setup makes the MeshRenderer resource.
 #include "engine/ecs/schedule.h"
 
 namespace pyro {

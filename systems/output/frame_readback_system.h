@@ -1,7 +1,8 @@
 #pragma once
-// Output phase: reads every view back, linear, with its particle layer composited, into the
-// FrameImage resource (for tests and accuracy measurements; PNG output reads the composed sRGB
-// image instead). Runs only when a runtime asks for readback: it costs a full-frame transfer.
+// Output phase, the `frame_readback` system: reads every view back, linear, with its particle
+// layer composited, into the FrameImage resource (for tests and accuracy measurements; PNG
+// output reads the composed sRGB image instead). Runs only when a runtime asks for readback: it
+// costs a full-frame transfer.
 #include "engine/ecs/schedule.h"
 
 namespace pyro {

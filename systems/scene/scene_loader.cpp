@@ -20,12 +20,14 @@
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <system_error>
 #include <utility>
 #include <vector>
 
+#include "components/stereo_camera.h"
 #include "engine/core/long_json_string.h"
 #include "engine/core/user_error.h"
 
@@ -540,6 +542,13 @@ std::size_t read_choice(ObjectReader& r, std::string_view key,
   return fallback;
 }
 
+// read_choice over E's names (engine/core/enum_names.h): the value named at `key`, `fallback`
+// when the key is absent.
+template <class E>
+E read_enum(ObjectReader& r, std::string_view key, E fallback) {
+  return enum_table<E>()[read_choice(r, key, enum_name_views<E>(), enum_index(fallback))].value;
+}
+
 void read_camera(ObjectReader& r, CameraDescription& c) {
   r.vec3("position", kAnyRange, c.position);
   r.vec3("target", kAnyRange, c.target);
@@ -551,7 +560,8 @@ void read_camera(ObjectReader& r, CameraDescription& c) {
   r.object("stereo", [&](ObjectReader& st) {
     st.number("interocular", kNonNegative, c.interocular);
     st.number("zero_parallax_distance", kPositive, c.zero_parallax_distance);
-    c.swap_eyes = read_choice(st, "eye_order", {"left-right", "right-left"}, c.swap_eyes ? 1 : 0) == 1;
+    const EyeOrder order = c.swap_eyes ? EyeOrder::right_left : EyeOrder::left_right;
+    c.swap_eyes = read_enum(st, "eye_order", order) == EyeOrder::right_left;
   });
 
   if (!(c.far > c.near)) {
@@ -609,45 +619,31 @@ void read_cloud(ObjectReader& r, CloudDescription& c) {
   }
 }
 
-struct MeshKindName {
-  std::string_view name;
-  MeshKind kind;
-};
-constexpr MeshKindName kMeshKinds[] = {
-    {"ground_plane", MeshKind::ground_plane},
-    {"water_tower", MeshKind::water_tower},
-};
-
 void read_mesh(ObjectReader& r, MeshDescription& m) {
-  std::vector<std::string_view> names;
-  for (const MeshKindName& k : kMeshKinds) names.push_back(k.name);
+  const std::vector<std::string_view> names = enum_name_views<MeshKind>();
   const json& type = r.require("type", "the mesh type, one of " + quoted_list(names));
   if (!type.is_string())
     r.at("type").fail("expected a mesh type, one of " + quoted_list(names) + ", found " +
                       describe(type));
   const std::string name = type.get<std::string>();
-  const auto it = std::find_if(std::begin(kMeshKinds), std::end(kMeshKinds),
-                               [&](const MeshKindName& k) { return k.name == name; });
-  if (it == std::end(kMeshKinds)) {
+  const std::optional<MeshKind> kind = enum_from_name<MeshKind>(name);
+  if (!kind) {
     std::string message =
         "unknown mesh type " + in_quotes(name) + "; expected one of " + quoted_list(names);
     const std::string hint = suggest(name, names);
     if (hint.rfind("; did you mean", 0) == 0) message += hint;
     r.at("type").fail(message);
   }
-  m.kind = it->kind;
+  m.kind = *kind;
   r.vec3("position", kAnyRange, m.position);
   r.number("scale", kPositive, m.scale);
   r.vec3("color", kUnit, m.color);
 }
 
 void read_render(ObjectReader& r, RenderDescription& d) {
-  d.billboards = static_cast<BillboardAlignment>(
-      read_choice(r, "billboards", {"viewplane", "viewpoint"}, static_cast<std::size_t>(d.billboards)));
-  d.particles = static_cast<ParticleShape>(read_choice(
-      r, "particles", {"gaussian", "spherical", "planar"}, static_cast<std::size_t>(d.particles)));
-  d.shading = static_cast<ParticleShading>(
-      read_choice(r, "shading", {"color", "explosion"}, static_cast<std::size_t>(d.shading)));
+  d.billboards = read_enum(r, "billboards", d.billboards);
+  d.particles = read_enum(r, "particles", d.particles);
+  d.shading = read_enum(r, "shading", d.shading);
   if (d.shading == ParticleShading::explosion && d.particles == ParticleShape::gaussian)
     r.at("shading").fail("\"explosion\" shading needs \"particles\": \"spherical\" or \"planar\"");
   r.number("layer_scale", Range{0.0, 1.0, true, false}, d.layer_scale);
@@ -771,7 +767,7 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
 }
 
 // ---------------------------------------------------------------------------------------------
-// Flipbook fires (Rose 2007, chapter 4; issue 7)
+// Flipbook fires (Rose 2007, chapter 4)
 
 // A non-empty array of numbers in `range` (at most `max_size`).
 std::vector<float> read_number_array(const json& v, const Where& at, const Range& range,
@@ -834,8 +830,7 @@ void read_fire(ObjectReader& r, FlipbookFire& f, const std::string& scene_file) 
   r.number("aspect", kPositive, f.aspect);
   r.number("intensity", kNonNegative, f.intensity);
   r.number("overlap_exponent", Range{0.0, 4.0}, f.overlap_exponent);
-  f.blend = static_cast<FlipbookBlend>(read_choice(r, "blend", {"one-minus-destination", "linear-alpha"},
-                                                   static_cast<std::size_t>(f.blend)));
+  f.blend = read_enum(r, "blend", f.blend);
   r.number("frames_per_second", kPositive, f.frames_per_second);
   if (r.find("flipbook") != nullptr) {
     std::string folder;
@@ -879,7 +874,7 @@ void read_fire(ObjectReader& r, FlipbookFire& f, const std::string& scene_file) 
 }
 
 // ---------------------------------------------------------------------------------------------
-// Explosion emitters (issue 4)
+// Explosion emitters
 
 bool read_bool(const json& v, const Where& at) {
   if (!v.is_boolean()) at.fail("expected true or false, found " + describe(v));
@@ -961,11 +956,9 @@ void read_dynamics(ObjectReader& r, ParticleDynamics& d) {
 void read_emitter(ObjectReader& r, EmitterDescription& out) {
   Emitter& e = out.emitter;
   r.string("name", e.name);
-  e.medium = static_cast<ParticleMedium>(
-      read_choice(r, "medium", {"dust", "smoke", "fire"}, static_cast<std::size_t>(e.medium)));
+  e.medium = read_enum(r, "medium", e.medium);
   r.object("shape", [&](ObjectReader& s) {
-    e.shape = static_cast<EmitterShape>(
-        read_choice(s, "type", {"point", "sphere", "box", "disc"}, static_cast<std::size_t>(e.shape)));
+    e.shape = read_enum(s, "type", e.shape);
     s.vec3("position", kAnyRange, e.position);
     s.number("radius", kNonNegative, e.radius);
     if (const json* v = s.find("surface")) e.surface = read_bool(*v, s.at("surface"));

@@ -36,7 +36,7 @@ struct RuntimeOptions {
   // Finish the GPU's work after every system, so each system's timing includes the GPU work it
   // issued (profiling; it removes CPU/GPU overlap, so frames get slower).
   bool sync_timing = false;
-  // Profiling session: every step() records one span per system (CPU time, from the schedule)
+  // Profiling: every step() records one span per system (CPU time, from the schedule)
   // and one per GPU pass (timer queries: each render, composite and output system, and the
   // layers inside billboard_render with the fragments they drew), read one frame late.
   bool profile = false;

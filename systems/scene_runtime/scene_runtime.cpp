@@ -60,6 +60,8 @@ SceneRuntime::SceneRuntime(const ResolvedScene& resolved, SceneAssets assets,
       schedule_(standard_schedule(options)),
       sequencer_(resolved.substeps, resolved.settings.motion_blur > 0.0f) {
   if (options.profile) profiler_ = std::make_unique<RuntimeProfiler>();
+  make_current_();
+  schedule_.setup(world_);  // renderers, scratch and outputs, in the runtime's context
 }
 
 void SceneRuntime::step() {
@@ -88,7 +90,7 @@ void SceneRuntime::redraw() {
   FrameClock& clock = world_.resource<FrameClock>();
   const uint64_t next = clock.frame;
   if (next > 0) clock.frame = next - 1;
-  schedule_.run_phases(world_, ecs::Phase::sort, ecs::Phase::output);
+  schedule_.run_phases(world_, ecs::Phase::camera, ecs::Phase::output);
   world_.resource<FrameClock>().frame = next;
 }
 

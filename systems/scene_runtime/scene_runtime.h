@@ -48,7 +48,7 @@ class SceneRuntime : public FrameStepper {
   // Runs only the spawn and simulate phases for the current frame (no sorting, rendering or
   // output), then advances the clock: the particle state afterwards is the one step() leaves.
   void simulate_step() override;
-  // Draws the last frame's state again (sort, camera, render, composite and output phases, at
+  // Draws the last frame's state again (camera, sort, render, composite and output phases, at
   // the last frame's time) without running spawn or simulate and without advancing the clock:
   // the viewer paused, with the camera moving. After step(), redraw() gives the same image.
   void redraw();
@@ -62,7 +62,7 @@ class SceneRuntime : public FrameStepper {
   }
   const FrameSequencer& sequencer() const { return sequencer_; }
 
-  // The profiling session so far (options.profile): a "frame" span per step() on the CPU track
+  // The profiling run so far (options.profile): a "frame" span per step() on the CPU track
   // with the systems' spans inside it, and the GPU passes on the GPU track. Waits for the GPU to
   // finish the last frame's passes. Empty when not profiling.
   const std::vector<TraceSpan>& trace();

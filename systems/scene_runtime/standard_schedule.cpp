@@ -21,10 +21,10 @@ namespace pyro {
 
 std::vector<ecs::SystemDesc> standard_systems(bool readback) {
   std::vector<ecs::SystemDesc> systems = {
-      cloud_emitter_system(), particle_emitter_system(), drift_system(), particle_animation_system(),
-      camera_orbit_system(),
-      depth_sort_system(),    camera_system(),          flipbook_orient_system(),
-      mesh_render_system(),   flipbook_render_system(), billboard_render_system(), stereo_compose_system()};
+      cloud_emitter_system(),   emitter_system(),          cloud_drift_system(),
+      animation_system(),       camera_orbit_system(),     stereo_camera_system(),
+      sorting_system(),         flipbook_orient_system(),  mesh_render_system(),
+      flipbook_render_system(), billboard_render_system(), composite_system()};
   if (readback) systems.push_back(frame_readback_system());
   return systems;
 }
@@ -32,14 +32,14 @@ std::vector<ecs::SystemDesc> standard_systems(bool readback) {
 ecs::Schedule standard_schedule(const RuntimeOptions& options) {
   ecs::Schedule schedule;
   for (ecs::SystemDesc& d : standard_systems(options.readback)) {
-    if (options.profile && d.phase >= ecs::Phase::render) {
+    if (options.profile && d.main_thread) {
       // Systems that issue GL commands: their GPU time is a pass of its own on the GPU track.
       d.run = [run = std::move(d.run), name = d.name](ecs::World& w) {
         gpu::GpuPassScope pass(name.c_str());
         run(w);
       };
     }
-    if (options.sync_timing) {
+    if (options.sync_timing && d.main_thread) {
       d.run = [run = std::move(d.run)](ecs::World& w) {
         run(w);
         glFinish();

@@ -1,14 +1,11 @@
 #include "systems/sorting/depth_sort.h"
 
 #include <algorithm>
-
 #include <glm/geometric.hpp>
 
-#include "components/camera.h"
 #include "components/particle_set.h"
 #include "components/render_settings.h"
-#include "components/stereo_camera.h"
-#include "systems/camera/camera_views.h"
+#include "components/view.h"
 #include "engine/ecs/world.h"
 
 namespace pyro {
@@ -17,22 +14,11 @@ void sort_back_to_front(std::vector<SortKey>& keys) {
   std::sort(keys.begin(), keys.end(), back_to_front);
 }
 
-namespace {
-
-// Per-frame scratch kept between frames so sorting allocates nothing in steady state.
-struct SortScratch {
-  std::vector<SortKey> keys;
-  std::vector<std::pair<uint32_t, const ParticlePool*>> sets;  // (entity index, pool)
-};
-
-}  // namespace
-
-void build_draw_list(ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
-                     SortKeyKind kind, DrawList& list) {
-  if (!world.has_resource<SortScratch>()) world.set_resource<SortScratch>();
-  SortScratch& s = world.resource<SortScratch>();
+void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
+                     SortKeyKind kind, SortScratch& s, DrawList& list) {
   s.sets.clear();
-  world.each<ParticleSet>([&](ecs::Entity e, ParticleSet& set) { s.sets.emplace_back(e.index, &set.pool); });
+  world.each<ParticleSet>(
+      [&](ecs::Entity e, const ParticleSet& set) { s.sets.emplace_back(e.index, &set.pool); });
   // Sets in entity-index order, so the tie-break does not depend on the storage's history.
   std::sort(s.sets.begin(), s.sets.end());
   s.keys.clear();
@@ -64,30 +50,38 @@ void build_draw_list(ecs::World& world, const glm::vec3& eye, const glm::vec3& f
   }
 }
 
-ecs::SystemDesc depth_sort_system() {
-  return {"sorting", ecs::Phase::sort,
-          ecs::access<Camera, StereoCamera, RenderSettings, ParticleSet>(),
-          ecs::access<EyeDrawLists>(), [](ecs::World& world) {
-            const RenderSettings* settings = world.try_resource<RenderSettings>();
-            const RenderSettings defaults;
-            const RenderSettings& rs = settings ? *settings : defaults;
-            std::vector<CameraFrame> views;
-            world.each<Camera>([&](ecs::Entity e, Camera& c) {
-              if (views.empty()) views = rendered_views(c, world.try_get<StereoCamera>(e), rs);
-            });
-            if (views.empty()) return;
-            EyeDrawLists& lists = world.has_resource<EyeDrawLists>() ? world.resource<EyeDrawLists>()
-                                                                     : world.set_resource<EyeDrawLists>();
-            lists.eyes.resize(views.size());
-            if (rs.alignment == BillboardAlignment::viewplane) {
-              // Parallel view axes: one view-depth order serves every eye.
-              build_draw_list(world, views[0].eye, views[0].forward, SortKeyKind::view_depth, lists.eyes[0]);
-              for (size_t v = 1; v < views.size(); ++v) lists.eyes[v] = lists.eyes[0];
-            } else {
-              for (size_t v = 0; v < views.size(); ++v)
-                build_draw_list(world, views[v].eye, views[v].forward, SortKeyKind::eye_distance, lists.eyes[v]);
-            }
-          }};
+ecs::SystemDesc sorting_system() {
+  return {.name = "sorting",
+          .phase = ecs::Phase::sort,
+          .access = ecs::Access::of<ecs::Reads<View, RenderSettings, ParticleSet>,
+                                    ecs::Writes<EyeDrawLists, SortScratch>>(),
+          .run =
+              [](ecs::World& world) {
+                const View& view = world.resource<const View>();
+                if (view.eyes.empty()) return;
+                const RenderSettings* settings = world.try_resource<const RenderSettings>();
+                const BillboardAlignment alignment =
+                    settings ? settings->alignment : RenderSettings{}.alignment;
+                SortScratch& scratch = world.resource<SortScratch>();
+                EyeDrawLists& lists = world.resource<EyeDrawLists>();
+                const std::vector<CameraFrame>& eyes = view.eyes;
+                lists.eyes.resize(eyes.size());
+                if (alignment == BillboardAlignment::viewplane) {
+                  // Parallel view axes: one view-depth order serves every eye.
+                  build_draw_list(world, eyes[0].eye, eyes[0].forward, SortKeyKind::view_depth,
+                                  scratch, lists.eyes[0]);
+                  for (size_t v = 1; v < eyes.size(); ++v) lists.eyes[v] = lists.eyes[0];
+                } else {
+                  for (size_t v = 0; v < eyes.size(); ++v)
+                    build_draw_list(world, eyes[v].eye, eyes[v].forward, SortKeyKind::eye_distance,
+                                    scratch, lists.eyes[v]);
+                }
+              },
+          .setup =
+              [](ecs::World& world) {
+                if (!world.has_resource<SortScratch>()) world.set_resource<SortScratch>();
+                if (!world.has_resource<EyeDrawLists>()) world.set_resource<EyeDrawLists>();
+              }};
 }
 
 }  // namespace pyro

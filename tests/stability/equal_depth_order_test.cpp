@@ -17,7 +17,10 @@
 #include "components/camera.h"
 #include "components/draw_list.h"
 #include "components/particle_set.h"
+#include "components/render_settings.h"
+#include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
+#include "systems/camera/camera_system.h"
 #include "systems/sorting/depth_sort.h"
 
 namespace pyro {
@@ -73,7 +76,13 @@ Built build_and_sort(unsigned seed, int sorts = 1) {
         }
     for (size_t i = 0; i < pool.size(); ++i) b.expected.emplace_back(marker(e.index, pool.id[i]), e.index, pool.id[i]);
   }
-  for (int k = 0; k < sorts; ++k) depth_sort_system().run(w);
+  // The eye frames come from the stereo_camera system, as in a scene's schedule.
+  w.set_resource<RenderSettings>();
+  ecs::Schedule schedule;
+  schedule.add(stereo_camera_system());
+  schedule.add(sorting_system());
+  schedule.setup(w);
+  for (int k = 0; k < sorts; ++k) schedule.run_frame(w);
   const DrawList& list = w.resource<EyeDrawLists>().eyes.at(0);
   for (size_t k = 0; k < list.size(); ++k) b.drawn.push_back(list.color_density[k].w);
   return b;

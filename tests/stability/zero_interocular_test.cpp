@@ -41,7 +41,7 @@ TEST(StabilityZeroInterocular, StereoCameraEyesAreTheMonoCameraWithZeroParallax)
   const ecs::Entity cam = w.create();
   w.emplace<Camera>(cam, Camera{{1, 2, 6}, {0, 0.5f, 0}, {0, 1, 0}, 45, 0.1f, 100, 0});
   w.emplace<StereoCamera>(cam, StereoCamera{StereoParameters{0.0f, 5.0f}, EyeOrder::left_right});
-  camera_system().run(w);
+  ecs::run_system_once(stereo_camera_system(), w);
   const View& view = w.resource<View>();
   ASSERT_EQ(view.eyes.size(), 2u);
   const CameraFrame& left = view.eyes[0];

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
 #include "engine/particles/particle_pool.h"
 #include "tools/pyro/progress.h"
@@ -46,6 +47,85 @@ float init_value(std::size_t i, int axis) {
   return float(int((i * 2654435761u + unsigned(axis) * 40503u) % 2001u) - 1000) * 0.001f;
 }
 
+ecs::World make_world(std::size_t n, std::vector<ecs::Entity>* handles = nullptr) {
+  ecs::World world;
+  world.group<Position, Velocity>();
+  for (std::size_t i = 0; i < n; ++i) {
+    const ecs::Entity e = world.create();
+    world.emplace<Position>(e, Position{init_value(i, 0), init_value(i, 1), init_value(i, 2)});
+    world.emplace<Velocity>(e, Velocity{init_value(i, 3), init_value(i, 4), init_value(i, 5)});
+    if (handles) handles->push_back(e);
+  }
+  return world;
+}
+
+void integrate(ecs::World& world, float dt) {
+  world.each<Position, const Velocity>([dt](Position& p, const Velocity& v) {
+    p.x += v.x * dt;
+    p.y += v.y * dt;
+    p.z += v.z * dt;
+  });
+  clobber(world.pool<Position>()->data());
+}
+
+// One get<> per component per entity, through handles in creation order: the access pattern
+// where the access check (engine/ecs/access.h) costs the most, one check per lookup.
+void integrate_by_lookup(ecs::World& world, const std::vector<ecs::Entity>& handles, float dt) {
+  for (const ecs::Entity e : handles) {
+    Position& p = world.get<Position>(e);
+    const Velocity& v = world.get<const Velocity>(e);
+    p.x += v.x * dt;
+    p.y += v.y * dt;
+    p.z += v.z * dt;
+  }
+  clobber(&handles);
+}
+
+double position_sum(ecs::World& world) {
+  double sum = 0;
+  world.each<const Position>([&](const Position& p) { sum += double(p.x) + p.y + p.z; });
+  return sum;
+}
+
+// The access check's cost: the same loops run by a scheduled system (every World call checked
+// against its declared access) and directly (unchecked), interleaved.
+nlohmann::json checked_access_costs(std::size_t n, int repeats, float dt, double plain_ns) {
+  std::vector<ecs::Entity> handles;
+  ecs::World direct = make_world(n, &handles);
+  ecs::World checked = make_world(n);
+  ecs::Schedule each_schedule, lookup_schedule;
+  const ecs::Access access = ecs::Access::of<ecs::Reads<Velocity>, ecs::Writes<Position>>();
+  each_schedule.add(
+      {.name = "integrate", .access = access, .run = [dt](ecs::World& w) { integrate(w, dt); }});
+  lookup_schedule.add(
+      {.name = "integrate_by_lookup", .access = access, .run = [&handles, dt](ecs::World& w) {
+         integrate_by_lookup(w, handles, dt);
+       }});
+  std::vector<double> t_each, t_each_checked, t_lookup, t_lookup_checked;
+  for (int r = 0; r <= repeats; ++r) {  // pass 0 warms up, untimed
+    const double a = time_ns([&] { integrate(direct, dt); });
+    const double b = time_ns([&] { each_schedule.run_frame(checked); });
+    const double c = time_ns([&] { integrate_by_lookup(direct, handles, dt); });
+    const double d = time_ns([&] { lookup_schedule.run_frame(checked); });
+    if (r == 0) continue;
+    t_each.push_back(a), t_each_checked.push_back(b);
+    t_lookup.push_back(c), t_lookup_checked.push_back(d);
+  }
+  const double per = 1.0 / double(n);
+  const double each_checked_ns = median(t_each_checked) * per;
+  const double lookup_ns = median(t_lookup) * per;
+  const double lookup_checked_ns = median(t_lookup_checked) * per;
+  return {
+      {"ns_per_entity_checked", each_checked_ns},
+      {"ecs_checked_ratio", each_checked_ns / plain_ns},
+      {"checked_over_unchecked_each", each_checked_ns / (median(t_each) * per)},
+      {"ns_per_lookup_unchecked", lookup_ns},
+      {"ns_per_lookup_checked", lookup_checked_ns},
+      {"checked_over_unchecked_lookup", lookup_checked_ns / lookup_ns},
+      {"checked_results_agree", position_sum(direct) == position_sum(checked)},
+  };
+}
+
 }  // namespace
 
 nlohmann::json bench_ecs(std::size_t n, int repeats) {
@@ -54,13 +134,7 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
   const float dt = 1.0f / 60.0f;
 
   // (1) ECS: n entities with Position and Velocity, owned by a group so each<> is a flat loop.
-  ecs::World world;
-  world.group<Position, Velocity>();
-  for (std::size_t i = 0; i < n; ++i) {
-    const ecs::Entity e = world.create();
-    world.emplace<Position>(e, Position{init_value(i, 0), init_value(i, 1), init_value(i, 2)});
-    world.emplace<Velocity>(e, Velocity{init_value(i, 3), init_value(i, 4), init_value(i, 5)});
-  }
+  ecs::World world = make_world(n);
 
   // (2) One ParticlePool of capacity n. A single pool keeps the loop the same shape as the
   // plain arrays, so the ratio isolates the container; per-emitter pools of 65536 would only
@@ -80,14 +154,7 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
     vx[i] = init_value(i, 3), vy[i] = init_value(i, 4), vz[i] = init_value(i, 5);
   }
 
-  auto run_ecs = [&] {
-    world.each<Position, Velocity>([dt](Position& p, const Velocity& v) {
-      p.x += v.x * dt;
-      p.y += v.y * dt;
-      p.z += v.z * dt;
-    });
-    clobber(world.pool<Position>()->data());
-  };
+  auto run_ecs = [&] { integrate(world, dt); };
   auto run_pool = [&] {
     float* px = pool.px.data();
     float* py = pool.py.data();
@@ -98,7 +165,7 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
     const std::size_t m = pool.size();
     // GCC cannot prove the pool's arrays distinct, and 3 stores against 6 streams need more
     // run-time alias checks than it will emit (10), so without this the loop stays scalar
-    // (1.3-1.5x slower here). See particle_pool.h.
+    // (docs/benchmarks.md). See particle_pool.h.
 #pragma GCC ivdep
     for (std::size_t i = 0; i < m; ++i) {
       px[i] += pvx[i] * dt;
@@ -141,8 +208,8 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
   // Every method did the same arithmetic from the same inputs, so the sums agree bitwise
   // (unless FMA contraction, off under ISO -std=c++20, fuses only some loops); reading the
   // results also keeps every store observable.
-  double sum_ecs = 0, sum_pool = 0, sum_plain = 0;
-  world.each<Position>([&](const Position& p) { sum_ecs += double(p.x) + p.y + p.z; });
+  const double sum_ecs = position_sum(world);
+  double sum_pool = 0, sum_plain = 0;
   for (std::size_t i = 0; i < n; ++i) {
     sum_pool += double(pool.px[i]) + pool.py[i] + pool.pz[i];
     sum_plain += double(x[i]) + y[i] + z[i];
@@ -152,7 +219,7 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
   const double ecs_ns = median(t_ecs) * per;
   const double pool_ns = median(t_pool) * per;
   const double plain_ns = median(t_plain) * per;
-  return {
+  nlohmann::json result = {
       {"entities", n},
       {"repeats", repeats},
       {"ns_per_entity", ecs_ns},
@@ -163,6 +230,8 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
       {"pool_layout", "one ParticlePool of capacity n"},
       {"results_agree", sum_ecs == sum_pool && sum_pool == sum_plain},
   };
+  result.update(checked_access_costs(n, repeats, dt, plain_ns));
+  return result;
 }
 
 }  // namespace pyro

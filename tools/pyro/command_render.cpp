@@ -38,7 +38,7 @@ struct RenderArgs {
   int width = 0, height = 0;
   std::string frames = "1";
   bool json = false;
-  std::string trace;  // --trace FILE: Chrome trace-event JSON of the session
+  std::string trace;  // --trace FILE: Chrome trace-event JSON of the run
   OutputFolderOptions folder;  // --wait, --overwrite
   RuntimeOptions runtime;
 };
@@ -47,12 +47,6 @@ std::string frame_name(int f) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%04d", f);
   return name;
-}
-
-std::string stereo_name(StereoMode mode) {
-  for (const auto& [name, m] : stereo_mode_names())
-    if (m == mode) return name;
-  return "";
 }
 
 size_t drawn_particles(SceneRuntime& runtime) {
@@ -75,8 +69,8 @@ nlohmann::json render_summary(const RenderArgs& a, SceneRuntime& runtime, const 
       {"last_frame", range.last},
       {"width", rs.width},
       {"height", rs.height},
-      {"stereo", stereo_name(rs.stereo_mode)},
-      {"billboards", rs.alignment == BillboardAlignment::viewplane ? "viewplane" : "viewpoint"},
+      {"stereo", name_of(rs.stereo_mode)},
+      {"billboards", name_of(rs.alignment)},
       {"layer_scale", rs.layer_scale},
       {"particles", drawn_particles(runtime)},
       {"files", files},

@@ -175,8 +175,8 @@ struct TestWorld {
     world.emplace<ParticleSet>(en, ParticleSet{ParticlePool(budget)});
   }
   void frame() {
-    particle_emitter_system().run(world);
-    particle_animation_system().run(world);
+    emitter_system().run(world);
+    animation_system().run(world);
     world.resource<FrameClock>().frame += 1;
   }
   const ParticlePool& pool() {

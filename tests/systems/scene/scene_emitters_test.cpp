@@ -1,4 +1,4 @@
-// The scene file's "environment" and "emitters" (issue 4): every key read into the components,
+// The scene file's "environment" and "emitters": every key read into the components,
 // refusals with JSON pointers and suggestions, and a scene that runs its emitters.
 #include <gtest/gtest.h>
 
@@ -107,8 +107,8 @@ TEST(SceneEmitters, RuntimeSpawnsAnimatesAndPrewarms) {
   EXPECT_EQ(dust, 16u);
   for (int f = 0; f < 5; ++f) rt.step();
   const auto order = rt.schedule().order();
-  EXPECT_NE(std::find(order.begin(), order.end(), "particle_emitter"), order.end());
-  EXPECT_NE(std::find(order.begin(), order.end(), "particle_animation"), order.end());
+  EXPECT_NE(std::find(order.begin(), order.end(), "emitter"), order.end());
+  EXPECT_NE(std::find(order.begin(), order.end(), "animation"), order.end());
   // Same scene, same particles.
   SceneRuntime again(s, o);
   for (int f = 0; f < 5; ++f) again.step();

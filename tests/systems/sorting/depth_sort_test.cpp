@@ -1,5 +1,7 @@
 // The sorting system: back-to-front order, deterministic tie-breaks, independence from the
 // order in which particles and sets were stored.
+#include "systems/sorting/depth_sort.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,8 +10,11 @@
 #include "components/camera.h"
 #include "components/draw_list.h"
 #include "components/particle_set.h"
+#include "components/render_settings.h"
+#include "components/view.h"
+#include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
-#include "systems/sorting/depth_sort.h"
+#include "systems/camera/camera_system.h"
 
 namespace pyro {
 namespace {
@@ -23,7 +28,16 @@ ParticleInit at(float x, float y, float z, float marker) {
   return p;
 }
 
-void run_sort(ecs::World& w) { depth_sort_system().run(w); }
+// The eye frames come from the stereo_camera system (camera phase), as in a scene's schedule;
+// both run under the schedule, so their access declarations are checked.
+void run_sort(ecs::World& w) {
+  if (!w.has_resource<RenderSettings>()) w.set_resource<RenderSettings>();
+  ecs::Schedule schedule;
+  schedule.add(stereo_camera_system());
+  schedule.add(sorting_system());
+  schedule.setup(w);
+  schedule.run_frame(w);
+}
 
 TEST(DepthSort, FarthestFirstAlongTheViewAxis) {
   ecs::World w;
@@ -103,6 +117,35 @@ TEST(DepthSort, RepeatedFramesGiveTheSameOrder) {
     const auto& again = w.resource<EyeDrawLists>().eyes.at(0).color_density;
     for (size_t k = 0; k < first.size(); ++k) ASSERT_EQ(first[k].w, again[k].w);
   }
+}
+
+TEST(DepthSort, SortsForTheEyesTheCameraSystemWroteIntoView) {
+  // The sort reads View, never the camera: turn View's eye around after the camera system ran
+  // and the order reverses, though the camera entity still looks down -z.
+  ecs::World w;
+  w.emplace<Camera>(w.create(), Camera{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45, 0.1f, 100, 0});
+  ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(5)});
+  for (int i = 0; i < 5; ++i)
+    s.pool.spawn(at(0, 0, -2.0f - static_cast<float>(i), static_cast<float>(i)));
+  run_sort(w);
+  const auto order = [&] {
+    std::vector<float> markers;
+    for (const glm::vec4& c : w.resource<EyeDrawLists>().eyes.at(0).color_density)
+      markers.push_back(c.w);
+    return markers;
+  };
+  EXPECT_EQ(order(), (std::vector<float>{4, 3, 2, 1, 0}));  // farthest (most negative z) first
+
+  View& view = w.resource<View>();
+  view.eyes.at(0).eye = {0, 0, -10};
+  view.eyes.at(0).forward = {0, 0, 1};
+  ecs::Schedule sort_only;
+  sort_only.add(sorting_system());
+  sort_only.setup(w);
+  sort_only.run_frame(w);
+  EXPECT_EQ(order(), (std::vector<float>{0, 1, 2, 3, 4}));
+  // The sort may not touch the camera at all: its declaration has no Camera.
+  EXPECT_EQ(sorting_system().access.mode(ecs::type_id<Camera>()), ecs::AccessMode::none);
 }
 
 }  // namespace

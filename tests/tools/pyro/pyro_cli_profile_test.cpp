@@ -1,4 +1,4 @@
-// Profiling sessions end to end (issue 6, part 4): `pyro render --trace` writes Chrome trace
+// Profiling runs end to end: `pyro render --trace` writes Chrome trace
 // events with one span per system per frame nested in its frame, GPU passes on their own track
 // with the explosion's three layers inside billboard_render; `pyro profile --json` has every
 // system with consistent statistics and the explosion's known particle counts.
@@ -95,9 +95,9 @@ TEST(PyroCliProfile, ProfileJsonHasEverySystemAndTheExplosionsParticles) {
                                  "--width", "96", "--height", "96", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = test::last_json_line(r.out);
-  const std::set<std::string> expected = {"emitter", "particle_emitter", "animation",
-                                          "particle_animation", "camera_orbit", "sorting",
-                                          "camera", "mesh_render", "billboard_render", "composite",
+  const std::set<std::string> expected = {"cloud_emitter", "emitter", "cloud_drift", "animation",
+                                          "camera_orbit", "stereo_camera", "sorting", "mesh_render",
+                                          "billboard_render", "composite",
                                           // scheduled in every scene, idle without fires
                                           "flipbook_orient", "flipbook_render"};
   std::set<std::string> names;

@@ -1,4 +1,4 @@
-// Issue 8 end to end: scene files that are garbage, truncated, mistyped or over budget are
+// Reliability end to end: scene files that are garbage, truncated, mistyped or over budget are
 // refused with exit status 2 naming the file and nothing written (not even a temporary folder);
 // renders are deterministic and `--frames A:B` equals the same frames of a full run.
 #include <gtest/gtest.h>
