@@ -87,8 +87,8 @@ nlohmann::json pixel_settings(SceneRuntime& runtime, const RuntimeOptions& o) {
   const RenderSettings& rs = runtime.settings();
   nlohmann::json s = {{"width", rs.width},
                       {"height", rs.height},
-                      {"stereo", stereo_name(rs.stereo_mode)},
-                      {"billboards", rs.alignment == BillboardAlignment::viewplane ? "viewplane" : "viewpoint"},
+                      {"stereo", name_of(rs.stereo_mode)},
+                      {"billboards", name_of(rs.alignment)},
                       {"layer_scale", rs.layer_scale},
                       {"frame_scale", o.frame_scale}};
   if (o.particles) s["particles"] = static_cast<int>(*o.particles);
