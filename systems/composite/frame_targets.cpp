@@ -40,16 +40,13 @@ GpuFrame make_gpu_frame(const RenderSettings& settings) {
                                                     layer_extent(s.height, s.layer_scale));
     f.eyes.push_back(std::move(t));
   }
-  const bool two_wide = s.stereo_mode == StereoMode::side_by_side ||
-                        s.stereo_mode == StereoMode::side_by_side_crossed ||
-                        s.stereo_mode == StereoMode::left_right;
-  f.output = std::make_unique<gpu::RenderTarget>(two_wide ? 2 * s.width : s.width, s.height,
-                                                 GL_SRGB8_ALPHA8);
+  const int output_width = two_views_wide(s.stereo_mode) ? 2 * s.width : s.width;
+  f.output = std::make_unique<gpu::RenderTarget>(output_width, s.height, GL_SRGB8_ALPHA8);
   if (settings.motion_blur > 0.0f)
     f.history = std::make_unique<gpu::RenderTarget>(f.output->width(), f.output->height(), GL_RGBA16F);
   if (settings.frame_scale < 1.0f) {
-    f.display = std::make_unique<gpu::RenderTarget>(
-        two_wide ? 2 * settings.width : settings.width, settings.height, GL_SRGB8_ALPHA8);
+    const int display_width = two_views_wide(s.stereo_mode) ? 2 * settings.width : settings.width;
+    f.display = std::make_unique<gpu::RenderTarget>(display_width, settings.height, GL_SRGB8_ALPHA8);
   }
   return f;
 }
