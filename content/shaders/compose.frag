@@ -143,8 +143,11 @@ vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth,
   vec4 q = r * r / (rho * rho);
   vec4 w = b * (exp(-q * q) + kappa);
   w /= dot(w, vec4(1.0));
-  vec4 weighted = vec4(dot(w, textureGather(media, uv, 0)), dot(w, textureGather(media, uv, 1)),
-                       dot(w, textureGather(media, uv, 2)), dot(w, textureGather(media, uv, 3)));
+  // The four texels whole (four fetches, where a gather per channel reads sixteen).
+  ivec2 t0 = ivec2(lo), t1 = ivec2(hi);
+  vec4 weighted = w.x * texelFetch(media, ivec2(t0.x, t1.y), 0) +
+                  w.y * texelFetch(media, t1, 0) + w.z * texelFetch(media, ivec2(t1.x, t0.y), 0) +
+                  w.w * texelFetch(media, t0, 0);
   return max4(r) <= u_depth_tolerance ? bilinear : weighted;
 }
 #endif
