@@ -14,7 +14,7 @@
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
-#include "tools/pyro/scene_frame_timing.h"
+#include "systems/benchmarks/frame_timing.h"
 
 namespace pyro::cli {
 

@@ -23,7 +23,7 @@
 #include "systems/scene_runtime/particle_snapshot.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
-#include "tools/pyro/vdb_view.h"
+#include "systems/cloud_import/grid_framing.h"
 
 namespace pyro::cli {
 
