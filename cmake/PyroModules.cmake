@@ -178,9 +178,9 @@ function(_pyro_write_module_table json)
     list(APPEND entries "    \"${name}\": ${list}")
   endforeach()
   list(JOIN entries ",\n" party_entries)
-  file(CONFIGURE OUTPUT "${json}" CONTENT
-       "{\n  \"modules\": {\n${module_entries}\n  },\n  \"third_party\": {\n${party_entries}\n  }\n}\n"
-       @ONLY)
+  set(text "{\n  \"modules\": {\n${module_entries}\n  },\n")
+  string(APPEND text "  \"third_party\": {\n${party_entries}\n  }\n}\n")
+  file(CONFIGURE OUTPUT "${json}" CONTENT "${text}" @ONLY)
 endfunction()
 
 function(_pyro_check_coverage)

@@ -1,7 +1,7 @@
 // pyro profile SCENE [--frames N] [--warmup K] [--width W] [--height H] [--sync-timing] [--json]
 //                    [render options]
 //
-// A profiling session (SceneRuntime with RuntimeOptions::profile): K warm-up frames (shader
+// A profiling run (SceneRuntime with RuntimeOptions::profile): K warm-up frames (shader
 // compilation, first allocations; not counted), then N frames, every system timed on the CPU
 // and every GL pass on the GPU (timer queries). Prints per system the mean, median, 95th
 // percentile and maximum milliseconds, per GPU pass the same plus the fragments it drew
