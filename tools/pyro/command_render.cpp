@@ -86,8 +86,8 @@ nlohmann::json pixel_settings(SceneRuntime& runtime, const RuntimeOptions& o) {
                       {"billboards", name_of(rs.alignment)},
                       {"layer_scale", rs.layer_scale},
                       {"frame_scale", o.frame_scale}};
-  if (o.particles) s["particles"] = static_cast<int>(*o.particles);
-  if (o.shading) s["shading"] = static_cast<int>(*o.shading);
+  if (o.particles) s["particles"] = name_of(*o.particles);
+  if (o.shading) s["shading"] = name_of(*o.shading);
   if (o.interocular) s["interocular"] = *o.interocular;
   if (o.zero_parallax_distance) s["zero_parallax"] = *o.zero_parallax_distance;
   if (o.swap_eyes) s["swap_eyes"] = *o.swap_eyes;
