@@ -1,6 +1,6 @@
 #pragma once
 // Screen tiles of the final pass, sorted by the work their pixels need, so that compose.frag's
-// costly variants (nearest-depth upsampling, heat shimmer) run only where they change the image.
+// costly variants (depth-aware upsampling, heat shimmer) run only where they change the image.
 // On llvmpipe a fragment shader pays for every instruction on every pixel, branches and discards
 // included, so work is skipped per pixel only by not rasterising it: a compute pass
 // (content/shaders/compose_tiles.comp, which says what decides a class) appends each tile to its

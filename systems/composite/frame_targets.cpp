@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "systems/composite/particle_depth_grid.h"
+
 namespace pyro {
 
 int layer_extent(int full, float scale) {
@@ -28,6 +30,11 @@ GpuFrame make_gpu_frame(const RenderSettings& settings) {
       t.media_atlas = std::make_unique<gpu::RenderTarget>(3 * lw, lh);
       t.media_combined = std::make_unique<gpu::RenderTarget>(lw, lh);
       t.media_depth = std::make_unique<gpu::RenderTarget>(lw, lh, GL_RGBA16F);
+      const glm::ivec2 cells = particle_depth_cells({s.width, s.height});
+      t.particle_depths = gpu::make_texture(GL_TEXTURE_2D);
+      glTextureStorage2D(t.particle_depths.get(), 1, GL_RG32F, cells.x, cells.y);
+      glTextureParameteri(t.particle_depths.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTextureParameteri(t.particle_depths.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     } else if (s.layer_scale < 1.0f)
       t.layer = std::make_unique<gpu::RenderTarget>(layer_extent(s.width, s.layer_scale),
                                                     layer_extent(s.height, s.layer_scale));
