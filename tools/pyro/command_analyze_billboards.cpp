@@ -57,9 +57,9 @@ void run(const Args& a) {
   const SceneDescription scene = load_scene(a.scene);
   const size_t per_mode = size_t(a.frames) + 2;
   Progress progress("analyze billboard-modes", 2 * per_mode);
-  progress.stage(0, "viewplane");
+  progress.stage(0, std::string(name_of(BillboardAlignment::viewplane)));
   const ModeRun plane = run_mode(scene, a, BillboardAlignment::viewplane, progress, 0);
-  progress.stage(per_mode, "viewpoint");
+  progress.stage(per_mode, std::string(name_of(BillboardAlignment::viewpoint)));
   const ModeRun point = run_mode(scene, a, BillboardAlignment::viewpoint, progress, per_mode);
   progress.finish();
   const nlohmann::json out = {
