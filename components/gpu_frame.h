@@ -23,10 +23,13 @@ struct EyeTargets {
   std::unique_ptr<gpu::RenderTarget> media_atlas;
   // Made from the three each frame at layer size before the final pass: the media composited
   // in order (premultiplied RGBA16F), and (RGBA16F) 1/z of the view depth z each layer texel was
-  // rendered against, the fire's opacity and the heat shimmer's offset, so the full-size pass reads one
-  // layer, not three.
+  // rendered against, the fire's opacity and the heat shimmer's offset, so the full-size pass
+  // reads one layer, not three.
   std::unique_ptr<gpu::RenderTarget> media_combined;
   std::unique_ptr<gpu::RenderTarget> media_depth;
+  // With depth-aware upsampling: 1 at the layer texels on a depth edge the particles can see,
+  // else 0 (R8, layer size; content/shaders/media_edges.frag).
+  std::unique_ptr<gpu::RenderTarget> media_edges;
   // With media: per 8-pixel cell of the view, 1/z at the far and the near end of the view depths
   // z the frame's particles reach there (RG32F, systems/composite/particle_depth_grid.h), written
   // each frame by the composite system for depth-aware upsampling; 0 otherwise.

@@ -50,7 +50,7 @@ layout(binding = 3) uniform sampler2D u_right_layer;
 layout(binding = 4) uniform sampler2D u_left_depth;
 layout(binding = 5) uniform sampler2D u_right_depth;
 layout(binding = 6) uniform sampler2D u_left_media;        // media_prepare.frag: composited
-layout(binding = 7) uniform sampler2D u_left_media_depth;  // +-1/z, fire opacity, shimmer offset
+layout(binding = 7) uniform sampler2D u_left_media_depth;  // 1/z, fire opacity, shimmer offset
 layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
 // Per u_depth_cell-pixel cell of the view, 1/z at the far and the near end of the view depths z
@@ -136,7 +136,7 @@ vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth,
   // Clip depths, clamped in 1/z (a prediction beyond the horizon, u <= 0, clamps to the far end).
   vec2 range = texelFetch(particle_depths, texel / u_depth_cell, 0).rg;  // 1/z: far, near
   float extent = max(range.y - range.x, 1e-30);  // 0 where no particle reaches: r = 0
-  vec4 texel_u = abs(textureGather(media_depth, uv, 0));  // (negative on edges: media_prepare)
+  vec4 texel_u = textureGather(media_depth, uv, 0);
   vec4 r = abs(clamp(texel_u, range.x, range.y) - clamp(predicted, range.x, range.y)) / extent;
   const float rho = 0.5, kappa = 1e-4;
   vec4 b = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));

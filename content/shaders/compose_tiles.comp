@@ -13,8 +13,8 @@
 //          pixels show the scene alone: exact;
 //   fire   any fire opacity above 0: the shimmer's offset (opacity times noise) is not 0.
 //          Without, the scene is read unshifted: exact;
-//   edge   a depth edge in the layer that the particles can see: a texel whose 1/z is negative
-//          (media_prepare.frag marks them, and says what an edge is). Where there is none,
+//   edge   a depth edge in the layer that the particles can see: a texel media_edges.frag
+//          marked (it says what an edge is). Where there is none,
 //          compose.frag's depth-aware test keeps the bilinear sample at every pixel whose
 //          surface the texels saw. Not exact: geometry thinner than a layer texel, which no texel
 //          saw, is not found, and there the bilinear sample is kept where compose.frag's
@@ -41,6 +41,8 @@ layout(binding = 6) uniform sampler2D u_left_media;         // layer size, premu
 layout(binding = 7) uniform sampler2D u_left_media_depth;   // 1/z, fire opacity, offset
 layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
+layout(binding = 13) uniform sampler2D u_left_media_edges;  // media_edges.frag's marks
+layout(binding = 14) uniform sampler2D u_right_media_edges;
 
 layout(std430, binding = 0) buffer TileLists {
   uint counts[8];  // per class c: the length of its list
@@ -54,7 +56,6 @@ uniform ivec2 u_view_size;        // pixels
 uniform vec2 u_texels_per_pixel;  // s, at most 1
 
 float max4(vec4 v) { return max(max(v.x, v.y), max(v.z, v.w)); }
-float min4(vec4 v) { return min(min(v.x, v.y), min(v.z, v.w)); }
 
 // textureGather's 2x2 block with lower-left texel b: uv at the block's centre. b is kept inside so
 // that the last texel is read in a block and no texel outside.
@@ -62,7 +63,7 @@ vec2 block_uv(ivec2 b, ivec2 size) {
   return (vec2(min(b, max(size - 2, ivec2(0)))) + 1.0) / vec2(size);
 }
 
-uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
+uint eye_class(sampler2D media, sampler2D media_depth, sampler2D media_edges, ivec2 tile) {
   ivec2 layer = textureSize(media, 0);
   ivec2 p0 = tile * u_tile_pixels;
   ivec2 p1 = min(p0 + u_tile_pixels, u_view_size) - 1;
@@ -70,7 +71,7 @@ uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
   ivec2 hi = ivec2(floor((vec2(p1) + 0.5) * u_texels_per_pixel - 0.5)) + 1;
   ivec2 t0 = clamp(lo - 1, ivec2(0), layer - 1);
   ivec2 t1 = clamp(hi + 1, ivec2(0), layer - 1);
-  float alpha = 0.0, fire = 0.0, inverse_depth = 1.0;
+  float alpha = 0.0, fire = 0.0, edge_mark = 0.0;
   for (int y = t0.y; y <= t1.y; y += 2) {
     for (int x = t0.x; x <= t1.x; x += 2) {
       vec2 uv = block_uv(ivec2(x, y), layer);
@@ -79,11 +80,11 @@ uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
       fire = max(fire, max4(textureGather(media_depth, uv, 1)));
 #endif
 #if EDGES
-      inverse_depth = min(inverse_depth, min4(textureGather(media_depth, uv, 0)));
+      edge_mark = max(edge_mark, max4(textureGather(media_edges, uv, 0)));
 #endif
     }
   }
-  bool edge = inverse_depth < 0.0;
+  bool edge = edge_mark > 0.0;
   if (alpha <= 0.0) return 0u;
   uint c = 1u;
   if (edge) c |= 2u;
@@ -96,10 +97,10 @@ void main() {
   if (any(greaterThanEqual(tile, u_tiles))) return;
   uint c = 0u;
 #if USE_LEFT
-  c |= eye_class(u_left_media, u_left_media_depth, tile);
+  c |= eye_class(u_left_media, u_left_media_depth, u_left_media_edges, tile);
 #endif
 #if USE_RIGHT
-  c |= eye_class(u_right_media, u_right_media_depth, tile);
+  c |= eye_class(u_right_media, u_right_media_depth, u_right_media_edges, tile);
 #endif
   uint slot = atomicAdd(counts[c], 1u);
   tiles[int(c) * u_tile_count + int(slot)] = uint(tile.x) | uint(tile.y) << 16;

@@ -40,7 +40,7 @@ class ComposeTiles {
 
   struct Classify {
     bool use_left = true, use_right = false;  // the views this draw reads (bound by the caller)
-    bool edges = true;  // depth-aware upsampling: find the edges media_prepare.frag marked
+    bool edges = true;  // depth-aware upsampling: find the edges media_edges.frag marked
     bool fire = true;   // heat shimmer: find fire
   };
   // Fills list set `slot` (0 or 1: the two views of a side-by-side frame) for `grid`, reading the

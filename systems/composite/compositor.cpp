@@ -13,8 +13,8 @@
 namespace pyro {
 
 Compositor::Compositor()
-    : media_prepare_{gpu::load_program("fullscreen.vert", "media_prepare.frag", {"EDGES 0"}),
-                     gpu::load_program("fullscreen.vert", "media_prepare.frag", {"EDGES 1"})},
+    : media_prepare_(gpu::load_program("fullscreen.vert", "media_prepare.frag")),
+      media_edges_(gpu::load_program("fullscreen.vert", "media_edges.frag")),
       prepare_fbo_(gpu::make_framebuffer()),
       empty_(gpu::make_vertex_array()) {}
 
@@ -82,6 +82,8 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glBindTextureUnit(10, r.media_depth->color_texture());
   glBindTextureUnit(11, l.particle_depths.get());
   glBindTextureUnit(12, r.particle_depths.get());
+  glBindTextureUnit(13, l.media_edges->color_texture());
+  glBindTextureUnit(14, r.media_edges->color_texture());
 }
 
 void Compositor::prepare_media(const EyeTargets& eye, bool edges) {
@@ -96,7 +98,7 @@ void Compositor::prepare_media(const EyeTargets& eye, bool edges) {
   glViewport(0, 0, combined.width(), combined.height());
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  const gpu::Program& program = media_prepare_[edges ? 1 : 0];
+  const gpu::Program& program = media_prepare_;
   glUseProgram(program.get());
   glBindVertexArray(empty_.get());
   glBindTextureUnit(0, eye.media_atlas->color_texture());
@@ -111,11 +113,22 @@ void Compositor::prepare_media(const EyeTargets& eye, bool edges) {
   glBindTextureUnit(4, shimmer_noise_.get());
   glUniform1f(loc("u_shimmer"), media_.shimmer);
   glUniform1f(loc("u_shimmer_tiling"), 3.0f);  // noise periods across the view
-  if (edges) {
-    glBindTextureUnit(5, eye.particle_depths.get());
-    glUniform1i(loc("u_depth_cell"), ParticleDepthGrid::cell_pixels);
-    glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
-  }
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (edges) mark_edges(eye);
+}
+
+void Compositor::mark_edges(const EyeTargets& eye) {
+  const gpu::RenderTarget& edges = *eye.media_edges;
+  glBindFramebuffer(GL_FRAMEBUFFER, edges.framebuffer());
+  glViewport(0, 0, edges.width(), edges.height());
+  glUseProgram(media_edges_.get());
+  glBindTextureUnit(0, eye.media_depth->color_texture());
+  glBindTextureUnit(1, eye.particle_depths.get());
+  auto loc = [&](const char* name) { return gpu::uniform_location(media_edges_, name); };
+  glUniform2f(loc("u_scale"), static_cast<float>(eye.scene->width()) / edges.width(),
+              static_cast<float>(eye.scene->height()) / edges.height());
+  glUniform1i(loc("u_depth_cell"), ParticleDepthGrid::cell_pixels);
+  glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 

@@ -56,8 +56,10 @@ class Compositor {
   // Binds the views' textures (the same units for every variant of compose.frag).
   void bind_views(const EyeTargets& left, const EyeTargets& right);
   // Explosion media: the three layers composited, and their depths, at layer size; `edges`: the
-  // texels on depth edges marked (media_prepare.frag).
+  // texels on depth edges marked (mark_edges).
   void prepare_media(const EyeTargets& eye, bool edges);
+  // EyeTargets::media_edges from media_depth and the particle depths (media_edges.frag).
+  void mark_edges(const EyeTargets& eye);
   // One full-screen draw with the compose.frag variant for these matrices (a zero matrix
   // compiles that view out) and the bound views' kind (plain, layers, media).
   // With media, the draw is split into tiles (list set `slot`: one per view of a frame).
@@ -75,7 +77,7 @@ class Compositor {
   void upload_shimmer_noise(float time);
 
   std::array<gpu::Program, 512> compose_;  // compose.frag variants, compiled on first use
-  std::array<gpu::Program, 2> media_prepare_;  // without and with EDGES
+  gpu::Program media_prepare_, media_edges_;
   gpu::Framebuffer prepare_fbo_;  // two outputs: media_combined and media_depth
   gpu::VertexArray empty_;
   MediaComposition media_;

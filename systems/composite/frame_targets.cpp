@@ -30,6 +30,7 @@ GpuFrame make_gpu_frame(const RenderSettings& settings) {
       t.media_atlas = std::make_unique<gpu::RenderTarget>(3 * lw, lh);
       t.media_combined = std::make_unique<gpu::RenderTarget>(lw, lh);
       t.media_depth = std::make_unique<gpu::RenderTarget>(lw, lh, GL_RGBA16F);
+      t.media_edges = std::make_unique<gpu::RenderTarget>(lw, lh, GL_R8);
       const glm::ivec2 cells = particle_depth_cells({s.width, s.height});
       t.particle_depths = gpu::make_texture(GL_TEXTURE_2D);
       glTextureStorage2D(t.particle_depths.get(), 1, GL_RG32F, cells.x, cells.y);
