@@ -31,6 +31,7 @@ std::vector<ecs::SystemDesc> standard_systems(bool readback) {
 
 ecs::Schedule standard_schedule(const RuntimeOptions& options) {
   ecs::Schedule schedule;
+  schedule.set_threads(options.threads);
   for (ecs::SystemDesc& d : standard_systems(options.readback)) {
     if (options.profile && d.main_thread) {
       // Systems that issue GL commands: their GPU time is a pass of its own on the GPU track.

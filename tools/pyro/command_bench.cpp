@@ -32,6 +32,7 @@ void add_bench_commands(CLI::App& app) {
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks, printed as ratios to a baseline run alongside");
   bench->require_subcommand(1);
   add_bench_vdb_command(*bench);
+  add_bench_schedule_command(*bench);
 
   struct EcsArgs { size_t entities = 1000000; int repeats = 15; bool json = false; };
   auto ecs = std::make_shared<EcsArgs>();
