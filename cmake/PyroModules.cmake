@@ -3,9 +3,10 @@
 #
 #   pyro_third_party(<name> [TARGETS <imported targets>...] [INCLUDE_DIRS <dirs>...]
 #                    [HEADERS <include prefixes>...] [FIND <code for the package config>])
-#     A library from outside the project, named by <name> in the DEPENDS lists below. HEADERS are
-#     the include prefixes that reveal its use (tools/check_includes.py checks them against the
-#     declarations); FIND is what PyrocumulusConfig.cmake runs to find it again for a consumer.
+#     A library from outside the project, named by <name> in the PUBLIC and PRIVATE lists of
+#     pyro_add_module. HEADERS are the include prefixes that reveal its use
+#     (tools/check_includes.py checks them against the declarations); FIND is what
+#     PyrocumulusConfig.cmake runs to find it again for a consumer.
 #
 #   pyro_add_module(<name> FOLDER <folder> [FILES <file names>...] [PUBLIC <deps>...]
 #                   [PRIVATE <deps>...] [EXPORT_SET <set>] [BUILD_TREE_ONLY])
@@ -178,9 +179,9 @@ function(_pyro_write_module_table json)
     list(APPEND entries "    \"${name}\": ${list}")
   endforeach()
   list(JOIN entries ",\n" party_entries)
-  file(CONFIGURE OUTPUT "${json}" CONTENT
-       "{\n  \"modules\": {\n${module_entries}\n  },\n  \"third_party\": {\n${party_entries}\n  }\n}\n"
-       @ONLY)
+  set(text "{\n  \"modules\": {\n${module_entries}\n  },\n")
+  string(APPEND text "  \"third_party\": {\n${party_entries}\n  }\n}\n")
+  file(CONFIGURE OUTPUT "${json}" CONTENT "${text}" @ONLY)
 endfunction()
 
 function(_pyro_check_coverage)

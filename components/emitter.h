@@ -3,6 +3,7 @@
 // second and in bursts, and the distributions of their initial state. The emitter system
 // (systems/emitter/emitter_system.h) spawns into the entity's ParticleSet; the entity's
 // ParticleDynamics says how they then move.
+#include "engine/core/enum_names.h"
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -17,6 +18,11 @@
 namespace pyro {
 
 enum class EmitterShape { point, sphere, box, disc };
+inline constexpr EnumName<EmitterShape> emitter_shape_names[] = {{EmitterShape::point, "point"},
+                                                              {EmitterShape::sphere, "sphere"},
+                                                              {EmitterShape::box, "box"},
+                                                              {EmitterShape::disc, "disc"}};
+constexpr const auto& enum_names(EmitterShape) { return emitter_shape_names; }
 
 struct EmitterBurst {
   float time = 0.0f;   // seconds of scene time (prewarm included: t = 0 is the scene's start)

@@ -4,6 +4,7 @@
 // rotated about the fire's vertical axis to face the viewer. Plain data: the scene file's keys
 // (docs/scene_format.md, `fires[]`) map onto these fields one to one, and the runtime expands the
 // groups into `billboards` (systems/flipbook_fire/flipbook_layout.h).
+#include "engine/core/enum_names.h"
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ enum class FlipbookBlend {
   // glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA): result = src a + dst (1 - a).
   linear_alpha,
 };
+inline constexpr EnumName<FlipbookBlend> flipbook_blend_names[] = {
+    {FlipbookBlend::one_minus_destination, "one-minus-destination"},
+    {FlipbookBlend::linear_alpha, "linear-alpha"}};
+constexpr const auto& enum_names(FlipbookBlend) { return flipbook_blend_names; }
 
 // The thesis' preparation of video frames (section 4.2), applied when the frames are read:
 // crop (x0, y0, x1, y1 as fractions of the frame, y down from the top), then a black line along

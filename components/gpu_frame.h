@@ -27,6 +27,10 @@ struct EyeTargets {
   // layer, not three.
   std::unique_ptr<gpu::RenderTarget> media_combined;
   std::unique_ptr<gpu::RenderTarget> media_depth;
+  // With media: per 8-pixel cell of the view, the view depths (near, far) the frame's particles
+  // reach there (RG32F, systems/composite/particle_depth_grid.h), written each frame by the
+  // composite system for depth-aware upsampling; 0 otherwise.
+  gpu::Texture particle_depths;
 };
 
 struct GpuFrame {

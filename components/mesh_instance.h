@@ -1,11 +1,16 @@
 #pragma once
 // An opaque procedural mesh placed in the scene, drawn before the particles with depth.
+#include "engine/core/enum_names.h"
 #include <glm/vec3.hpp>
 
 namespace pyro {
 
 // The procedural meshes (engine/mesh/mesh_data.h).
 enum class MeshKind { ground_plane, water_tower };
+// The scene file's mesh "type" names.
+inline constexpr EnumName<MeshKind> mesh_kind_names[] = {{MeshKind::ground_plane, "ground_plane"},
+                                                      {MeshKind::water_tower, "water_tower"}};
+constexpr const auto& enum_names(MeshKind) { return mesh_kind_names; }
 
 struct MeshInstance {
   MeshKind kind = MeshKind::ground_plane;

@@ -1,5 +1,6 @@
 #pragma once
 // Resource: what the render systems need from the scene that is not an entity.
+#include "engine/core/enum_names.h"
 #include <glm/vec3.hpp>
 
 #include "components/render_modes.h"
@@ -16,8 +17,23 @@ enum class StereoMode {
   anaglyph_color,        // red-cyan, colour anaglyph
   anaglyph_half_color,   // red-cyan, half-colour anaglyph
 };
+// The names of the scene file, the command line (--stereo), the viewer and the reports.
+inline constexpr EnumName<StereoMode> stereo_mode_names[] = {
+    {StereoMode::mono, "mono"},
+    {StereoMode::left_right, "left-right"},
+    {StereoMode::side_by_side, "side-by-side"},
+    {StereoMode::side_by_side_crossed, "side-by-side-crossed"},
+    {StereoMode::anaglyph, "anaglyph"},
+    {StereoMode::anaglyph_color, "anaglyph-color"},
+    {StereoMode::anaglyph_half_color, "anaglyph-half-color"}};
+constexpr const auto& enum_names(StereoMode) { return stereo_mode_names; }
 
 inline bool is_stereo(StereoMode m) { return m != StereoMode::mono; }
+// Both views side by side in one output (or split into two files from it): twice as wide.
+inline bool two_views_wide(StereoMode m) {
+  return m == StereoMode::side_by_side || m == StereoMode::side_by_side_crossed ||
+         m == StereoMode::left_right;
+}
 
 struct RenderSettings {
   int width = 800;

@@ -32,7 +32,8 @@ class TreeTest(unittest.TestCase):
         self.write("engine/core/log.h", "#pragma once\n#include <string>\n")
         self.write("engine/core/log.cpp", '#include "engine/core/log.h"\n')
         self.write("engine/gpu/gl.h", "#pragma once\n#include <epoxy/gl.h>\n")
-        self.write("engine/gpu/gl.cpp", '#include "engine/gpu/gl.h"\n#include "engine/core/log.h"\n')
+        self.write("engine/gpu/gl.cpp",
+                   '#include "engine/gpu/gl.h"\n#include "engine/core/log.h"\n')
         self.write("components/pose.h", '#pragma once\n#include <glm/vec3.hpp>\n'
                    '#include "engine/core/log.h"\n')
         self.write("systems/a/a.h", '#pragma once\n#include "components/pose.h"\n')
@@ -123,7 +124,8 @@ class TreeTest(unittest.TestCase):
 
     def test_files_claimed_by_a_module_leave_the_folder_module(self):
         self.write("engine/gpu/window.h", "#pragma once\n")
-        self.write("engine/gpu/window.cpp", '#include "engine/gpu/window.h"\n#include <GLFW/glfw3.h>\n')
+        self.write("engine/gpu/window.cpp",
+                   '#include "engine/gpu/window.h"\n#include <GLFW/glfw3.h>\n')
         self.table["modules"]["engine_window"] = module(
             "engine/gpu", private=["glfw"], files=["engine/gpu/window.h", "engine/gpu/window.cpp"])
         status, lines = self.check()

@@ -2,8 +2,8 @@
 // The final pass. Per eye: the scene (opaque geometry, and particles when drawn at full
 // resolution) with the reduced-resolution particle layer, if any, upsampled bilinearly and
 // composited over it (premultiplied "over"); or, for explosions, the media layers (Umenhoffer et
-// al. 2006, section 4) upsampled depth-aware and composited over the scene, whose lookup the
-// fire distorts (heat shimmer). Then the output is L * left + R * right, clamped, on linear
+// al. 2006, section 4) upsampled (depth-aware or bilinear) and composited over the scene, whose
+// lookup the fire distorts (heat shimmer). Then the output is L * left + R * right, clamped, on linear
 // values (engine/math/anaglyph.h gives the matrices: identity/zero for a single view, Dubois or
 // colour/half-colour for anaglyphs). The target is sRGB: with SRGB_ENCODE the shader encodes
 // (GL_FRAMEBUFFER_SRGB off: cheaper on llvmpipe), else GL does (or the target is linear).
@@ -12,8 +12,9 @@
 // runs both sides, fetches included, so what is off is compiled out):
 //   USE_LEFT, USE_RIGHT  which views this draw reads (a side-by-side half reads one);
 //   LAYERS               a reduced-resolution particle layer per view;
-//   MEDIA                explosion media instead (DEPTH_AWARE: nearest-depth upsampling at
-//                        depth edges, else bilinear; SHIMMER: heat shimmer).
+//   MEDIA                explosion media instead (FULL_SIZE: layers at the view's size, read
+//                        texel for texel; else DEPTH_AWARE: upsampled_media below, or bilinear;
+//                        SHIMMER: heat shimmer).
 #ifndef USE_LEFT
 #define USE_LEFT 1
 #endif
@@ -32,6 +33,9 @@
 #ifndef SHIMMER
 #define SHIMMER 0
 #endif
+#ifndef FULL_SIZE
+#define FULL_SIZE 0
+#endif
 #ifndef SRGB_ENCODE
 #define SRGB_ENCODE 0
 #endif
@@ -49,10 +53,16 @@ layout(binding = 6) uniform sampler2D u_left_media;        // media_prepare.frag
 layout(binding = 7) uniform sampler2D u_left_media_depth;  // view depth, fire opacity, shimmer offset
 layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
+// Per u_depth_cell-pixel cell of the view, the view depths (near, far) its particles reach
+// (systems/composite/particle_depth_grid.h): depths that clamp alike to it give a texel the same
+// media.
+layout(binding = 11) uniform sampler2D u_left_particle_depths;
+layout(binding = 12) uniform sampler2D u_right_particle_depths;
+uniform int u_depth_cell;
 // The shimmer's noise at this frame's time: a slice of engine/math/detail_noise.h's periodic
 // volume taken on the CPU (two channels: the x and y offsets), repeating; media_prepare.frag
 // multiplies it by the fire's opacity and u_shimmer at layer size into media_depth.ba.
-uniform float u_depth_tolerance;  // relative view-depth spread below which bilinear is kept
+uniform float u_depth_tolerance;  // clip depths closer (share of their extent): bilinear
 uniform float u_near;
 uniform float u_far;
 uniform mat3 u_left_matrix;
@@ -63,48 +73,107 @@ uniform vec2 u_view_size;
 layout(location = 0) out vec4 o_color;
 
 #if MEDIA
-float view_depth(float window_depth) {
-  float z_ndc = window_depth * 2.0 - 1.0;
-  return 2.0 * u_near * u_far / (u_far + u_near - z_ndc * (u_far - u_near));
+#if DEPTH_AWARE
+// 1/z of a window depth, affine in it (the inverse of media_prepare.frag's view depth).
+float inverse_depth(float window_depth) {
+  return (u_far - window_depth * (u_far - u_near)) / (u_near * u_far);
 }
 
-// Nearest-depth upsampling (no halos at depth edges): the four layer texels around this pixel
-// were rendered against the view depths in media_depth. Where this pixel's depth agrees (within
-// u_depth_tolerance of it) with those four depths interpolated bilinearly to this pixel, the
-// pixel lies on the surface the texels saw — a slope included, whose texels' depths differ —
-// and the layer is sampled bilinearly by the texture unit; otherwise (a depth edge runs between
-// the texels) the texel whose depth is nearest is taken. textureGather returns the four texels
-// bilinear filtering would use, as (i0, j1), (i1, j1), (i1, j0), (i0, j0).
-vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth, ivec2 texel, vec2 uv) {
+float max4(vec4 v) { return max(max(v.x, v.y), max(v.z, v.w)); }
+
+// The slope of u = 1/z at this pixel along `step`: the smaller of the two one-sided differences
+// (the other may cross a silhouette), or the one inside the view at its border; 0 at an extremum
+// (a gap between two bars, or a bar, one pixel wide: both differences cross an edge).
+float slope(sampler2D depth, ivec2 texel, ivec2 step, float u, int at, int last) {
+  float before = inverse_depth(texelFetch(depth, max(texel - step, ivec2(0)), 0).r);
+  float after = inverse_depth(texelFetch(depth, min(texel + step, ivec2(u_view_size) - 1), 0).r);
+  float back = at > 0 ? u - before : after - u;
+  float ahead = at < last ? after - u : u - before;
+  return back * ahead <= 0.0 ? 0.0 : abs(back) < abs(ahead) ? back : ahead;
+}
+
+// Depth-aware upsampling: joint bilateral upsampling (Kopf et al. 2007, eq. 2) with the bilinear
+// tent as the spatial filter and the layer's clip depths as the guide, gated so that it is the
+// texture unit's bilinear sample wherever the four texels it would use saw what this pixel sees.
+//
+// The four texels (textureGather's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0)) hold particles
+// clipped against the full-size depth at their representative pixels floor((t + 1/2) S) (S
+// pixels per texel; media_prepare.frag). On a plane u = 1/z is affine in screen position, so
+// this pixel's u and slope (one-sided differences of the full-size depth, slope()) predict each
+// texel's u exactly if it lies on the same plane. Prediction and texel are compared as clip
+// depths: clamped to the depths the particles around this pixel reach (u_left_particle_depths;
+// depths that clamp alike give a texel the same media, so a horizon behind the explosion, or a
+// tower's bars with the smoke in front of them, is no edge), their difference r in units of
+// that range's extent (the share of the particles' depths between them).
+//   Every texel within u_depth_tolerance: bilinear. This covers a slope however steep, a curved
+//   surface, and any depth edge the particles do not reach into.
+//   Else the bilinear weights are multiplied by exp(-(r / rho)^4) + kappa and renormalised: the
+//   texels that saw this pixel's surface keep their shares, those whose particles were clipped
+//   against another surface, across an edge, drop out (no halo, and unlike the nearest-depth
+//   upsampling of Cantlay 2007, GPU Gems 3 ch. 23, no blocks of a single texel). rho = 0.5: a
+//   texel whose clip depth differs by the particles' whole extent keeps e^-16 of its share, one
+//   differing by a quarter of it 94%: such a difference changes the media less than leaving the
+//   texel out would (measured on the explosion). kappa = 1e-4: where no texel saw the surface
+//   (a bar, or a gap between bars, thinner than a texel), the texels keep their bilinear shares,
+//   the best guess left.
+vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth,
+                     sampler2D particle_depths, ivec2 texel, vec2 uv) {
   vec4 bilinear = textureLod(media, uv, 0.0);
-#if DEPTH_AWARE
-  vec4 g = textureGather(media_depth, uv, 0);
-  float z = view_depth(texelFetch(depth, texel, 0).r);
-  vec2 size = vec2(textureSize(media, 0));
-  vec2 at = uv * size - 0.5;
-  vec2 f = fract(at);
-  float interpolated = mix(mix(g.w, g.z, f.x), mix(g.x, g.y, f.x), f.y);
-  vec4 diff = abs(g - vec4(z));
-  ivec2 i0 = ivec2(floor(at));
-  ivec2 pick = diff.w <= diff.z ? i0 : i0 + ivec2(1, 0);
-  float best = min(diff.w, diff.z);
-  if (diff.x < best) { pick = i0 + ivec2(0, 1); best = diff.x; }
-  if (diff.y < best) pick = i0 + ivec2(1, 1);
-  vec4 nearest = texelFetch(media, clamp(pick, ivec2(0), ivec2(size) - 1), 0);
-  bool agree = abs(interpolated - z) <= u_depth_tolerance * z;
-  return agree ? bilinear : nearest;
+  ivec2 size = textureSize(media, 0);
+  vec2 s = u_view_size / vec2(size);
+  vec2 at = uv * vec2(size) - 0.5;
+  vec2 i0 = floor(at);
+  vec2 f = at - i0;
+  float u = inverse_depth(texelFetch(depth, texel, 0).r);
+  ivec2 last = ivec2(u_view_size) - 1;
+  vec2 g = vec2(slope(depth, texel, ivec2(1, 0), u, texel.x, last.x),
+                slope(depth, texel, ivec2(0, 1), u, texel.y, last.y));
+  // The texels' representative pixel centres from this one, their indices clamped as the
+  // sampler clamps them.
+  vec2 lo = clamp(i0, vec2(0.0), vec2(size - 1)), hi = clamp(i0 + 1.0, vec2(0.0), vec2(size - 1));
+  vec2 p0 = floor((lo + 0.5) * s) + 0.5 - (vec2(texel) + 0.5);
+  vec2 p1 = floor((hi + 0.5) * s) + 0.5 - (vec2(texel) + 0.5);
+  vec4 predicted = u + g.x * vec4(p0.x, p1.x, p1.x, p0.x) + g.y * vec4(p1.y, p1.y, p0.y, p0.y);
+  // Clip depths, clamped in u (a prediction beyond the horizon, u <= 0, clamps to the far end).
+  vec2 near_far = texelFetch(particle_depths, texel / u_depth_cell, 0).rg;
+  vec2 range = 1.0 / near_far.yx;
+  float extent = max(near_far.y - near_far.x, 1e-30);  // 0 where no particle reaches: r = 0
+  vec4 texel_u = 1.0 / textureGather(media_depth, uv, 0);
+  vec4 r = abs(1.0 / clamp(texel_u, range.x, range.y) - 1.0 / clamp(predicted, range.x, range.y)) /
+           extent;
+  const float rho = 0.5, kappa = 1e-4;
+  vec4 b = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
+  vec4 q = r * r / (rho * rho);
+  vec4 w = b * (exp(-q * q) + kappa);
+  w /= dot(w, vec4(1.0));
+  vec4 weighted = vec4(dot(w, textureGather(media, uv, 0)), dot(w, textureGather(media, uv, 1)),
+                       dot(w, textureGather(media, uv, 2)), dot(w, textureGather(media, uv, 3)));
+  return max4(r) <= u_depth_tolerance ? bilinear : weighted;
+}
+#endif
+
+vec4 layer_media(sampler2D depth, sampler2D media, sampler2D media_depth,
+                 sampler2D particle_depths, ivec2 texel, vec2 uv) {
+#if FULL_SIZE
+  return texelFetch(media, texel, 0);  // a texel per pixel: nothing to upsample
+#elif DEPTH_AWARE
+  return upsampled_media(depth, media, media_depth, particle_depths, texel, uv);
 #else
-  return bilinear;
+  return textureLod(media, uv, 0.0);
 #endif
 }
 
 vec3 view_color(sampler2D scene, sampler2D depth, sampler2D media, sampler2D media_depth,
-                ivec2 texel, vec2 uv) {
-  vec4 m = upsampled_media(depth, media, media_depth, texel, uv);
+                sampler2D particle_depths, ivec2 texel, vec2 uv) {
+  vec4 m = layer_media(depth, media, media_depth, particle_depths, texel, uv);
 #if SHIMMER
   // Heat shimmer: the scene seen through hot gas moves along a noise field, by an amount that
   // grows with the fire's opacity here.
+#if FULL_SIZE
+  vec2 offset = texelFetch(media_depth, texel, 0).ba;
+#else
   vec2 offset = textureLod(media_depth, uv, 0.0).ba;
+#endif
   vec3 c = textureLod(scene, uv + offset, 0.0).rgb;
 #else
   vec3 c = texelFetch(scene, texel, 0).rgb;
@@ -128,10 +197,12 @@ void main() {
   vec3 c = vec3(0.0);
 #if MEDIA
 #if USE_LEFT
-  c += u_left_matrix * view_color(u_left, u_left_depth, u_left_media, u_left_media_depth, texel, uv);
+  c += u_left_matrix * view_color(u_left, u_left_depth, u_left_media, u_left_media_depth,
+                                  u_left_particle_depths, texel, uv);
 #endif
 #if USE_RIGHT
-  c += u_right_matrix * view_color(u_right, u_right_depth, u_right_media, u_right_media_depth, texel, uv);
+  c += u_right_matrix * view_color(u_right, u_right_depth, u_right_media, u_right_media_depth,
+                                   u_right_particle_depths, texel, uv);
 #endif
 #else
 #if USE_LEFT

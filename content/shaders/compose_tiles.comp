@@ -13,13 +13,17 @@
 //          pixels show the scene alone: exact;
 //   fire   any fire opacity above 0: the shimmer's offset (opacity times noise) is not 0.
 //          Without, the scene is read unshifted: exact;
-//   edge   a depth edge in the layer: at some texel the second difference of the layer's view
-//          depths along x or y exceeds the tolerance times the depth. A silhouette between
-//          texels is a jump there; a slope (the ground receding) is not, where the first
-//          differences (a spread test, max > (1 + tol) min) would flag most of the ground. Not
-//          exact: geometry thinner than a layer texel, which no texel saw, is not found, and
-//          there the bilinear sample is kept where compose.frag's per-pixel test might pick the
-//          nearest-depth texel (both are the background's media).
+//   edge   a depth edge in the layer that the particles can see: at some texel the second
+//          difference of u = 1/z (the layer's view depths) along x or y exceeds the tolerance
+//          times u, and the three texels' clip depths (clamped to the depths the particles reach
+//          there, systems/composite/particle_depth_grid.h) differ by more than the tolerance
+//          times that range's extent, compose.frag's test. u is affine on a plane, so a slope (the
+//          ground receding) is no edge however steep; a silhouette between texels is a jump; a
+//          horizon behind the particles clamps alike. Where neither holds, compose.frag's
+//          depth-aware test keeps the bilinear sample at every pixel whose surface the texels
+//          saw. Not exact: geometry thinner than a layer texel, which no texel saw, is not found,
+//          and there the bilinear sample is kept where compose.frag's per-pixel test might
+//          reweight (all four texels carry the background's media).
 // The class is media | edge << 1 | fire << 2, or 0 (the scene alone) without media; each tile is
 // appended to its class's list, and counts[c] is the list's length.
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -42,6 +46,8 @@ layout(binding = 6) uniform sampler2D u_left_media;         // layer size, premu
 layout(binding = 7) uniform sampler2D u_left_media_depth;   // view depth, fire opacity, offset
 layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
+layout(binding = 11) uniform sampler2D u_left_particle_depths;  // compose.frag says what they are
+layout(binding = 12) uniform sampler2D u_right_particle_depths;
 
 layout(std430, binding = 0) buffer TileLists {
   uint counts[8];  // per class c: the length of its list
@@ -54,6 +60,7 @@ uniform int u_tile_pixels;        // P
 uniform ivec2 u_view_size;        // pixels
 uniform vec2 u_texels_per_pixel;  // s, at most 1
 uniform float u_depth_tolerance;
+uniform int u_depth_cell;         // their cells' size in pixels
 
 float max4(vec4 v) { return max(max(v.x, v.y), max(v.z, v.w)); }
 
@@ -63,7 +70,7 @@ vec2 block_uv(ivec2 b, ivec2 size) {
   return (vec2(min(b, max(size - 2, ivec2(0)))) + 1.0) / vec2(size);
 }
 
-uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
+uint eye_class(sampler2D media, sampler2D media_depth, sampler2D particle_depths, ivec2 tile) {
   ivec2 layer = textureSize(media, 0);
   ivec2 p0 = tile * u_tile_pixels;
   ivec2 p1 = min(p0 + u_tile_pixels, u_view_size) - 1;
@@ -82,9 +89,10 @@ uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
     }
   }
 #if EDGES
-  // Depth edges: second differences of the layer's view depths along x and y, row by row (three
-  // rows kept), at every footprint texel.
+  // Depth edges: second differences of the layer's 1/z along x and y, row by row (three rows
+  // kept), at every footprint texel.
   bool edge = false;
+  vec2 pixels_per_texel = 1.0 / u_texels_per_pixel;
   const int span = 40;  // >= footprint width + 2: at most P s + 6 <= 38 (P = 32, s <= 1: grid_for)
   float rows[3][span];
   int width = t1.x - t0.x + 3;
@@ -92,15 +100,28 @@ uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
     int row = (y - t0.y + 1) % 3;
     for (int i = 0; i < width; ++i) {
       ivec2 at = clamp(ivec2(t0.x - 1 + i, y), ivec2(0), layer - 1);
-      rows[row][i] = texelFetch(media_depth, at, 0).r;
+      rows[row][i] = 1.0 / texelFetch(media_depth, at, 0).r;
     }
     if (y < t0.y + 1) continue;
     int below = (row + 1) % 3, centre = (row + 2) % 3;  // rows y - 2 and y - 1
     for (int i = 1; i < width - 1; ++i) {
-      float d = rows[centre][i];
-      float dx = abs(rows[centre][i - 1] + rows[centre][i + 1] - 2.0 * d);
-      float dy = abs(rows[below][i] + rows[row][i] - 2.0 * d);
-      edge = edge || max(dx, dy) > u_depth_tolerance * d;
+      float u = rows[centre][i];
+      // The depths the particles reach around this texel (a cell's range covers its neighbours).
+      ivec2 t = ivec2(t0.x - 1 + i, y - 1);
+      vec2 centre_pixel = (vec2(clamp(t, ivec2(0), layer - 1)) + 0.5) * pixels_per_texel;
+      ivec2 cell = ivec2(centre_pixel) / u_depth_cell;
+      vec2 near_far = texelFetch(particle_depths, cell, 0).rg;
+      vec2 range = 1.0 / near_far.yx;
+      vec2 a = vec2(rows[centre][i - 1], rows[below][i]);
+      vec2 b = vec2(rows[centre][i + 1], rows[row][i]);
+      vec2 second = abs(a + b - 2.0 * u);
+      // Clip depths: can the particles tell the three texels apart?
+      vec2 ca = 1.0 / clamp(a, range.x, range.y), cb = 1.0 / clamp(b, range.x, range.y);
+      float cu = 1.0 / clamp(u, range.x, range.y);
+      vec2 apart = max(abs(ca - cu), abs(cb - cu));
+      float seen = u_depth_tolerance * (near_far.y - near_far.x);
+      edge = edge || (second.x > u_depth_tolerance * u && apart.x > seen) ||
+             (second.y > u_depth_tolerance * u && apart.y > seen);
     }
   }
 #else
@@ -118,10 +139,10 @@ void main() {
   if (any(greaterThanEqual(tile, u_tiles))) return;
   uint c = 0u;
 #if USE_LEFT
-  c |= eye_class(u_left_media, u_left_media_depth, tile);
+  c |= eye_class(u_left_media, u_left_media_depth, u_left_particle_depths, tile);
 #endif
 #if USE_RIGHT
-  c |= eye_class(u_right_media, u_right_media_depth, tile);
+  c |= eye_class(u_right_media, u_right_media_depth, u_right_particle_depths, tile);
 #endif
   uint slot = atomicAdd(counts[c], 1u);
   tiles[int(c) * u_tile_count + int(slot)] = uint(tile.x) | uint(tile.y) << 16;

@@ -1,5 +1,5 @@
 #pragma once
-// A profiling session's spans and their Chrome trace-event form (the JSON that chrome://tracing
+// A profiling run's spans and their Chrome trace-event form (the JSON that chrome://tracing
 // and Perfetto open): one "complete" event ("ph": "X") per span, times in microseconds, one
 // thread (track, "tid") per timeline: tid 1 the CPU thread that runs the frame (the frame spans
 // and the systems it ran), tid 2 the GPU passes, tid 2 + k the k-th worker thread of the
@@ -18,7 +18,7 @@ struct TraceSpan {
   std::string name;      // system or pass, e.g. "billboard_render"
   std::string category;  // "frame", the system's phase, or "gpu"
   TraceTrack track = TraceTrack::cpu;
-  double start_us = 0.0;     // on the session's timeline (0 = when profiling began)
+  double start_us = 0.0;     // on the run's timeline (0 = when profiling began)
   double duration_us = 0.0;  // >= 0
   uint64_t frame = 0;
   // Fragments that passed the depth test in this pass (GL_SAMPLES_PASSED); < 0 when not counted.

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "engine/core/user_error.h"
+#include "engine/io/durable_file.h"
 
 namespace pyro {
 
@@ -18,35 +19,32 @@ constexpr size_t kHeader = 28;
 static_assert(std::endian::native == std::endian::little, "particle files are little-endian");
 }  // namespace
 
+void check_particles(const std::string& path, const std::vector<GaussianParticle>& particles) {
+  for (size_t i = 0; i < particles.size(); ++i) {
+    const GaussianParticle& p = particles[i];
+    const float v[8] = {p.x, p.y, p.z, p.radius, p.density, p.r, p.g, p.b};
+    bool ok = p.radius > 0.0f && p.density >= 0.0f && p.density <= 1.0f;
+    for (float x : v) ok = ok && std::isfinite(x);
+    if (!ok)
+      throw UserError(path, "particle " + std::to_string(i),
+                      "finite values, radius > 0 and density in [0, 1]");
+  }
+}
+
 void write_particle_file(const std::string& path, const ParticleFile& file) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw UserError(path, "", "cannot write the particle file: " + std::string(std::strerror(errno)));
-    const uint32_t version = kVersion, record = sizeof(GaussianParticle);
-    const uint64_t count = file.particles.size();
-    const uint32_t meta = static_cast<uint32_t>(file.metadata_json.size());
-    out.write(kMagic, 8);
-    out.write(reinterpret_cast<const char*>(&version), 4);
-    out.write(reinterpret_cast<const char*>(&record), 4);
-    out.write(reinterpret_cast<const char*>(&count), 8);
-    out.write(reinterpret_cast<const char*>(&meta), 4);
-    out.write(file.metadata_json.data(), meta);
-    out.write(reinterpret_cast<const char*>(file.particles.data()),
-              static_cast<std::streamsize>(count * sizeof(GaussianParticle)));
-    out.close();
-    if (!out) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw UserError(path, "", "cannot write the particle file (disk full?)");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw UserError(path, "", "cannot rename the temporary particle file into place");
-  }
+  check_particles(path, file.particles);  // never a file that read_particle_file refuses
+  DurableFile out(path);
+  const uint32_t version = kVersion, record = sizeof(GaussianParticle);
+  const uint64_t count = file.particles.size();
+  const uint32_t meta = static_cast<uint32_t>(file.metadata_json.size());
+  out.write(kMagic, 8);
+  out.write(&version, 4);
+  out.write(&record, 4);
+  out.write(&count, 8);
+  out.write(&meta, 4);
+  out.write(file.metadata_json);
+  out.write(file.particles.data(), count * sizeof(GaussianParticle));
+  out.commit();
 }
 
 ParticleFile read_particle_file(const std::string& path) {
@@ -80,15 +78,7 @@ ParticleFile read_particle_file(const std::string& path) {
   in.read(f.metadata_json.data(), meta);
   in.read(reinterpret_cast<char*>(f.particles.data()), static_cast<std::streamsize>(count * 32));
   if (!in) throw UserError(path, "", "cannot read the particle file");
-  for (size_t i = 0; i < f.particles.size(); ++i) {
-    const GaussianParticle& p = f.particles[i];
-    const float v[8] = {p.x, p.y, p.z, p.radius, p.density, p.r, p.g, p.b};
-    bool ok = p.radius > 0.0f && p.density >= 0.0f && p.density <= 1.0f;
-    for (float x : v) ok = ok && std::isfinite(x);
-    if (!ok)
-      throw UserError(path, "particle " + std::to_string(i),
-                      "finite values, radius > 0 and density in [0, 1]");
-  }
+  check_particles(path, f.particles);
   return f;
 }
 

@@ -8,7 +8,7 @@
 //   offset 24  uint32    metadata length M
 //   offset 28  M bytes   metadata: a UTF-8 JSON object (source file, grid, error, ...)
 //   then       N x 8 float32: x, y, z, radius, density, r, g, b (engine/particles/gaussian_particle.h)
-// The file size must be exactly 28 + M + 32 N. Written to a temporary name, then renamed, so a
+// The file size must be exactly 28 + M + 32 N. Written durably (engine/io/durable_file.h), so a
 // reader never sees half a file.
 #include <string>
 #include <vector>
@@ -22,6 +22,12 @@ struct ParticleFile {
   std::vector<GaussianParticle> particles;
 };
 
+// The reader's check of every particle: finite values, radius > 0, density in [0, 1]. Throws
+// UserError(path, "particle I", ...) at the first one that fails.
+void check_particles(const std::string& path, const std::vector<GaussianParticle>& particles);
+
+// Checks the particles (check_particles: nothing is written that the reader would refuse), then
+// writes the file. Throws UserError or IoError (engine/io/io_error.h) naming the file.
 void write_particle_file(const std::string& path, const ParticleFile& file);
 
 // Throws UserError(path, "", why) for a missing, truncated or malformed file or a non-finite value.

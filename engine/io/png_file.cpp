@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "engine/core/user_error.h"
+#include "engine/io/durable_file.h"
 #include "engine/io/png_structure_check.h"
 #include "engine/math/color.h"
 
@@ -24,22 +25,24 @@
 
 namespace pyro {
 
+namespace {
+void append_bytes(void* context, void* data, int size) {
+  auto* out = static_cast<std::string*>(context);
+  out->append(static_cast<const char*>(data), static_cast<size_t>(size));
+}
+}  // namespace
+
 void write_png(const std::string& path, int width, int height, int channels,
                const std::vector<uint8_t>& pixels) {
   if (pixels.size() != static_cast<size_t>(width) * height * channels)
     throw std::invalid_argument("write_png: pixel count does not match the size");
-  const std::string temp = path + ".partial";
-  if (!stbi_write_png(temp.c_str(), width, height, channels, pixels.data(), width * channels)) {
-    std::error_code ec;
-    std::filesystem::remove(temp, ec);
-    throw std::runtime_error(path + ": cannot write PNG (is the folder writable?)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    throw std::runtime_error(path + ": cannot rename the finished PNG into place: " + ec.message());
-  }
+  // Encoded in memory (stb's own file output ignores write and close errors), then written
+  // durably: every write, the fsync, the close and the rename are checked.
+  std::string encoded;
+  if (!stbi_write_png_to_func(append_bytes, &encoded, width, height, channels, pixels.data(),
+                              width * channels))
+    throw std::runtime_error(path + ": the PNG encoder failed");
+  write_file_durably(path, encoded);
 }
 
 std::vector<uint8_t> linear_rgba_to_srgb8(const std::vector<float>& rgba, int width, int height) {

@@ -1,14 +1,14 @@
 #pragma once
-// PNG output. Files are written to a temporary name beside the destination and renamed once
-// complete, so a failure never leaves a partial image under the final name.
+// PNG output, written durably (engine/io/durable_file.h): a failure never leaves a partial image
+// under the final name.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace pyro {
 
-// 8-bit RGB (channels 3) or RGBA (channels 4), top row first. Throws std::runtime_error naming
-// the file when it cannot be written.
+// 8-bit RGB (channels 3) or RGBA (channels 4), top row first. Throws IoError naming the file and
+// the OS error when it cannot be written (UserError when its folder does not exist).
 void write_png(const std::string& path, int width, int height, int channels,
                const std::vector<uint8_t>& pixels);
 

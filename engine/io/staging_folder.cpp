@@ -1,43 +1,110 @@
 #include "engine/io/staging_folder.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdlib>
 #include <system_error>
 
 #include "engine/core/user_error.h"
+#include "engine/io/durable_file.h"
+#include "engine/io/io_error.h"
 
 namespace pyro {
 
 namespace fs = std::filesystem;
 
-StagingFolder::StagingFolder(const std::string& out) : out_(out) {
+namespace {
+
+fs::path normalized(const std::string& out) {
   fs::path target = fs::absolute(fs::path(out)).lexically_normal();
   if (target.filename().empty()) target = target.parent_path();  // "out/" names "out"
-  staging_ = target.parent_path() /
-             ("." + target.filename().string() + ".partial-" + std::to_string(::getpid()));
+  return target;
+}
+
+dev_t device_of(const fs::path& p) {
+  struct stat st {};
+  if (::stat(p.c_str(), &st) != 0) throw IoError(p.string(), "stat", errno);
+  return st.st_dev;
+}
+
+bool process_alive(int pid) {
   std::error_code ec;
+  return pid == ::getpid() || fs::exists("/proc/" + std::to_string(pid), ec);
+}
+
+// The staging folders of `out` found in `folder` whose names start with `prefix`.
+int remove_stale_in(const fs::path& folder, const std::string& prefix) {
+  int removed = 0;
+  std::error_code ec;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const int pid = staging_owner(name);
+    if (pid <= 0 || process_alive(pid)) continue;
+    std::error_code rm;
+    fs::remove_all(it->path(), rm);
+    if (!rm) ++removed;
+  }
+  return removed;
+}
+
+}  // namespace
+
+int staging_owner(const std::string& name) {
+  const size_t at = name.rfind(".partial-");
+  if (name.empty() || name[0] != '.' || at == std::string::npos) return 0;
+  const std::string digits = name.substr(at + 9);
+  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+    return 0;
+  return std::atoi(digits.c_str());
+}
+
+int remove_stale_staging(const fs::path& out) {
+  const fs::path target = normalized(out.string());
+  // Beside `out`: the name older versions used (`.NAME.partial-PID`).
+  return remove_stale_in(target, ".partial-") +
+         remove_stale_in(target.parent_path(), "." + target.filename().string() + ".partial-");
+}
+
+StagingFolder::StagingFolder(const std::string& out) : out_(normalized(out)) {
+  std::error_code ec;
+  if (fs::exists(out_, ec) && !fs::is_directory(out_, ec))
+    throw UserError(out, "--out", "expected a folder for the output, found a file");
+  created_out_ = !fs::exists(out_, ec);
+  fs::create_directories(out_, ec);
+  if (ec) throw UserError(out, "--out", "cannot create the output folder: " + ec.message());
+  remove_stale_staging(out_);
+  staging_ = out_ / (".partial-" + std::to_string(::getpid()));
   fs::remove_all(staging_, ec);  // left by an earlier process with the same id, killed
-  fs::create_directories(staging_, ec);
-  if (ec)
-    throw UserError(out, "--out", "cannot create the temporary folder " + staging_.string() +
-                                      " beside the output folder: " + ec.message());
+  if (::mkdir(staging_.c_str(), 0755) != 0) {
+    const int err = errno;
+    if (created_out_) fs::remove(out_, ec);
+    throw IoError(staging_.string(), "create the temporary folder inside the output folder", err);
+  }
+  if (device_of(staging_) != device_of(out_))
+    throw IoError(staging_.string(), "stage on the output folder's file system", EXDEV);
 }
 
 StagingFolder::~StagingFolder() {
   std::error_code ec;
   fs::remove_all(staging_, ec);
+  if (created_out_ && fs::is_empty(out_, ec)) fs::remove(out_, ec);
 }
 
 void StagingFolder::commit() {
   std::error_code ec;
-  fs::create_directories(out_, ec);
-  if (ec) throw UserError(out_, "--out", "cannot create the output folder: " + ec.message());
-  for (const fs::directory_entry& entry : fs::directory_iterator(staging_)) {
-    fs::rename(entry.path(), fs::path(out_) / entry.path().filename(), ec);
-    if (ec)
-      throw UserError(out_, "--out", "cannot move " + entry.path().string() +
-                                         " into the output folder: " + ec.message());
+  for (fs::directory_iterator it(staging_, ec), end; !ec && it != end; it.increment(ec)) {
+    const fs::path to = out_ / it->path().filename();
+    if (::rename(it->path().c_str(), to.c_str()) != 0)
+      throw IoError(to.string(), "move the finished file into the output folder", errno);
   }
+  if (ec) throw IoError(staging_.string(), "list the temporary folder", ec.value());
+  if (::rmdir(staging_.c_str()) != 0)
+    throw IoError(staging_.string(), "remove the emptied temporary folder", errno);
+  created_out_ = false;  // holds the output now
+  sync_folder(out_.string());
 }
 
 }  // namespace pyro

@@ -8,6 +8,7 @@
 #include <openvdb/tools/LevelSetUtil.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -148,6 +149,36 @@ void densify_into(const GridT& grid, DenseGrid head, const std::string& note, Re
   float mx = 0.0f;
   for (uint64_t i = 0; i < n; ++i) mx = std::max(mx, values[i]);
   end_dense_grid(out, active, mx);
+}
+
+// Densities beyond this magnitude come from damaged bytes, not from a simulation.
+constexpr double kMaxDensity = 1e6;
+
+// Refuses what the importer and the renderer cannot take in: a non-finite or absurd density (the
+// grid and the voxel named) or a degenerate transform.
+void check_grid_values(const std::string& path, const DenseGrid& g) {
+  const std::string grid = quote(g.name);
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(g.voxel_size[a]) || !(g.voxel_size[a] > 1e-9 && g.voxel_size[a] < 1e9))
+      throw UserError(path, "grid " + grid, "a voxel size in (1e-9, 1e9) on every axis, found " +
+                                                std::to_string(g.voxel_size[a]));
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(g.index_to_world[c][r]))
+        throw UserError(path, "grid " + grid, "a finite index-to-world transform");
+  size_t i = 0;
+  for (int z = 0; z < g.dims[2]; ++z)
+    for (int y = 0; y < g.dims[1]; ++y)
+      for (int x = 0; x < g.dims[0]; ++x, ++i) {
+        const float v = g.values[i];
+        if (std::isfinite(v) && std::fabs(v) <= kMaxDensity) continue;
+        char found[64];
+        std::snprintf(found, sizeof found, "%g", static_cast<double>(v));
+        throw UserError(path,
+                        "grid " + grid + ", voxel (" + std::to_string(g.origin[0] + x) + ", " +
+                            std::to_string(g.origin[1] + y) + ", " + std::to_string(g.origin[2] + z) + ")",
+                        "a finite density of magnitude at most 1e6, found " + std::string(found));
+      }
 }
 
 }  // namespace
@@ -332,6 +363,7 @@ DenseGrid read_vdb_grid(const std::string& path, const VdbGridChoice& choice, st
         if (note && !child_note.empty()) *note = child_note;
       },
       limits_for(path));
+  check_grid_values(path, grid);
   return grid;
 }
 

@@ -29,6 +29,14 @@ inline float view_depth(const CameraFrame& f, const glm::vec3& p) {
          (p.z - f.eye.z) * f.forward.z;
 }
 
+// View depth of a window depth d in [0, 1] under a perspective projection with these clip
+// distances (glm::perspective, OpenGL's default depth range): z_ndc = 2 d - 1,
+// z = 2 n f / (f + n - z_ndc (f - n)); d = 0 is the near plane, d = 1 the far one.
+inline float window_to_view_depth(float d, float near, float far) {
+  const float z_ndc = 2.0f * d - 1.0f;
+  return 2.0f * near * far / (far + near - z_ndc * (far - near));
+}
+
 // Pixel coordinates (x right, y down, pixel centres at +0.5) of world point p.
 glm::vec2 project_to_pixels(const CameraFrame& f, const glm::vec3& p);
 // The same mapping in double precision through a double view-projection matrix (for analyses,

@@ -9,6 +9,8 @@
 //          target together.
 #include <glm/vec3.hpp>
 
+#include "engine/core/enum_names.h"
+
 namespace pyro {
 
 struct CameraPose {
@@ -18,6 +20,9 @@ struct CameraPose {
 };
 
 enum class CameraControl { orbit, fly };
+inline constexpr EnumName<CameraControl> camera_control_names[] = {{CameraControl::orbit, "orbit"},
+                                                                {CameraControl::fly, "fly"}};
+constexpr const auto& enum_names(CameraControl) { return camera_control_names; }
 
 class ViewController {
  public:

@@ -1,5 +1,5 @@
 #pragma once
-// Prewarm (issue 4): start a scene as if it had already run `steps` steps of dt. Runs the
+// Prewarm: start a scene as if it had already run `steps` steps of dt. Runs the
 // particle emitter and animation systems for steps 0 .. steps−1 exactly as frames 0 .. steps−1
 // would, then records the offset in SimulationEnvironment::prewarm_steps so that frame f
 // continues as step steps + f. Deterministic: the same steps as a scene that really ran.

@@ -89,7 +89,7 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
   for (int m = 0; m < 3; ++m) {
     const DrawList& l = split_[m];
     if (l.size() == 0) continue;
-    // Profiling hook (no-op unless a session is active): this medium's layer, fragments counted.
+    // Profiling hook (no-op unless profiling): this medium's layer, fragments counted.
     static const char* const layer_names[3] = {"dust layer", "smoke layer", "fire layer"};
     const gpu::GpuPassScope pass(layer_names[m], true);
     // One program per medium kind: fire (shading 2) or dust and smoke (1).

@@ -57,7 +57,7 @@ double default_extinction(const DenseGrid& grid, double target_depth = 8.0);
 // The importer's per-block optical depth tolerance for an image error target E (an RMSE of linear
 // colour in [0, 1]). An optical depth error dtau changes a pixel by at most |dtau| times the
 // difference between the medium's colour and what lies behind it; the constant was calibrated on
-// the Disney cloud and the OpenVDB smoke (README, Measured figures) and the achieved error is
+// the Disney cloud and the OpenVDB smoke (docs/vdb_import.md) and the achieved error is
 // always measured and reported, never assumed.
 double tau_tolerance_for_error(double error);
 

@@ -1,6 +1,6 @@
 #pragma once
 // Screen tiles of the final pass, sorted by the work their pixels need, so that compose.frag's
-// costly variants (nearest-depth upsampling, heat shimmer) run only where they change the image.
+// costly variants (depth-aware upsampling, heat shimmer) run only where they change the image.
 // On llvmpipe a fragment shader pays for every instruction on every pixel, branches and discards
 // included, so work is skipped per pixel only by not rasterising it: a compute pass
 // (content/shaders/compose_tiles.comp, which says what decides a class) appends each tile to its
@@ -26,8 +26,8 @@ class ComposeTiles {
 
   // Square tiles of tile_pixels from the view's lower-left corner; the last column and row may
   // reach past the view (the draw scissors them to it). 32 was the fastest of 8 to 64 on
-  // llvmpipe (512x512 explosion, composite at 1/8: 4.9, 4.0, 3.3, 3.1, 3.3, 3.3 ms for 8, 16, 24,
-  // 32, 40, 64): smaller tiles classify more finely, larger ones cost fewer points.
+  // llvmpipe (docs/explosions.md): smaller tiles classify more finely, larger ones cost fewer
+  // points.
   static constexpr int tile_pixels = 32;
   struct Grid {
     glm::ivec2 view{0};                  // pixels

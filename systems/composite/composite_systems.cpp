@@ -1,5 +1,6 @@
 #include "systems/composite/composite_systems.h"
 
+#include "components/draw_list.h"
 #include "components/explosion_shading.h"
 #include "components/frame_clock.h"
 #include "components/gpu_frame.h"
@@ -8,6 +9,13 @@
 #include "components/stereo_camera.h"
 #include "engine/ecs/world.h"
 #include "systems/composite/compositor.h"
+#include "systems/composite/particle_depth_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <glm/vec2.hpp>
 
 namespace pyro {
 
@@ -33,11 +41,46 @@ MediaComposition media_composition(const ecs::World& world) {
   return m;
 }
 
+// Each view's particle depth grid (particle_depth_grid.h) into EyeTargets::particle_depths, as
+// (near, far) from the near plane on; a cell no particle reaches gets one depth, so that every
+// depth clamps alike there. Without a draw list nothing is known: every cell spans all depths.
+void upload_particle_depths(const ecs::World& world, GpuFrame& frame, float near) {
+  const EyeDrawLists* lists = world.try_resource<EyeDrawLists>();
+  const View* view = world.try_resource<View>();
+  for (size_t v = 0; v < frame.eyes.size(); ++v) {
+    EyeTargets& eye = frame.eyes[v];
+    if (!eye.particle_depths) continue;
+    const glm::ivec2 size(eye.scene->width(), eye.scene->height());
+    // A layer texel in view pixels, and one for rounding (particle_depth_grid.h).
+    const float reach = static_cast<float>(eye.scene->width()) / eye.media_combined->width() +
+                        static_cast<float>(eye.scene->height()) / eye.media_combined->height() +
+                        1.0f;
+    ParticleDepthGrid grid;
+    if (lists && view && v < lists->eyes.size() && v < view->eyes.size()) {
+      grid = particle_depth_grid(lists->eyes[v], view->eyes[v], size, reach);
+    } else {
+      grid.cells = particle_depth_cells(size);
+      grid.ranges.assign(static_cast<size_t>(grid.cells.x) * grid.cells.y, {0.0f, INFINITY});
+    }
+    std::vector<glm::vec2> texels(grid.ranges.size());
+    for (size_t i = 0; i < texels.size(); ++i) {
+      const ParticleDepthRange& r = grid.ranges[i];
+      const float lo = std::max(r.near, near);
+      texels[i] = lo > r.far ? glm::vec2(1.0f) : glm::vec2(lo, r.far);
+    }
+    glTextureSubImage2D(eye.particle_depths.get(), 0, 0, 0, grid.cells.x, grid.cells.y, GL_RG,
+                        GL_FLOAT, texels.data());
+  }
+}
+
 void composite(ecs::World& world) {
   GpuFrame& frame = world.resource<GpuFrame>();
   Compositor& compositor = world.resource<Compositor>();
-  if (!frame.eyes.empty() && frame.eyes[0].media_atlas)
-    compositor.set_media(media_composition(world));
+  if (!frame.eyes.empty() && frame.eyes[0].media_atlas) {
+    const MediaComposition m = media_composition(world);
+    compositor.set_media(m);
+    upload_particle_depths(world, frame, m.near);
+  }
   bool swap_eyes = false;
   bool found = false;
   world.each<const StereoCamera>([&](const StereoCamera& s) {
@@ -61,7 +104,7 @@ ecs::SystemDesc composite_system() {
   return {.name = "composite",
           .phase = ecs::Phase::composite,
           .access = ecs::Access::of<ecs::Reads<RenderSettings, StereoCamera, View, FrameClock,
-                                               ExplosionShading, MediaComposition>,
+                                               ExplosionShading, MediaComposition, EyeDrawLists>,
                                     ecs::Writes<GpuFrame, Compositor>>(),
           .run = composite,
           .setup =

@@ -3,10 +3,12 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "engine/gpu/gpu_pass_timer.h"
 #include "engine/gpu/shader_program.h"
 #include "engine/math/anaglyph.h"
 #include "engine/math/color.h"
 #include "engine/math/detail_noise.h"
+#include "systems/composite/particle_depth_grid.h"
 
 namespace pyro {
 
@@ -17,18 +19,20 @@ Compositor::Compositor()
 
 const gpu::Program& Compositor::variant(bool use_left, bool use_right, const Features& f) {
   const bool media = media_bound_ && f.media;
-  const bool depth_aware = media && f.depth_aware;
+  const bool full_size = media && f.full_size;
+  const bool depth_aware = media && f.depth_aware && !full_size;
   const bool shimmer = media && f.shimmer;
   const bool layers = layers_ && !media_bound_;
   const size_t key = size_t(use_left) | size_t(use_right) << 1 | size_t(layers) << 2 |
                      size_t(media) << 3 | size_t(depth_aware) << 4 | size_t(shimmer) << 5 |
-                     size_t(f.tiled) << 6 | size_t(encode_) << 7;
+                     size_t(f.tiled) << 6 | size_t(encode_) << 7 | size_t(full_size) << 8;
   gpu::Program& p = compose_[key];
   if (p.get() == 0) {
     auto flag = [](const char* name, bool on) { return std::string(name) + (on ? " 1" : " 0"); };
     std::vector<std::string> defines = {flag("USE_LEFT", use_left), flag("USE_RIGHT", use_right),
                                         flag("LAYERS", layers), flag("MEDIA", media),
-                                        flag("DEPTH_AWARE", depth_aware), flag("SHIMMER", shimmer),
+                                        flag("DEPTH_AWARE", depth_aware),
+                                        flag("FULL_SIZE", full_size), flag("SHIMMER", shimmer),
                                         flag("SRGB_ENCODE", encode_)};
     if (encode_) defines.push_back(srgb_polynomial_define());
     p = gpu::load_program(f.tiled ? "compose_tile.vert" : "fullscreen.vert", "compose.frag", defines);
@@ -75,9 +79,12 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glBindTextureUnit(7, l.media_depth->color_texture());
   glBindTextureUnit(9, r.media_combined->color_texture());
   glBindTextureUnit(10, r.media_depth->color_texture());
+  glBindTextureUnit(11, l.particle_depths.get());
+  glBindTextureUnit(12, r.particle_depths.get());
 }
 
 void Compositor::prepare_media(const EyeTargets& eye) {
+  const gpu::GpuPassScope pass("media prepare");  // profiling hook (no-op by default)
   const gpu::RenderTarget& combined = *eye.media_combined;
   const GLuint fbo = prepare_fbo_.get();
   glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, combined.color_texture(), 0);
@@ -125,14 +132,15 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
     glUniform2f(loc("u_view_size"), static_cast<float>(width), static_cast<float>(height));
     if (media_bound_) {
       glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
+      glUniform1i(loc("u_depth_cell"), ParticleDepthGrid::cell_pixels);
       glUniform1f(loc("u_near"), media_.near);
       glUniform1f(loc("u_far"), media_.far);
     }
   };
-  // Depth-aware upsampling changes nothing when the layers are at full size: every pixel is a
-  // texel centre, where bilinear filtering returns that texel.
+  // Layers at full size need no upsampling: every pixel reads its own texel.
   const bool reduced = media_bound_ && media_layer_size_ != glm::ivec2(width, height);
   Features all;
+  all.full_size = !reduced;
   all.depth_aware = media_.depth_aware && reduced;
   all.shimmer = media_.shimmer > 0.0f;
   if (!media_bound_ || !media_.tiles) {
@@ -147,21 +155,30 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
   how.edges = all.depth_aware;
   how.fire = all.shimmer;
   how.depth_tolerance = media_.depth_tolerance;
-  tiles_.classify(grid, how, slot);
+  {
+    const gpu::GpuPassScope pass("tile classify");
+    tiles_.classify(grid, how, slot);
+  }
   for (unsigned cls : ComposeTiles::classes) {
     if (cls == 0 && copy.from != 0) {
       // Tiles without media show the scene unchanged: a copy of its sRGB bytes, the same
       // bytes the scene-only variant writes, for a fraction of its cost on llvmpipe.
+      const gpu::GpuPassScope pass("scene copy");
       glCopyImageSubData(copy.from, GL_TEXTURE_2D, 0, 0, 0, 0, copy.to, GL_TEXTURE_2D, 0, x, y, 0,
                          width, height, 1);
       continue;
     }
     Features f;
     f.tiled = true;
+    f.full_size = all.full_size;
     f.media = (cls & ComposeTiles::media) != 0;
     f.depth_aware = (cls & ComposeTiles::edge) != 0;
     f.shimmer = (cls & ComposeTiles::fire) != 0;
     if ((f.depth_aware && !all.depth_aware) || (f.shimmer && !all.shimmer)) continue;  // never filled
+    static constexpr const char* names[8] = {"scene tiles", "media tiles", "",
+                                             "depth-edge tiles", "", "fire tiles", "",
+                                             "fire and depth-edge tiles"};
+    const gpu::GpuPassScope pass(names[cls]);
     const gpu::Program& program = variant(use_left, use_right, f);
     draw_with(program);
     tiles_.draw(program.get(), grid, cls, slot, {x, y});

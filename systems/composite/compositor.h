@@ -19,8 +19,13 @@ struct MediaComposition {
   float near = 0.1f, far = 100.0f;  // the views' clip distances, for view depth
   float time = 0.0f;                // seconds, animates the shimmer's noise (one period a second)
   float shimmer = 0.0f;             // scene offset per unit fire opacity (fraction of the view)
-  bool depth_aware = true;          // nearest-depth upsampling at depth edges; false: bilinear
-  float depth_tolerance = 0.05f;    // relative view-depth spread still upsampled bilinearly
+  // Depth-aware upsampling (content/shaders/compose.frag, upsampled_media): bilinear where the
+  // layer's texels saw the pixel's surface, their weights changed across depth edges; false:
+  // bilinear everywhere.
+  bool depth_aware = true;
+  // The difference of clip depths (depths clamped to the views' EyeTargets::particle_depths, as
+  // a share of their extent) up to which a texel counts as having seen the pixel's surface.
+  float depth_tolerance = 0.05f;
   // Compose in screen tiles sorted by the work they need (systems/composite/compose_tiles.h);
   // false: every pixel runs the full variant (the same image, slower; for tests and comparison).
   bool tiles = true;
@@ -61,13 +66,14 @@ class Compositor {
   struct Features {
     bool media = true;        // with media bound: composite them (false: the scene alone)
     bool depth_aware = false;
+    bool full_size = false;   // layers at the view's size: read texel for texel
     bool shimmer = false;
     bool tiled = false;       // linked with compose_tile.vert instead of fullscreen.vert
   };
   const gpu::Program& variant(bool use_left, bool use_right, const Features& features);
   void upload_shimmer_noise(float time);
 
-  std::array<gpu::Program, 256> compose_;  // compose.frag variants, compiled on first use
+  std::array<gpu::Program, 512> compose_;  // compose.frag variants, compiled on first use
   gpu::Program media_prepare_;
   gpu::Framebuffer prepare_fbo_;  // two outputs: media_combined and media_depth
   gpu::VertexArray empty_;

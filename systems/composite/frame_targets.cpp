@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "systems/composite/particle_depth_grid.h"
+
 namespace pyro {
 
 int layer_extent(int full, float scale) {
@@ -28,21 +30,23 @@ GpuFrame make_gpu_frame(const RenderSettings& settings) {
       t.media_atlas = std::make_unique<gpu::RenderTarget>(3 * lw, lh);
       t.media_combined = std::make_unique<gpu::RenderTarget>(lw, lh);
       t.media_depth = std::make_unique<gpu::RenderTarget>(lw, lh, GL_RGBA16F);
+      const glm::ivec2 cells = particle_depth_cells({s.width, s.height});
+      t.particle_depths = gpu::make_texture(GL_TEXTURE_2D);
+      glTextureStorage2D(t.particle_depths.get(), 1, GL_RG32F, cells.x, cells.y);
+      glTextureParameteri(t.particle_depths.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTextureParameteri(t.particle_depths.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     } else if (s.layer_scale < 1.0f)
       t.layer = std::make_unique<gpu::RenderTarget>(layer_extent(s.width, s.layer_scale),
                                                     layer_extent(s.height, s.layer_scale));
     f.eyes.push_back(std::move(t));
   }
-  const bool two_wide = s.stereo_mode == StereoMode::side_by_side ||
-                        s.stereo_mode == StereoMode::side_by_side_crossed ||
-                        s.stereo_mode == StereoMode::left_right;
-  f.output = std::make_unique<gpu::RenderTarget>(two_wide ? 2 * s.width : s.width, s.height,
-                                                 GL_SRGB8_ALPHA8);
+  const int output_width = two_views_wide(s.stereo_mode) ? 2 * s.width : s.width;
+  f.output = std::make_unique<gpu::RenderTarget>(output_width, s.height, GL_SRGB8_ALPHA8);
   if (settings.motion_blur > 0.0f)
     f.history = std::make_unique<gpu::RenderTarget>(f.output->width(), f.output->height(), GL_RGBA16F);
   if (settings.frame_scale < 1.0f) {
-    f.display = std::make_unique<gpu::RenderTarget>(
-        two_wide ? 2 * settings.width : settings.width, settings.height, GL_SRGB8_ALPHA8);
+    const int display_width = two_views_wide(s.stereo_mode) ? 2 * settings.width : settings.width;
+    f.display = std::make_unique<gpu::RenderTarget>(display_width, settings.height, GL_SRGB8_ALPHA8);
   }
   return f;
 }

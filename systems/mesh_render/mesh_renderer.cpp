@@ -34,7 +34,7 @@ const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(MeshKind kind) {
   g.index_count = static_cast<GLsizei>(data.indices.size());
   // The ground is a single sheet, shaded on both sides (mesh.frag); the tower is closed, wound
   // counter-clockwise outside (engine/mesh/mesh_data.h), and culling its back faces halves its
-  // rasterisation (on llvmpipe, 1.1 -> 0.7 ms at 512x512).
+  // rasterisation (docs/explosions.md).
   g.closed = kind != MeshKind::ground_plane;
   g.vao = gpu::make_vertex_array();
   const GLuint vao = g.vao.get();

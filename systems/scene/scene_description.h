@@ -124,7 +124,7 @@ struct QualityDescription {
   bool given() const { return max_rmse > 0.0f; }
 };
 
-// An explosion emitter (issue 4): what it spawns (components/emitter.h; its state fields stay at
+// An explosion emitter: what it spawns (components/emitter.h; its state fields stay at
 // their defaults) and how its particles move (components/particle_dynamics.h). The plain-data
 // components double as the description, so scene keys and component fields cannot drift apart.
 struct EmitterDescription {

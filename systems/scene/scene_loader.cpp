@@ -20,12 +20,15 @@
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <system_error>
 #include <utility>
 #include <vector>
 
+#include "components/stereo_camera.h"
+#include "engine/core/long_json_string.h"
 #include "engine/core/user_error.h"
 
 namespace pyro {
@@ -78,12 +81,29 @@ std::string format_vec3(const glm::vec3& v) {
   return "[" + format_float(v.x) + ", " + format_float(v.y) + ", " + format_float(v.z) + "]";
 }
 
+// A value longer than this is quoted cut (its first kQuotedHead bytes and its size), so that a
+// message stays short whatever the input holds.
+constexpr std::size_t kQuoteLimit = 200, kQuotedHead = 60;
+
+// `s` cut to at most `n` bytes without splitting a UTF-8 sequence.
+std::string_view utf8_head(std::string_view s, std::size_t n) {
+  if (s.size() <= n) return s;
+  while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+  return s.substr(0, n);
+}
+
+std::string cut_if_long(std::string_view s) {
+  if (s.size() <= kQuoteLimit) return std::string(s);
+  return std::string(utf8_head(s, kQuotedHead)) + "\u2026 (" + std::to_string(s.size()) + " bytes)";
+}
+
 std::string in_quotes(std::string_view s) {
   // Built by appending: g++ 12 at -O3 warns falsely (-Wrestrict) on "\"" + std::string.
+  const std::string text = cut_if_long(s);
   std::string q;
-  q.reserve(s.size() + 2);
+  q.reserve(text.size() + 2);
   q += '"';
-  q += s;
+  q += text;
   q += '"';
   return q;
 }
@@ -126,9 +146,10 @@ std::string describe(const json& v) {
 }
 
 // RFC 6901: "~" -> "~0", "/" -> "~1".
+// A token longer than kQuoteLimit is cut like a quoted value.
 std::string escape_pointer_token(std::string_view token) {
   std::string out;
-  for (char c : token) {
+  for (char c : cut_if_long(token)) {
     if (c == '~')
       out += "~0";
     else if (c == '/')
@@ -140,28 +161,38 @@ std::string escape_pointer_token(std::string_view token) {
 }
 
 // Optimal string alignment distance (Levenshtein plus adjacent transpositions, so that
-// "raduis" is one edit from "radius").
+// "raduis" is one edit from "radius"). Wagner & Fischer's recurrence (J. ACM 21(1), 1974) kept
+// in three rows over the shorter string: O(min(m, n)) memory, O(m n) time.
 std::size_t edit_distance(std::string_view a, std::string_view b) {
+  if (a.size() < b.size()) std::swap(a, b);  // b is the shorter: rows of b.size() + 1
   const std::size_t n = a.size(), m = b.size();
-  std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
-  for (std::size_t i = 0; i <= n; ++i) d[i][0] = i;
-  for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
+  std::vector<std::size_t> before(m + 1), previous(m + 1), row(m + 1);
+  for (std::size_t j = 0; j <= m; ++j) previous[j] = j;
   for (std::size_t i = 1; i <= n; ++i) {
+    row[0] = i;
     for (std::size_t j = 1; j <= m; ++j) {
       const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      row[j] = std::min({previous[j] + 1, row[j - 1] + 1, previous[j - 1] + cost});
       if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        row[j] = std::min(row[j], before[j - 2] + 1);
     }
+    std::swap(before, previous);
+    std::swap(previous, row);
   }
-  return d[n][m];
+  return previous[m];
 }
+
+// Keys and names longer than this get no "did you mean" (no scene key is near that long): the
+// cost of a suggestion stays bounded whatever the input.
+constexpr std::size_t kSuggestLimit = 64;
 
 // "; did you mean "radius"?" when a candidate is within two edits, else the full list.
 std::string suggest(std::string_view wrong, const std::vector<std::string_view>& candidates) {
   std::string_view best;
   std::size_t best_distance = 3;
   for (std::string_view c : candidates) {
+    const std::size_t gap = wrong.size() > c.size() ? wrong.size() - c.size() : c.size() - wrong.size();
+    if (wrong.size() > kSuggestLimit || gap >= best_distance) continue;  // distance >= gap
     const std::size_t dist = edit_distance(wrong, c);
     if (dist < best_distance) best_distance = dist, best = c;
   }
@@ -511,6 +542,13 @@ std::size_t read_choice(ObjectReader& r, std::string_view key,
   return fallback;
 }
 
+// read_choice over E's names (engine/core/enum_names.h): the value named at `key`, `fallback`
+// when the key is absent.
+template <class E>
+E read_enum(ObjectReader& r, std::string_view key, E fallback) {
+  return enum_table<E>()[read_choice(r, key, enum_name_views<E>(), enum_index(fallback))].value;
+}
+
 void read_camera(ObjectReader& r, CameraDescription& c) {
   r.vec3("position", kAnyRange, c.position);
   r.vec3("target", kAnyRange, c.target);
@@ -522,7 +560,8 @@ void read_camera(ObjectReader& r, CameraDescription& c) {
   r.object("stereo", [&](ObjectReader& st) {
     st.number("interocular", kNonNegative, c.interocular);
     st.number("zero_parallax_distance", kPositive, c.zero_parallax_distance);
-    c.swap_eyes = read_choice(st, "eye_order", {"left-right", "right-left"}, c.swap_eyes ? 1 : 0) == 1;
+    const EyeOrder order = c.swap_eyes ? EyeOrder::right_left : EyeOrder::left_right;
+    c.swap_eyes = read_enum(st, "eye_order", order) == EyeOrder::right_left;
   });
 
   if (!(c.far > c.near)) {
@@ -580,45 +619,31 @@ void read_cloud(ObjectReader& r, CloudDescription& c) {
   }
 }
 
-struct MeshKindName {
-  std::string_view name;
-  MeshKind kind;
-};
-constexpr MeshKindName kMeshKinds[] = {
-    {"ground_plane", MeshKind::ground_plane},
-    {"water_tower", MeshKind::water_tower},
-};
-
 void read_mesh(ObjectReader& r, MeshDescription& m) {
-  std::vector<std::string_view> names;
-  for (const MeshKindName& k : kMeshKinds) names.push_back(k.name);
+  const std::vector<std::string_view> names = enum_name_views<MeshKind>();
   const json& type = r.require("type", "the mesh type, one of " + quoted_list(names));
   if (!type.is_string())
     r.at("type").fail("expected a mesh type, one of " + quoted_list(names) + ", found " +
                       describe(type));
   const std::string name = type.get<std::string>();
-  const auto it = std::find_if(std::begin(kMeshKinds), std::end(kMeshKinds),
-                               [&](const MeshKindName& k) { return k.name == name; });
-  if (it == std::end(kMeshKinds)) {
+  const std::optional<MeshKind> kind = enum_from_name<MeshKind>(name);
+  if (!kind) {
     std::string message =
         "unknown mesh type " + in_quotes(name) + "; expected one of " + quoted_list(names);
     const std::string hint = suggest(name, names);
     if (hint.rfind("; did you mean", 0) == 0) message += hint;
     r.at("type").fail(message);
   }
-  m.kind = it->kind;
+  m.kind = *kind;
   r.vec3("position", kAnyRange, m.position);
   r.number("scale", kPositive, m.scale);
   r.vec3("color", kUnit, m.color);
 }
 
 void read_render(ObjectReader& r, RenderDescription& d) {
-  d.billboards = static_cast<BillboardAlignment>(
-      read_choice(r, "billboards", {"viewplane", "viewpoint"}, static_cast<std::size_t>(d.billboards)));
-  d.particles = static_cast<ParticleShape>(read_choice(
-      r, "particles", {"gaussian", "spherical", "planar"}, static_cast<std::size_t>(d.particles)));
-  d.shading = static_cast<ParticleShading>(
-      read_choice(r, "shading", {"color", "explosion"}, static_cast<std::size_t>(d.shading)));
+  d.billboards = read_enum(r, "billboards", d.billboards);
+  d.particles = read_enum(r, "particles", d.particles);
+  d.shading = read_enum(r, "shading", d.shading);
   if (d.shading == ParticleShading::explosion && d.particles == ParticleShape::gaussian)
     r.at("shading").fail("\"explosion\" shading needs \"particles\": \"spherical\" or \"planar\"");
   r.number("layer_scale", Range{0.0, 1.0, true, false}, d.layer_scale);
@@ -742,7 +767,7 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
 }
 
 // ---------------------------------------------------------------------------------------------
-// Flipbook fires (Rose 2007, chapter 4; issue 7)
+// Flipbook fires (Rose 2007, chapter 4)
 
 // A non-empty array of numbers in `range` (at most `max_size`).
 std::vector<float> read_number_array(const json& v, const Where& at, const Range& range,
@@ -805,8 +830,7 @@ void read_fire(ObjectReader& r, FlipbookFire& f, const std::string& scene_file) 
   r.number("aspect", kPositive, f.aspect);
   r.number("intensity", kNonNegative, f.intensity);
   r.number("overlap_exponent", Range{0.0, 4.0}, f.overlap_exponent);
-  f.blend = static_cast<FlipbookBlend>(read_choice(r, "blend", {"one-minus-destination", "linear-alpha"},
-                                                   static_cast<std::size_t>(f.blend)));
+  f.blend = read_enum(r, "blend", f.blend);
   r.number("frames_per_second", kPositive, f.frames_per_second);
   if (r.find("flipbook") != nullptr) {
     std::string folder;
@@ -850,7 +874,7 @@ void read_fire(ObjectReader& r, FlipbookFire& f, const std::string& scene_file) 
 }
 
 // ---------------------------------------------------------------------------------------------
-// Explosion emitters (issue 4)
+// Explosion emitters
 
 bool read_bool(const json& v, const Where& at) {
   if (!v.is_boolean()) at.fail("expected true or false, found " + describe(v));
@@ -932,11 +956,9 @@ void read_dynamics(ObjectReader& r, ParticleDynamics& d) {
 void read_emitter(ObjectReader& r, EmitterDescription& out) {
   Emitter& e = out.emitter;
   r.string("name", e.name);
-  e.medium = static_cast<ParticleMedium>(
-      read_choice(r, "medium", {"dust", "smoke", "fire"}, static_cast<std::size_t>(e.medium)));
+  e.medium = read_enum(r, "medium", e.medium);
   r.object("shape", [&](ObjectReader& s) {
-    e.shape = static_cast<EmitterShape>(
-        read_choice(s, "type", {"point", "sphere", "box", "disc"}, static_cast<std::size_t>(e.shape)));
+    e.shape = read_enum(s, "type", e.shape);
     s.vec3("position", kAnyRange, e.position);
     s.number("radius", kNonNegative, e.radius);
     if (const json* v = s.find("surface")) e.surface = read_bool(*v, s.at("surface"));
@@ -1051,6 +1073,12 @@ SceneDescription parse_scene(const std::string& text, const std::string& file_na
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw UserError(file, "", "expected a JSON object describing the scene, found an empty file");
   }
+  // No scene string (names, paths) is near this long; refused before the parser copies it.
+  constexpr std::size_t kMaxStringBytes = 1 << 16;
+  if (const auto long_string = find_long_json_string(text, kMaxStringBytes))
+    throw UserError(file, line_and_column(text, long_string->offset + 1),
+                    "strings of at most " + std::to_string(kMaxStringBytes) +
+                        " bytes, found one of " + std::to_string(long_string->bytes) + " bytes");
   JsonDocumentBuilder builder(text);
   json::sax_parse(text, &builder, json::input_format_t::json, /*strict=*/true,
                   /*ignore_comments=*/false);
@@ -1080,6 +1108,7 @@ SceneDescription load_scene(const std::string& path) {
   if (!file)
     throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
   std::string text;
+  if (const auto size = std::filesystem::file_size(path, ec); !ec) text.reserve(size);
   char buffer[1 << 16];
   std::size_t n;
   while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, n);

@@ -43,11 +43,6 @@ StereoCamera stereo_camera(const CameraDescription& camera, const RuntimeOptions
   return stereo;
 }
 
-bool side_by_side(StereoMode mode) {
-  return mode == StereoMode::side_by_side || mode == StereoMode::side_by_side_crossed ||
-         mode == StereoMode::left_right;
-}
-
 }  // namespace
 
 ResolvedScene resolve_scene(const SceneDescription& scene, const RuntimeOptions& options,
@@ -61,7 +56,7 @@ ResolvedScene resolve_scene(const SceneDescription& scene, const RuntimeOptions&
   r.stereo = stereo_camera(r.scene.camera, options);
   r.clock.dt = 1.0f / r.scene.frames_per_second;
   r.views = is_stereo(r.settings.stereo_mode) ? 2 : 1;
-  r.output_width = side_by_side(r.settings.stereo_mode) ? 2 * r.settings.width : r.settings.width;
+  r.output_width = two_views_wide(r.settings.stereo_mode) ? 2 * r.settings.width : r.settings.width;
   r.driver_max_texture = driver_max_texture;
   check_resolved_budget(r, 0);
   return r;

@@ -6,9 +6,11 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "components/render_modes.h"
 #include "components/render_settings.h"
+#include "engine/ecs/schedule.h"
 #include "systems/quality/quality_settings.h"
 
 namespace pyro {
@@ -39,7 +41,7 @@ struct RuntimeOptions {
   // Threads of the schedule (ecs::Schedule::set_threads): 0 one per core, 1 the sequential
   // schedule, n at most n. Results are the same for every count.
   int threads = 0;
-  // Profiling session: every step() records one span per system (CPU time, from the schedule)
+  // Profiling: every step() records one span per system (CPU time, from the schedule)
   // and one per GPU pass (timer queries: each render, composite and output system, and the
   // layers inside billboard_render with the fragments they drew), read one frame late.
   bool profile = false;
@@ -49,6 +51,9 @@ struct RuntimeOptions {
   std::function<void()> make_context_current;
   // Where notes go while the assets load (empty: they are only kept, SceneRuntime::notes()).
   NoteSink on_note;
+  // Systems of the embedding program's own (docs/embedding.md), added to the standard schedule
+  // after its systems, each in its phase, with the same profiling wrappers.
+  std::vector<ecs::SystemDesc> extra_systems;
 };
 
 }  // namespace pyro

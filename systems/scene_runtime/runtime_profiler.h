@@ -1,5 +1,5 @@
 #pragma once
-// A profiling session of a runtime (RuntimeOptions::profile): a "frame" span per frame on the
+// Profiling a runtime (RuntimeOptions::profile): a "frame" span per frame on the
 // CPU track with the systems' spans inside it (from the schedule's stats), and the GPU passes
 // on the GPU track (timer queries, read a frame late so that reading rarely waits).
 #include <chrono>

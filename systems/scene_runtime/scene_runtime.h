@@ -62,7 +62,7 @@ class SceneRuntime : public FrameStepper {
   }
   const FrameSequencer& sequencer() const { return sequencer_; }
 
-  // The profiling session so far (options.profile): a "frame" span per step() on the CPU track
+  // The profiling run so far (options.profile): a "frame" span per step() on the CPU track
   // with the systems' spans inside it, and the GPU passes on the GPU track. Waits for the GPU to
   // finish the last frame's passes. Empty when not profiling.
   const std::vector<TraceSpan>& trace();

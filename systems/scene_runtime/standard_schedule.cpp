@@ -32,7 +32,9 @@ std::vector<ecs::SystemDesc> standard_systems(bool readback) {
 ecs::Schedule standard_schedule(const RuntimeOptions& options) {
   ecs::Schedule schedule;
   schedule.set_threads(options.threads);
-  for (ecs::SystemDesc& d : standard_systems(options.readback)) {
+  std::vector<ecs::SystemDesc> systems = standard_systems(options.readback);
+  systems.insert(systems.end(), options.extra_systems.begin(), options.extra_systems.end());
+  for (ecs::SystemDesc& d : systems) {
     if (options.profile && d.main_thread) {
       // Systems that issue GL commands: their GPU time is a pass of its own on the GPU track.
       d.run = [run = std::move(d.run), name = d.name](ecs::World& w) {

@@ -12,7 +12,7 @@
 // With options.profile each GL system (SystemDesc::main_thread: the render, composite and output
 // phases) is a GPU pass of its own (engine/gpu/gpu_pass_timer.h); with options.sync_timing each
 // GL system finishes its GPU work. The systems' setup (Schedule::setup) runs once the world is
-// built.
+// built. options.extra_systems (an embedding program's own) follow the standard ones.
 #include <vector>
 
 #include "engine/ecs/schedule.h"

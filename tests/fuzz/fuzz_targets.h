@@ -1,5 +1,5 @@
 #pragma once
-// What each libFuzzer target does with one input (issue 8). The fuzzers' entry points
+// What each libFuzzer target does with one input. The fuzzers' entry points
 // (fuzz_*_main.cpp, built with PYRO_FUZZ=ON) call these; so does the normal test suite, on the
 // seed corpus and on every input that once crashed (tests/fuzz/regressions/<target>/).
 //

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <limits>
 
+#include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/math/camera_math.h"
 #include "systems/reference/particle_reference.h"
@@ -22,6 +23,22 @@ namespace {
 namespace fs = std::filesystem;
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+// A particle file in the documented layout (docs/particle_format.md), written byte by byte
+// without write_particle_file's check.
+void write_raw_particle_file(const fs::path& p, const std::vector<GaussianParticle>& particles) {
+  std::ofstream out(p, std::ios::binary);
+  const uint32_t version = 1, record = sizeof(GaussianParticle), meta = 2;
+  const uint64_t count = particles.size();
+  out.write("PYROPTCL", 8);
+  out.write(reinterpret_cast<const char*>(&version), 4);
+  out.write(reinterpret_cast<const char*>(&record), 4);
+  out.write(reinterpret_cast<const char*>(&count), 8);
+  out.write(reinterpret_cast<const char*>(&meta), 4);
+  out.write("{}", 2);
+  out.write(reinterpret_cast<const char*>(particles.data()),
+            static_cast<std::streamsize>(count * sizeof(GaussianParticle)));
+}
 
 TEST(StabilityNonFiniteInput, NaiveNaNColourPoisonsTheGroundTruthImage) {
   ParticlePool pool(1);
@@ -52,7 +69,10 @@ TEST(StabilityNonFiniteInput, NaNOrInfinityInAParticleFileIsRefusedNamingThePart
     f.particles.resize(3);
     for (GaussianParticle& p : f.particles) p.density = 0.5f;
     f.particles[1].y = bad;
-    write_particle_file((dir / "bad.pyrop").string(), f);
+    EXPECT_THROW(write_particle_file((dir / "bad.pyrop").string(), f), UserError)
+        << "the writer refuses what the reader would";
+    EXPECT_FALSE(fs::exists(dir / "bad.pyrop"));
+    write_raw_particle_file(dir / "bad.pyrop", f.particles);  // as a damaged or foreign file
     write(dir / "scene.json", R"({"volumes": [{"file": "bad.pyrop"}]})");
     const test::CommandResult r =
         test::run_pyro({"render", (dir / "scene.json").string(), "--out", (dir / "out").string()});

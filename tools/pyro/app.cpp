@@ -1,11 +1,28 @@
 #include "tools/pyro/app.h"
 
+#include <string>
+
+#include "engine/gpu/gl_context.h"
+#include "engine/gpu/gpu_error.h"
 #include "tools/pyro/commands.h"
 
 namespace pyro::cli {
 
+std::string version_text() {
+  std::string text = "pyro " PYRO_VERSION "\n";
+  try {
+    const gpu::HeadlessContext context;
+    text += "renderer: " + context.description();
+  } catch (const gpu::GpuError& e) {
+    text += std::string("renderer: none (no headless OpenGL context could be made: ") + e.what() + ")";
+  }
+  return text;
+}
+
 void add_pyro_commands(CLI::App& app) {
   app.require_subcommand(1);
+  app.set_version_flag("--version", version_text,
+                       "Print the version and the OpenGL renderer of the headless context, then exit");
   add_render_command(app);
   add_analyze_commands(app);
   add_bench_commands(app);

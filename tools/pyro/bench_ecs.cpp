@@ -206,7 +206,7 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
     const std::size_t m = pool.size();
     // GCC cannot prove the pool's arrays distinct, and 3 stores against 6 streams need more
     // run-time alias checks than it will emit (10), so without this the loop stays scalar
-    // (1.3-1.5x slower here). See particle_pool.h.
+    // (docs/benchmarks.md). See particle_pool.h.
 #pragma GCC ivdep
     for (std::size_t i = 0; i < m; ++i) {
       px[i] += pvx[i] * dt;

@@ -1,5 +1,6 @@
 #include "tools/pyro/bench_layers.h"
 
+#include "engine/math/depth_edge_error.h"
 #include "engine/math/image_error.h"
 
 #include <epoxy/gl.h>
@@ -12,11 +13,15 @@
 #include <vector>
 
 #include "components/frame_image.h"
+#include "components/draw_list.h"
+#include "components/gpu_frame.h"
+#include "components/view.h"
 #include "components/particle_set.h"
 #include "components/render_settings.h"
 #include "engine/ecs/world.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/composite/compositor.h"
+#include "systems/composite/opaque_view_readback.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/progress.h"
 
@@ -97,7 +102,7 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     reference_options.layer_scale = 1.0f;
     SceneRuntime measured(scene, measured_options), reference(scene, reference_options);
     choose_methods(measured, o.depth_aware, o.compose_tiles, o.billboard_sprites);
-    double sum = 0.0;
+    double sum = 0.0, edge_sum = 0.0, halo_sum = 0.0, halo = 0.0;
     int samples = 0;
     const int every = std::max(1, o.frames / std::max(1, o.error_frames));
     for (int f = 0; f < o.frames; ++f) {
@@ -105,8 +110,20 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
       reference.step();
       progress.update(++done);
       if ((f + 1) % every == 0 && samples < o.error_frames) {
-        const double e = rgba_rmse(measured.image().rgba, reference.image().rgba);
+        const std::vector<float>& image = measured.image().rgba;
+        const std::vector<float>& truth = reference.image().rgba;
+        const double e = rgba_rmse(image, truth);
+        // Near the full-resolution scene's depth edges (engine/math/depth_edge_error.h).
+        const ecs::World& world = reference.world();
+        const OpaqueView opaque = read_opaque_view(
+            world.resource<GpuFrame>(), world.resource<View>(), world.resource<EyeDrawLists>());
+        const DepthEdgeError edge =
+            depth_edge_error({opaque.width, opaque.height, opaque.view_depth, opaque.rgba, truth,
+                              image, opaque.particle_far});
         sum += e * e;
+        edge_sum += edge.edge_rmse * edge.edge_rmse;
+        halo_sum += edge.halo_rms * edge.halo_rms;
+        halo = std::max(halo, edge.halo);
         ++samples;
       }
     }
@@ -115,6 +132,9 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
                       {"cpu_ms_per_frame", timing.cpu_ms_per_frame},
                       {"speedup_vs_full", full_fps > 0.0 ? fps / full_fps : 1.0},
                       {"rmse_vs_full", samples ? std::sqrt(sum / samples) : 0.0},
+                      {"edge_rmse", samples ? std::sqrt(edge_sum / samples) : 0.0},
+                      {"halo", halo},
+                      {"halo_rms", samples ? std::sqrt(halo_sum / samples) : 0.0},
                       {"system_ms", system_ms}});
   }
   return {{"scene", o.scene}, {"width", o.width}, {"height", o.height}, {"frames", o.frames},

@@ -17,7 +17,7 @@ struct LayersBenchOptions {
   bool sync_timing = false;  // per-system times include their GPU work (slower frames)
   std::vector<float> scales{1.0f, 0.5f, 0.25f, 0.125f};  // speed-ups are against the first
   // How the reduced layers are upsampled (systems/composite/compositor.h, MediaComposition):
-  // true: nearest-depth at depth edges (the engine's default); false: plain bilinear.
+  // true: depth-aware (the engine's default); false: plain bilinear.
   bool depth_aware = true;
   // The final pass in tiles sorted by the work they need (MediaComposition::tiles); false: the
   // full variant on every pixel.
@@ -26,9 +26,9 @@ struct LayersBenchOptions {
   bool billboard_sprites = true;
 };
 
-// Per layer scale 1, 1/2, 1/4, 1/8: fps over the same frames, and the RMSE (linear rgb, the
-// composed view) against the full-resolution layers (always composed with the default,
-// depth-aware upsampling, which at scale 1 is the identity).
+// Per layer scale 1, 1/2, 1/4, 1/8: fps over the same frames, and against the full-resolution
+// layers (at scale 1 nothing is upsampled) the RMSE (linear rgb, the composed view), and near the
+// scene's depth edges edge_rmse and halo (engine/math/depth_edge_error.h; halo_rms beside it).
 nlohmann::json bench_layers(const LayersBenchOptions& options);
 
 struct Table1BenchOptions {

@@ -1,5 +1,5 @@
 #pragma once
-// Long runs (issue 8): `pyro bench soak SCENE --frames N` simulates N frames (rendering every
+// Long runs: `pyro bench soak SCENE --frames N` simulates N frames (rendering every
 // k-th, or none) and watches for NaN or infinity in the particle state, for growth in resident
 // memory and for growth in time per frame. A benchmark, not a timed test.
 #include <string>

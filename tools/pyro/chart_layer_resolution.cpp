@@ -31,7 +31,9 @@ ChartTable chart_layer_resolution(const LayerResolutionChartOptions& o) {
              "same numbers as: pyro bench layers SCENE --width " + std::to_string(o.width) +
                  " --height " + std::to_string(o.height) + " --frames " + std::to_string(o.frames) +
                  " --upsampling depth-aware|bilinear --json (ms = 1000 / fps)"};
-  t.extra_columns = {"scale", "fps", "depth_aware"};
+  // edge_error and halo: engine/math/depth_edge_error.h (bench layers' edge_rmse and halo);
+  // edge_pareto: on the front of time against edge_error.
+  t.extra_columns = {"scale", "fps", "depth_aware", "edge_error", "halo", "edge_pareto"};
   for (bool depth_aware : {true, false}) {
     bench.depth_aware = depth_aware;
     const nlohmann::json r = bench_layers(bench);
@@ -43,10 +45,15 @@ ChartTable chart_layer_resolution(const LayerResolutionChartOptions& o) {
       row.group = method;
       row.time = 1000.0 / fps;
       row.error = s["rmse_vs_full"].get<double>();
-      row.extra = {scale, fps, depth_aware ? 1.0 : 0.0};
+      row.extra = {scale, fps, depth_aware ? 1.0 : 0.0, s["edge_rmse"].get<double>(),
+                   s["halo"].get<double>(), 0.0};
       t.rows.push_back(row);
     }
   }
+  ChartTable edges = t;
+  for (ChartTable::Row& r : edges.rows) r.error = r.extra[3];
+  mark_pareto_front(edges);
+  for (size_t i = 0; i < t.rows.size(); ++i) t.rows[i].extra[5] = edges.rows[i].pareto ? 1.0 : 0.0;
   mark_pareto_front(t);
   return t;
 }

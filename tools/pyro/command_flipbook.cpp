@@ -1,6 +1,6 @@
 // pyro bake-flipbook SCENE --out DIR [--frames N] [--width W] [--height H] [--loop-blend K] [--json]
 // pyro analyze flipbook-pattern [--scene SCENE] [--frames N] [--json]
-// Flipbook fire (Rose 2007, chapter 4; issue 7): baking a flame flipbook from the engine's own
+// Flipbook fire (Rose 2007, chapter 4): baking a flame flipbook from the engine's own
 // fire simulation, and measuring how much a frame pattern marches or circles
 // (systems/flipbook_fire/flipbook_pattern.h).
 #include <cstdio>

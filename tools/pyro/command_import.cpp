@@ -3,8 +3,10 @@
 // Reads one float grid, imports it as Gaussian particles (systems/cloud_import), measures the
 // image error of the splatted particles (the real GL pipeline, offscreen) against the CPU
 // reference render of the grid (systems/reference) from a camera framing the grid, and only then
-// writes the particle file (engine/io/particle_file.h; temporary name, then renamed).
+// writes the particle file (engine/io/particle_file.h: checked as the loader checks it, then
+// written durably).
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <cstdio>
 
@@ -85,6 +87,9 @@ void run_import(const ImportArgs& a) {
   const double import_seconds = imported.import_seconds;
   const double rmse = imported.rmse;
   const std::vector<GaussianParticle>& particles = imported.particles;
+  if (!std::isfinite(rmse))
+    throw UserError(a.file, "grid \"" + grid.name + "\"",
+                    "a grid whose import can be measured, found a non-finite image error");
   progress.update(5);
   progress.finish();
   nlohmann::json meta = {{"source", a.file},      {"grid", grid.name},

@@ -1,7 +1,7 @@
 // pyro profile SCENE [--frames N] [--warmup K] [--width W] [--height H] [--sync-timing] [--json]
 //                    [render options]
 //
-// A profiling session (SceneRuntime with RuntimeOptions::profile): K warm-up frames (shader
+// A profiling run (SceneRuntime with RuntimeOptions::profile): K warm-up frames (shader
 // compilation, first allocations; not counted), then N frames, every system timed on the CPU
 // and every GL pass on the GPU (timer queries). Prints per system the mean, median, 95th
 // percentile and maximum milliseconds, per GPU pass the same plus the fragments it drew
@@ -128,9 +128,8 @@ void run_profile(const ProfileArgs& a) {
     live += set.pool.size();
     capacity += set.pool.capacity();
     if (emitter) {
-      static const char* const medium_names[3] = {"dust", "smoke", "fire"};
       for (size_t i = 0; i < set.pool.size(); ++i)
-        by_medium[medium_names[std::min<size_t>(set.pool.medium[i], 2)]] += 1;
+        by_medium[std::string(name_of(static_cast<ParticleMedium>(set.pool.medium[i])))] += 1;
     }
   });
   const size_t slot_bytes = bytes_per_particle_slot();

@@ -1,7 +1,9 @@
 // pyro render SCENE --out DIR [--width W] [--height H] [--frames N | --frames A:B] [--json]
+//                  [--wait] [--overwrite]
 //
-// Frames are rendered into a temporary folder beside DIR and moved into DIR only when every
-// frame has been written: a failure (or a refusal) leaves DIR as it was. Which steps make which
+// DIR has one writer at a time and a manifest (engine/io/output_folder.h). Frames are rendered
+// into a temporary folder inside DIR and moved into place only when every frame has been
+// written: a failure (or a refusal) leaves DIR as it was. Which steps make which
 // frames (substeps, the motion-blur prefix, ranges) is the runtime's FrameSequencer.
 #include <chrono>
 #include <cstdio>
@@ -15,7 +17,7 @@
 #include "components/draw_list.h"
 #include "engine/core/trace_events.h"
 #include "engine/core/user_error.h"
-#include "engine/io/staging_folder.h"
+#include "engine/io/output_folder.h"
 #include "engine/io/text_file.h"
 #include "systems/quality_picker/quality_picker.h"
 #include "systems/scene/scene_loader.h"
@@ -36,7 +38,8 @@ struct RenderArgs {
   int width = 0, height = 0;
   std::string frames = "1";
   bool json = false;
-  std::string trace;  // --trace FILE: Chrome trace-event JSON of the session
+  std::string trace;  // --trace FILE: Chrome trace-event JSON of the run
+  OutputFolderOptions folder;  // --wait, --overwrite
   RuntimeOptions runtime;
 };
 
@@ -44,12 +47,6 @@ std::string frame_name(int f) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%04d", f);
   return name;
-}
-
-std::string stereo_name(StereoMode mode) {
-  for (const auto& [name, m] : stereo_mode_names())
-    if (m == mode) return name;
-  return "";
 }
 
 size_t drawn_particles(SceneRuntime& runtime) {
@@ -72,8 +69,8 @@ nlohmann::json render_summary(const RenderArgs& a, SceneRuntime& runtime, const 
       {"last_frame", range.last},
       {"width", rs.width},
       {"height", rs.height},
-      {"stereo", stereo_name(rs.stereo_mode)},
-      {"billboards", rs.alignment == BillboardAlignment::viewplane ? "viewplane" : "viewpoint"},
+      {"stereo", name_of(rs.stereo_mode)},
+      {"billboards", name_of(rs.alignment)},
       {"layer_scale", rs.layer_scale},
       {"particles", drawn_particles(runtime)},
       {"files", files},
@@ -83,6 +80,24 @@ nlohmann::json render_summary(const RenderArgs& a, SceneRuntime& runtime, const 
       {"renderer", shared_headless_context().description()}};
   if (!a.trace.empty()) summary["trace"] = a.trace;
   return summary;
+}
+
+// What the output folder's manifest records besides the scene: whatever changes the pixels.
+nlohmann::json pixel_settings(SceneRuntime& runtime, const RuntimeOptions& o) {
+  const RenderSettings& rs = runtime.settings();
+  nlohmann::json s = {{"width", rs.width},
+                      {"height", rs.height},
+                      {"stereo", name_of(rs.stereo_mode)},
+                      {"billboards", name_of(rs.alignment)},
+                      {"layer_scale", rs.layer_scale},
+                      {"frame_scale", o.frame_scale}};
+  if (o.particles) s["particles"] = static_cast<int>(*o.particles);
+  if (o.shading) s["shading"] = static_cast<int>(*o.shading);
+  if (o.interocular) s["interocular"] = *o.interocular;
+  if (o.zero_parallax_distance) s["zero_parallax"] = *o.zero_parallax_distance;
+  if (o.swap_eyes) s["swap_eyes"] = *o.swap_eyes;
+  if (o.quality) s["quality"] = to_json(*o.quality);
+  return s;
 }
 
 void run_render(const RenderArgs& a) {
@@ -110,7 +125,9 @@ void run_render(const RenderArgs& a) {
 
   const auto t0 = std::chrono::steady_clock::now();
   SceneRuntime runtime(scene, options);  // refuses a scene over its budget (scene_budget.h)
-  StagingFolder staging(a.out);
+  const std::string scene_id = std::filesystem::weakly_canonical(a.scene, ec).string();
+  OutputFolder folder(a.out, scene_id, pixel_settings(runtime, options).dump(), a.folder);
+  StagingFolder& staging = folder.staging();
   nlohmann::json files = nlohmann::json::array();
   Progress progress("render " + scene.name, static_cast<size_t>(range.count()));
   runtime.draw_frames(range, [&](int f) {
@@ -119,7 +136,7 @@ void run_render(const RenderArgs& a) {
     progress.update(static_cast<size_t>(f - range.first + 1));
   });
   progress.finish();
-  staging.commit();
+  folder.commit();
   if (!a.trace.empty())
     write_text_file(a.trace, chrome_trace_json(runtime.trace(), "pyro render " + scene.file));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -161,6 +178,10 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--trace", args->trace,
                   "Write a Chrome trace-event JSON file (opens in Perfetto): one span per system "
                   "and GPU pass per frame");
+  cmd->add_flag("--wait", args->folder.wait,
+                "Wait for another run writing into --out to finish (default: refuse)");
+  cmd->add_flag("--overwrite", args->folder.overwrite,
+                "Replace --out's frames of another scene or other settings");
   add_render_options(cmd, args->runtime);
   cmd->callback([args] { run_render(*args); });
 }

@@ -108,9 +108,7 @@ std::vector<ScriptedPress> parse_presses(const std::vector<std::string>& specs) 
 }
 
 int output_width(int view_width, StereoMode mode) {
-  const bool two_wide = mode == StereoMode::side_by_side || mode == StereoMode::side_by_side_crossed ||
-                        mode == StereoMode::left_right;
-  return two_wide ? 2 * view_width : view_width;
+  return two_views_wide(mode) ? 2 * view_width : view_width;
 }
 
 std::string error_text(const std::exception& e) { return e.what(); }
@@ -215,9 +213,9 @@ class Viewer {
             {"particles", particle_count()},
             {"simulation_frame", runtime_->frame()},
             {"paused", settings_.paused},
-            {"camera", controller_.mode() == CameraControl::orbit ? "orbit" : "fly"},
-            {"billboards", settings_.billboards == BillboardAlignment::viewplane ? "viewplane" : "viewpoint"},
-            {"stereo", stereo_mode_label(settings_.stereo)},
+            {"camera", name_of(controller_.mode())},
+            {"billboards", name_of(settings_.billboards)},
+            {"stereo", name_of(settings_.stereo)},
             {"layer_scale", settings_.layer_scale},
             {"screenshot", args_.screenshot},
             {"reloads", reloads},
@@ -375,10 +373,10 @@ class Viewer {
     info.particles = particle_count();
     for (const ecs::SystemStats& s : runtime_->schedule().stats())
       info.system_ms.emplace_back(s.name, system_ms_[s.name]);
-    info.stereo = stereo_mode_label(settings_.stereo);
-    info.billboards = settings_.billboards == BillboardAlignment::viewplane ? "VIEWPLANE" : "VIEWPOINT";
+    info.stereo = upper_case(name_of(settings_.stereo));
+    info.billboards = upper_case(name_of(settings_.billboards));
     info.layer_scale = layer_scale_name(settings_.layer_scale);
-    info.camera = controller_.mode() == CameraControl::orbit ? "ORBIT" : "FLY";
+    info.camera = upper_case(name_of(controller_.mode()));
     info.paused = settings_.paused;
     info.error = reloader_.showing_error() ? reloader_.error() : notice_;
     info.help = settings_.help;

@@ -1,6 +1,7 @@
 // pyro: the Pyrocumulus command line. Exit status: 0 success, 1 internal error, 2 a user error
 // (bad scene file, bad argument; the message names the file and the place), 3 no usable GPU
-// context; a missing or failing helper program (the plotting script) is a 1 with its own message.
+// context; a missing or failing helper program (the plotting script) is a 1 with its own message,
+// and so is a write the system refused (full disk, read-only file system: the file and strerror).
 #include <cstdio>
 #include <exception>
 
@@ -8,6 +9,7 @@
 
 #include "engine/core/user_error.h"
 #include "engine/gpu/gpu_error.h"
+#include "engine/io/io_error.h"
 #include "tools/pyro/app.h"
 #include "tools/pyro/external_tool_error.h"
 
@@ -23,6 +25,9 @@ int main(int argc, char** argv) {
   } catch (const pyro::UserError& e) {
     std::fprintf(stderr, "pyro: error: %s\n", e.what());
     return 2;
+  } catch (const pyro::IoError& e) {
+    std::fprintf(stderr, "pyro: error: %s\n", e.what());
+    return 1;
   } catch (const pyro::gpu::GpuError& e) {
     std::fprintf(stderr, "pyro: GPU error: %s\n", e.what());
     return 3;

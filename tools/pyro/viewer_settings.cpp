@@ -16,17 +16,11 @@ const char* layer_scale_name(float scale) {
   return "1";
 }
 
-const char* stereo_mode_label(StereoMode mode) {
-  switch (mode) {
-    case StereoMode::mono: return "MONO";
-    case StereoMode::left_right: return "LEFT-RIGHT";
-    case StereoMode::side_by_side: return "SIDE-BY-SIDE";
-    case StereoMode::side_by_side_crossed: return "SIDE-BY-SIDE-CROSSED";
-    case StereoMode::anaglyph: return "ANAGLYPH";
-    case StereoMode::anaglyph_color: return "ANAGLYPH-COLOR";
-    case StereoMode::anaglyph_half_color: return "ANAGLYPH-HALF-COLOR";
-  }
-  return "?";
+std::string upper_case(std::string_view name) {
+  std::string text(name);
+  for (char& c : text)
+    if (c >= 'a' && c <= 'z') c = char(c - 'a' + 'A');
+  return text;
 }
 
 ViewerEffect apply_action(ViewerSettings& s, const ViewerAction& a) {

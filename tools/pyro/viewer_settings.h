@@ -1,6 +1,9 @@
 #pragma once
 // What pyro view shows and how, as the keys change it: stereo mode, billboard alignment, layer
 // scale (these three need a new runtime), pause and single steps, the overlay and its help.
+#include <string>
+#include <string_view>
+
 #include "components/render_settings.h"
 #include "systems/scene/scene_description.h"
 #include "tools/pyro/viewer_keys.h"
@@ -32,6 +35,8 @@ ViewerEffect apply_action(ViewerSettings& settings, const ViewerAction& action);
 
 // "1/2" for 0.5, "1" for 1.
 const char* layer_scale_name(float scale);
-const char* stereo_mode_label(StereoMode mode);  // "MONO", "SIDE-BY-SIDE", ...
+// The overlay's font has capitals only: "side-by-side" -> "SIDE-BY-SIDE" (names from the enums'
+// tables, engine/core/enum_names.h).
+std::string upper_case(std::string_view name);
 
 }  // namespace pyro::cli

@@ -1,4 +1,5 @@
 // StagingFolder: files appear in the output folder only on commit(); otherwise nothing is left.
+// The staging folder lives inside the output folder (same file system).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -24,9 +25,9 @@ TEST(StagingFolder, WithoutCommitNothingIsLeft) {
   const fs::path out = dir / "frames";
   {
     StagingFolder staging(out.string());
-    EXPECT_EQ(staging.path().parent_path(), fs::absolute(dir).lexically_normal());
+    EXPECT_EQ(staging.path().parent_path(), fs::absolute(out).lexically_normal());
     std::ofstream(staging.path() / "frame_0000.png") << "partial";
-    EXPECT_EQ(entries(dir), 1u);  // the staging folder, beside `out`
+    EXPECT_EQ(entries(dir), 1u);  // `out`, made for the staging folder
   }
   EXPECT_FALSE(fs::exists(out));
   EXPECT_EQ(entries(dir), 0u);
@@ -45,12 +46,21 @@ TEST(StagingFolder, CommitMovesEveryFileAndKeepsOtherFiles) {
     staging.commit();
   }
   EXPECT_EQ(entries(dir), 1u);  // only `frames`
-  EXPECT_EQ(entries(out), 3u);
+  EXPECT_EQ(entries(out), 3u);  // and no staging folder left inside it
   std::ifstream f0(out / "frame_0000.png");
   std::string text;
   f0 >> text;
   EXPECT_EQ(text, "new0");
   EXPECT_TRUE(fs::exists(out / "notes.txt"));
+}
+
+TEST(StagingFolder, OwnerIsTheProcessIdTheNameEndsWith) {
+  EXPECT_EQ(staging_owner(".partial-4242"), 4242);
+  EXPECT_EQ(staging_owner(".frames.partial-17"), 17);
+  EXPECT_EQ(staging_owner("frame_0000.png"), 0);
+  EXPECT_EQ(staging_owner(".partial-"), 0);
+  EXPECT_EQ(staging_owner(".partial-12x"), 0);
+  EXPECT_EQ(staging_owner("partial-12"), 0) << "only hidden names are staging folders";
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 // and in the two stereo paths (side by side: a list per view; anaglyph: both eyes in one draw).
 // Tiles without media, and tiles without fire, are the same image by construction (to a byte);
 // tiles the classifier finds free of depth edges keep the bilinear sample where the per-pixel
-// nearest-depth test could still pick a texel (geometry the layer never saw), so the bound there
+// depth-aware test could still reweight the texels (geometry the layer never saw), so the bound there
 // is on the RMSE and on the share of pixels that differ.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Flipbooks from a folder of PNG frames (issue 7, "flames from anywhere"): frames read in order,
+// Flipbooks from a folder of PNG frames ("flames from anywhere"): frames read in order,
 // RGB frames made transparent where black, the thesis' preparation steps (crop, black base line,
 // softened base) against their closed form, and bad folders refused naming the folder or file,
 // also through `pyro render` (exit 2, nothing written).

@@ -1,4 +1,4 @@
-// The scene file's "fires" (issue 7): every key read into the component, refusals with JSON
+// The scene file's "fires": every key read into the component, refusals with JSON
 // pointers, and the command-line tools: `pyro bake-flipbook` (frames + manifest that read back as
 // a flipbook; refusals with exit 2 and nothing written) and `pyro analyze flipbook-pattern`.
 #include <gtest/gtest.h>

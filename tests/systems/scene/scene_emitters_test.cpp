@@ -1,4 +1,4 @@
-// The scene file's "environment" and "emitters" (issue 4): every key read into the components,
+// The scene file's "environment" and "emitters": every key read into the components,
 // refusals with JSON pointers and suggestions, and a scene that runs its emitters.
 #include <gtest/gtest.h>
 

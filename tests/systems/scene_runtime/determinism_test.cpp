@@ -1,4 +1,4 @@
-// Determinism (issue 8): the particle state after N frames is the same bit for bit whether the
+// Determinism: the particle state after N frames is the same bit for bit whether the
 // frames were rendered or only simulated (what `pyro render --frames A:B` does before A), and for
 // two runtimes of the same scene; the CPU reference image does not depend on the thread count.
 #include <gtest/gtest.h>

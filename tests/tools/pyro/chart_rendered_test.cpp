@@ -25,6 +25,10 @@ TEST(ChartLayerResolution, ErrorIsZeroAtFullResolutionAndGrowsAsLayersShrink) {
     EXPECT_GT(rows[1].error, 0.0) << rows[1].label;
     EXPECT_GT(rows[3].error, rows[1].error) << rows[3].label;  // 1/8 worse than 1/2
     for (int s = 0; s < 4; ++s) EXPECT_GT(rows[s].time, 0.0);
+    // edge_error and halo (extra columns 3 and 4): none against its own ground truth.
+    EXPECT_EQ(rows[0].extra[3], 0.0) << rows[0].label;
+    EXPECT_EQ(rows[0].extra[4], 0.0) << rows[0].label;
+    EXPECT_GT(rows[3].extra[3], 0.0) << rows[3].label;
   }
   EXPECT_EQ(t.rows[0].group, "depth-aware");
   EXPECT_EQ(t.rows[4].group, "bilinear");

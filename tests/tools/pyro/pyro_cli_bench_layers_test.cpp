@@ -1,4 +1,4 @@
-// pyro bench layers end to end, small: the JSON the issue asks for (per scale fps and RMSE
+// pyro bench layers end to end, small: the JSON it prints (per scale fps and RMSE
 // against full resolution), the methods it ran with, and the comparison options. The RMSE at
 // full resolution is 0 by definition; a reduced layer's is not.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Profiling sessions end to end (issue 6, part 4): `pyro render --trace` writes Chrome trace
+// Profiling runs end to end: `pyro render --trace` writes Chrome trace
 // events with one span per system per frame nested in its frame, GPU passes on their own track
 // with the explosion's three layers inside billboard_render; `pyro profile --json` has every
 // system with consistent statistics and the explosion's known particle counts.

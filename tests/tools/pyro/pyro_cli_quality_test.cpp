@@ -1,4 +1,4 @@
-// Quality from an error target end to end (issue 6, part 3), on a small cheap Gaussian scene:
+// Quality from an error target end to end, on a small cheap Gaussian scene:
 // `pyro render` of a scene with quality.max_rmse picks settings whose frame, as written to PNG,
 // is within the target of the CPU reference computed here (render_particles_reference over the
 // scene's background: an independent path); the pick is cached and reused without measuring,

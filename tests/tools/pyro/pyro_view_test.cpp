@@ -158,7 +158,7 @@ TEST(PyroView, KeysSwitchModesPauseStepAndQuit) {
        "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = test::last_json_line(r.out);
-  EXPECT_EQ(j["stereo"], "ANAGLYPH");
+  EXPECT_EQ(j["stereo"], "anaglyph");  // the names of --stereo and the scene file
   EXPECT_EQ(j["billboards"], "viewpoint");
   EXPECT_EQ(j["layer_scale"], 0.25);
   EXPECT_EQ(j["paused"], true);

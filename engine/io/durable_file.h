@@ -1,0 +1,39 @@
+#pragma once
+// Durable, atomic file output. Bytes go to a temporary file beside the destination
+// (`NAME.partial-PID`); every write, the fsync and the close are checked, then the file is
+// renamed into place and its folder fsynced. A reader never sees a half-written file under the
+// final name, and once commit() returns the file survives a crash. Any failure throws IoError
+// (the file and strerror) and removes the temporary file; a destination folder that does not
+// exist is the user's mistake (UserError).
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace pyro {
+
+class DurableFile {
+ public:
+  explicit DurableFile(std::string path);  // creates the temporary file
+  ~DurableFile();                          // removes it unless committed
+  DurableFile(const DurableFile&) = delete;
+  DurableFile& operator=(const DurableFile&) = delete;
+
+  void write(const void* data, size_t size);
+  void write(std::string_view bytes) { write(bytes.data(), bytes.size()); }
+  // fsync, close, rename over `path`, fsync of the folder.
+  void commit();
+
+ private:
+  [[noreturn]] void fail(const std::string& action, int os_error);
+  std::string path_, temp_;
+  int fd_ = -1;
+  bool committed_ = false;
+};
+
+// DurableFile in one call.
+void write_file_durably(const std::string& path, std::string_view bytes);
+
+// fsync of a folder, so that the renames and creations inside it are on disk. Throws IoError.
+void sync_folder(const std::string& folder);
+
+}  // namespace pyro
