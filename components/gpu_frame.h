@@ -22,14 +22,14 @@ struct EyeTargets {
   // three small targets would each go to one thread in turn. Null otherwise.
   std::unique_ptr<gpu::RenderTarget> media_atlas;
   // Made from the three each frame at layer size before the final pass: the media composited
-  // in order (premultiplied RGBA16F), and (RGBA16F) the view depth each layer texel was rendered
-  // against, the fire's opacity and the heat shimmer's offset, so the full-size pass reads one
+  // in order (premultiplied RGBA16F), and (RGBA16F) 1/z of the view depth z each layer texel was
+  // rendered against, the fire's opacity and the heat shimmer's offset, so the full-size pass reads one
   // layer, not three.
   std::unique_ptr<gpu::RenderTarget> media_combined;
   std::unique_ptr<gpu::RenderTarget> media_depth;
-  // With media: per 8-pixel cell of the view, the view depths (near, far) the frame's particles
-  // reach there (RG32F, systems/composite/particle_depth_grid.h), written each frame by the
-  // composite system for depth-aware upsampling; 0 otherwise.
+  // With media: per 8-pixel cell of the view, 1/z at the far and the near end of the view depths
+  // z the frame's particles reach there (RG32F, systems/composite/particle_depth_grid.h), written
+  // each frame by the composite system for depth-aware upsampling; 0 otherwise.
   gpu::Texture particle_depths;
 };
 

@@ -50,12 +50,12 @@ layout(binding = 3) uniform sampler2D u_right_layer;
 layout(binding = 4) uniform sampler2D u_left_depth;
 layout(binding = 5) uniform sampler2D u_right_depth;
 layout(binding = 6) uniform sampler2D u_left_media;        // media_prepare.frag: composited
-layout(binding = 7) uniform sampler2D u_left_media_depth;  // view depth, fire opacity, shimmer offset
+layout(binding = 7) uniform sampler2D u_left_media_depth;  // 1/z, fire opacity, shimmer offset
 layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
-// Per u_depth_cell-pixel cell of the view, the view depths (near, far) its particles reach
-// (systems/composite/particle_depth_grid.h): depths that clamp alike to it give a texel the same
-// media.
+// Per u_depth_cell-pixel cell of the view, 1/z at the far and the near end of the view depths z
+// its particles reach (systems/composite/particle_depth_grid.h): depths that clamp alike to them
+// give a texel the same media.
 layout(binding = 11) uniform sampler2D u_left_particle_depths;
 layout(binding = 12) uniform sampler2D u_right_particle_depths;
 uniform int u_depth_cell;
@@ -63,8 +63,7 @@ uniform int u_depth_cell;
 // volume taken on the CPU (two channels: the x and y offsets), repeating; media_prepare.frag
 // multiplies it by the fire's opacity and u_shimmer at layer size into media_depth.ba.
 uniform float u_depth_tolerance;  // clip depths closer (share of their extent): bilinear
-uniform float u_near;
-uniform float u_far;
+uniform vec2 u_inverse_depth;  // 1/z = x - y d for a window depth d
 uniform mat3 u_left_matrix;
 uniform mat3 u_right_matrix;
 uniform ivec2 u_origin;  // the viewport's lower-left corner in the output: views map 1:1
@@ -74,9 +73,9 @@ layout(location = 0) out vec4 o_color;
 
 #if MEDIA
 #if DEPTH_AWARE
-// 1/z of a window depth, affine in it (the inverse of media_prepare.frag's view depth).
+// 1/z of a window depth, affine in it: 1/n - d (f - n) / (n f) for the clip distances n, f.
 float inverse_depth(float window_depth) {
-  return (u_far - window_depth * (u_far - u_near)) / (u_near * u_far);
+  return u_inverse_depth.x - window_depth * u_inverse_depth.y;
 }
 
 float max4(vec4 v) { return max(max(v.x, v.y), max(v.z, v.w)); }
@@ -134,13 +133,11 @@ vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth,
   vec2 p0 = floor((lo + 0.5) * s) + 0.5 - (vec2(texel) + 0.5);
   vec2 p1 = floor((hi + 0.5) * s) + 0.5 - (vec2(texel) + 0.5);
   vec4 predicted = u + g.x * vec4(p0.x, p1.x, p1.x, p0.x) + g.y * vec4(p1.y, p1.y, p0.y, p0.y);
-  // Clip depths, clamped in u (a prediction beyond the horizon, u <= 0, clamps to the far end).
-  vec2 near_far = texelFetch(particle_depths, texel / u_depth_cell, 0).rg;
-  vec2 range = 1.0 / near_far.yx;
-  float extent = max(near_far.y - near_far.x, 1e-30);  // 0 where no particle reaches: r = 0
-  vec4 texel_u = 1.0 / textureGather(media_depth, uv, 0);
-  vec4 r = abs(1.0 / clamp(texel_u, range.x, range.y) - 1.0 / clamp(predicted, range.x, range.y)) /
-           extent;
+  // Clip depths, clamped in 1/z (a prediction beyond the horizon, u <= 0, clamps to the far end).
+  vec2 range = texelFetch(particle_depths, texel / u_depth_cell, 0).rg;  // 1/z: far, near
+  float extent = max(range.y - range.x, 1e-30);  // 0 where no particle reaches: r = 0
+  vec4 texel_u = textureGather(media_depth, uv, 0);
+  vec4 r = abs(clamp(texel_u, range.x, range.y) - clamp(predicted, range.x, range.y)) / extent;
   const float rho = 0.5, kappa = 1e-4;
   vec4 b = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
   vec4 q = r * r / (rho * rho);

@@ -43,7 +43,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 // The units compose.frag reads (Compositor::bind_views).
 layout(binding = 6) uniform sampler2D u_left_media;         // layer size, premultiplied
-layout(binding = 7) uniform sampler2D u_left_media_depth;   // view depth, fire opacity, offset
+layout(binding = 7) uniform sampler2D u_left_media_depth;   // 1/z, fire opacity, offset
 layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
 layout(binding = 11) uniform sampler2D u_left_particle_depths;  // compose.frag says what they are
@@ -100,7 +100,7 @@ uint eye_class(sampler2D media, sampler2D media_depth, sampler2D particle_depths
     int row = (y - t0.y + 1) % 3;
     for (int i = 0; i < width; ++i) {
       ivec2 at = clamp(ivec2(t0.x - 1 + i, y), ivec2(0), layer - 1);
-      rows[row][i] = 1.0 / texelFetch(media_depth, at, 0).r;
+      rows[row][i] = texelFetch(media_depth, at, 0).r;  // 1/z
     }
     if (y < t0.y + 1) continue;
     int below = (row + 1) % 3, centre = (row + 2) % 3;  // rows y - 2 and y - 1
@@ -110,16 +110,15 @@ uint eye_class(sampler2D media, sampler2D media_depth, sampler2D particle_depths
       ivec2 t = ivec2(t0.x - 1 + i, y - 1);
       vec2 centre_pixel = (vec2(clamp(t, ivec2(0), layer - 1)) + 0.5) * pixels_per_texel;
       ivec2 cell = ivec2(centre_pixel) / u_depth_cell;
-      vec2 near_far = texelFetch(particle_depths, cell, 0).rg;
-      vec2 range = 1.0 / near_far.yx;
+      vec2 range = texelFetch(particle_depths, cell, 0).rg;  // 1/z: far, near
       vec2 a = vec2(rows[centre][i - 1], rows[below][i]);
       vec2 b = vec2(rows[centre][i + 1], rows[row][i]);
       vec2 second = abs(a + b - 2.0 * u);
       // Clip depths: can the particles tell the three texels apart?
-      vec2 ca = 1.0 / clamp(a, range.x, range.y), cb = 1.0 / clamp(b, range.x, range.y);
-      float cu = 1.0 / clamp(u, range.x, range.y);
+      vec2 ca = clamp(a, range.x, range.y), cb = clamp(b, range.x, range.y);
+      float cu = clamp(u, range.x, range.y);
       vec2 apart = max(abs(ca - cu), abs(cb - cu));
-      float seen = u_depth_tolerance * (near_far.y - near_far.x);
+      float seen = u_depth_tolerance * (range.y - range.x);
       edge = edge || (second.x > u_depth_tolerance * u && apart.x > seen) ||
              (second.y > u_depth_tolerance * u && apart.y > seen);
     }

@@ -42,8 +42,9 @@ MediaComposition media_composition(const ecs::World& world) {
 }
 
 // Each view's particle depth grid (particle_depth_grid.h) into EyeTargets::particle_depths, as
-// (near, far) from the near plane on; a cell no particle reaches gets one depth, so that every
-// depth clamps alike there. Without a draw list nothing is known: every cell spans all depths.
+// 1/z at its far and near end (from the near plane on); a cell no particle reaches gets one value,
+// so that every depth clamps alike there. Without a draw list nothing is known: every cell spans
+// all depths.
 void upload_particle_depths(const ecs::World& world, GpuFrame& frame, float near) {
   const EyeDrawLists* lists = world.try_resource<EyeDrawLists>();
   const View* view = world.try_resource<View>();
@@ -66,7 +67,7 @@ void upload_particle_depths(const ecs::World& world, GpuFrame& frame, float near
     for (size_t i = 0; i < texels.size(); ++i) {
       const ParticleDepthRange& r = grid.ranges[i];
       const float lo = std::max(r.near, near);
-      texels[i] = lo > r.far ? glm::vec2(1.0f) : glm::vec2(lo, r.far);
+      texels[i] = lo > r.far ? glm::vec2(1.0f) : glm::vec2(1.0f / r.far, 1.0f / lo);
     }
     glTextureSubImage2D(eye.particle_depths.get(), 0, 0, 0, grid.cells.x, grid.cells.y, GL_RG,
                         GL_FLOAT, texels.data());

@@ -133,8 +133,8 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
     if (media_bound_) {
       glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
       glUniform1i(loc("u_depth_cell"), ParticleDepthGrid::cell_pixels);
-      glUniform1f(loc("u_near"), media_.near);
-      glUniform1f(loc("u_far"), media_.far);
+      const float n = media_.near, f = media_.far;
+      glUniform2f(loc("u_inverse_depth"), 1.0f / n, (f - n) / (n * f));
     }
   };
   // Layers at full size need no upsampling: every pixel reads its own texel.

@@ -25,7 +25,7 @@ struct MediaComposition {
   bool depth_aware = true;
   // The difference of clip depths (depths clamped to the views' EyeTargets::particle_depths, as
   // a share of their extent) up to which a texel counts as having seen the pixel's surface.
-  float depth_tolerance = 0.05f;
+  float depth_tolerance = 0.15f;
   // Compose in screen tiles sorted by the work they need (systems/composite/compose_tiles.h);
   // false: every pixel runs the full variant (the same image, slower; for tests and comparison).
   bool tiles = true;

@@ -49,8 +49,82 @@ const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(MeshKind kind) {
   return meshes_.emplace(kind, std::move(g)).first->second;
 }
 
+namespace {
+
+// Everything the opaque image depends on, as numbers.
+std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
+                               const RenderSettings& settings, const gpu::RenderTarget& target) {
+  std::vector<float> k;
+  auto put = [&](const float* v, size_t n) { k.insert(k.end(), v, v + n); };
+  put(glm::value_ptr(frame.view_projection), 16);
+  put(glm::value_ptr(settings.light_direction), 3);
+  put(glm::value_ptr(settings.light_color), 3);
+  put(glm::value_ptr(settings.ambient), 3);
+  put(glm::value_ptr(settings.background), 3);
+  k.push_back(static_cast<float>(target.width()));
+  k.push_back(static_cast<float>(target.height()));
+  k.push_back(static_cast<float>(target.format()));
+  k.push_back(glIsEnabled(GL_FRAMEBUFFER_SRGB) ? 1.0f : 0.0f);  // how GL encodes the clear
+  for (const MeshInstance& m : instances) {
+    k.push_back(static_cast<float>(m.kind));
+    put(glm::value_ptr(m.position), 3);
+    k.push_back(m.scale);
+    put(glm::value_ptr(m.color), 3);
+  }
+  return k;
+}
+
+void copy_image(GLuint from, GLuint to, const gpu::RenderTarget& target) {
+  glCopyImageSubData(from, GL_TEXTURE_2D, 0, 0, 0, 0, to, GL_TEXTURE_2D, 0, 0, 0, 0,
+                     target.width(), target.height(), 1);
+}
+
+}  // namespace
+
 void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                         const RenderSettings& settings, const gpu::RenderTarget& target) {
+  std::vector<float> inputs = draw_inputs(instances, frame, settings, target);
+  Drawn& last = drawn_[target.color_texture()];
+  if (last.color && last.inputs == inputs) {
+    copy_image(last.color.get(), target.color_texture(), target);
+    copy_image(last.depth.get(), target.depth_texture(), target);
+    leave_state(!instances.empty(), settings, target);
+    return;
+  }
+  draw_meshes(instances, frame, settings, target);
+  ++meshes_drawn_;
+  const glm::ivec3 shape(target.width(), target.height(), static_cast<int>(target.format()));
+  if (!last.color || last.shape != shape) {
+    last.shape = shape;
+    last.color = gpu::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(last.color.get(), 1, target.format(), target.width(), target.height());
+    last.depth = gpu::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(last.depth.get(), 1, GL_DEPTH_COMPONENT32F, target.width(), target.height());
+  }
+  copy_image(target.color_texture(), last.color.get(), target);
+  copy_image(target.depth_texture(), last.depth.get(), target);
+  last.inputs = std::move(inputs);
+}
+
+void MeshRenderer::leave_state(bool meshes, const RenderSettings& settings,
+                               const gpu::RenderTarget& target) const {
+  target.bind();
+  glClearColor(settings.background.x, settings.background.y, settings.background.z, 1.0f);
+  glClearDepth(1.0);
+  glDepthMask(GL_TRUE);
+  if (!meshes) return;
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_BLEND);
+  glCullFace(GL_BACK);
+  glDisable(GL_CULL_FACE);
+  glFrontFace(GL_CCW);
+  glBindVertexArray(0);
+}
+
+void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
+                               const CameraFrame& frame, const RenderSettings& settings,
+                               const gpu::RenderTarget& target) {
   target.bind();
   glClearColor(settings.background.x, settings.background.y, settings.background.z, 1.0f);
   glClearDepth(1.0);

@@ -1,6 +1,9 @@
 #pragma once
 // GPU state of the opaque pass: one vertex/index buffer pair per procedural mesh kind.
 #include <map>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "components/mesh_instance.h"
 #include "components/render_settings.h"
@@ -14,9 +17,16 @@ namespace pyro {
 class MeshRenderer {
  public:
   MeshRenderer();
-  // Clears `target` to the background and draws every instance with depth.
+  // Clears `target` to the background and draws every instance with depth. When the last draw
+  // into this target had the same inputs (the instances, the view, the lights, the background and
+  // the sRGB state: everything the image depends on), its colour and depth are copied back
+  // instead, the same bytes for a fraction of the cost: the opaque scene of a still camera is
+  // drawn once. Other passes may have drawn into the target since; the copy undoes that as the
+  // clear would.
   void draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
             const RenderSettings& settings, const gpu::RenderTarget& target);
+  // How many of the draws so far drew the meshes (the others copied the last image back).
+  int meshes_drawn() const { return meshes_drawn_; }
 
  private:
   struct GpuMesh {
@@ -26,6 +36,20 @@ class MeshRenderer {
     bool closed = false;  // seen only from outside: back faces culled
   };
   const GpuMesh& mesh_for(MeshKind kind);
+  void draw_meshes(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
+                   const RenderSettings& settings, const gpu::RenderTarget& target);
+  // The GL state a draw leaves, set again after a copy.
+  void leave_state(bool meshes, const RenderSettings& settings,
+                   const gpu::RenderTarget& target) const;
+
+  // The last draw into a target (by its colour texture): its inputs and its image.
+  struct Drawn {
+    std::vector<float> inputs;
+    glm::ivec3 shape{0};  // the target's width, height and colour format
+    gpu::Texture color, depth;
+  };
+  std::map<GLuint, Drawn> drawn_;
+  int meshes_drawn_ = 0;
 
   gpu::Program program_;         // linear output: a floating-point target, or GL encodes
   gpu::Program encode_program_;  // writes sRGB itself (srgb_encode.glsl), GL_FRAMEBUFFER_SRGB off

@@ -17,7 +17,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/text_file.h"
 #include "engine/math/billboard_alignment.h"
-#include "tools/pyro/alignment_figures.h"
+#include "systems/charts/alignment_figures.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/external_tool_error.h"

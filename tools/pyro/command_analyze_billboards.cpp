@@ -14,7 +14,7 @@
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
-#include "tools/pyro/scene_frame_timing.h"
+#include "systems/benchmarks/frame_timing.h"
 
 namespace pyro::cli {
 
@@ -57,9 +57,9 @@ void run(const Args& a) {
   const SceneDescription scene = load_scene(a.scene);
   const size_t per_mode = size_t(a.frames) + 2;
   Progress progress("analyze billboard-modes", 2 * per_mode);
-  progress.stage(0, "viewplane");
+  progress.stage(0, std::string(name_of(BillboardAlignment::viewplane)));
   const ModeRun plane = run_mode(scene, a, BillboardAlignment::viewplane, progress, 0);
-  progress.stage(per_mode, "viewpoint");
+  progress.stage(per_mode, std::string(name_of(BillboardAlignment::viewpoint)));
   const ModeRun point = run_mode(scene, a, BillboardAlignment::viewpoint, progress, per_mode);
   progress.finish();
   const nlohmann::json out = {

@@ -1,6 +1,7 @@
-// pyro bench ecs --entities N [--repeats R] --json
-// pyro bench render SCENE [--width W] [--height H] [--frames N] --json
-// pyro bench soak SCENE [--frames N] [--render-every K] --json
+// pyro bench ecs | render | johnson | layers | table1 | soak | vdb | schedule ... [--json]
+//
+// Each subcommand parses its options, runs the benchmark (systems/benchmarks; bench ecs:
+// tools/pyro/bench_ecs.h) and prints its result.
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -8,11 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include "tools/pyro/bench_ecs.h"
-#include "tools/pyro/bench_johnson.h"
-#include "tools/pyro/bench_layers.h"
-#include "tools/pyro/bench_render.h"
-#include "tools/pyro/bench_soak.h"
+#include "systems/benchmarks/bench_johnson.h"
+#include "systems/benchmarks/bench_layers.h"
+#include "systems/benchmarks/bench_render.h"
+#include "systems/benchmarks/bench_soak.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/progress.h"
+#include "tools/pyro/render_options.h"
 
 namespace pyro::cli {
 
@@ -26,14 +29,7 @@ void print(const nlohmann::json& result, bool json) {
   }
 }
 
-}  // namespace
-
-void add_bench_commands(CLI::App& app) {
-  CLI::App* bench = app.add_subcommand("bench", "Benchmarks, printed as ratios to a baseline run alongside");
-  bench->require_subcommand(1);
-  add_bench_vdb_command(*bench);
-  add_bench_schedule_command(*bench);
-
+void add_bench_ecs(CLI::App* bench) {
   struct EcsArgs { size_t entities = 1000000; int repeats = 15; bool json = false; };
   auto ecs = std::make_shared<EcsArgs>();
   CLI::App* ecs_cmd = bench->add_subcommand(
@@ -43,7 +39,9 @@ void add_bench_commands(CLI::App& app) {
       ->check(CLI::Range(1, 1000));
   ecs_cmd->add_flag("--json", ecs->json, "Print one JSON object");
   ecs_cmd->callback([ecs] { print(bench_ecs(ecs->entities, ecs->repeats), ecs->json); });
+}
 
+void add_bench_render(CLI::App* bench) {
   struct RenderArgs { RenderBenchOptions options; bool json = false; };
   auto render = std::make_shared<RenderArgs>();
   CLI::App* render_cmd = bench->add_subcommand(
@@ -55,8 +53,13 @@ void add_bench_commands(CLI::App& app) {
   render_cmd->add_option("--repeats", render->options.pass_repeats, "Timed particle passes per shader")
       ->check(CLI::Range(1, 10000));
   render_cmd->add_flag("--json", render->json, "Print one JSON object");
-  render_cmd->callback([render] { print(bench_render(render->options), render->json); });
+  render_cmd->callback([render] {
+    render->options.progress = terminal_progress();
+    print(bench_render(render->options), render->json);
+  });
+}
 
+void add_bench_johnson(CLI::App* bench) {
   struct JohnsonArgs { JohnsonBenchOptions options; bool json = false; };
   auto johnson = std::make_shared<JohnsonArgs>();
   CLI::App* johnson_cmd = bench->add_subcommand(
@@ -79,11 +82,15 @@ void add_bench_commands(CLI::App& app) {
   johnson_cmd->add_flag("--sync-timing", johnson->options.sync_timing,
                         "Finish GPU work after each system so per-system times include it");
   johnson_cmd->add_flag("--json", johnson->json, "Print one JSON object");
-  johnson_cmd->callback([johnson] { print(bench_johnson(johnson->options), johnson->json); });
+  johnson_cmd->callback([johnson] {
+    johnson->options.progress = terminal_progress();
+    print(bench_johnson(johnson->options), johnson->json);
+  });
+}
 
+void add_bench_layers(CLI::App* bench) {
   struct LayersArgs {
     LayersBenchOptions options;
-    std::string upsampling = "depth-aware", compose = "tiled", billboards = "sprites";
     bool json = false;
   };
   auto layers = std::make_shared<LayersArgs>();
@@ -99,25 +106,25 @@ void add_bench_commands(CLI::App& app) {
                          "Layer scales to run (default 1 0.5 0.25 0.125; speed-ups are against the first)")
       ->check(CLI::Range(0.01f, 1.0f))
       ->expected(1, 8);
-  layers_cmd->add_option("--upsampling", layers->upsampling,
-                         "How reduced layers are upsampled: depth-aware (default) or bilinear")
-      ->check(CLI::IsMember({"depth-aware", "bilinear"}));
-  layers_cmd->add_option("--compose", layers->compose,
-                         "Final pass: tiled (default; each screen tile runs only the work it needs) "
-                         "or per-pixel (the full variant everywhere; the same image)")
-      ->check(CLI::IsMember({"tiled", "per-pixel"}));
-  layers_cmd->add_option("--billboards", layers->billboards,
-                         "Billboard primitive: sprites (default; a point sprite per particle where "
-                         "it fits) or quads (the same image)")
-      ->check(CLI::IsMember({"sprites", "quads"}));
+  LayersBenchOptions& lo = layers->options;
+  add_enum_option<LayerUpsampling>(
+      layers_cmd, "--upsampling", [&lo](LayerUpsampling v) { lo.upsampling = v; },
+      "How reduced layers are upsampled (default the first)");
+  add_enum_option<ComposeMode>(
+      layers_cmd, "--compose", [&lo](ComposeMode v) { lo.compose = v; },
+      "Final pass, tiled by the work each tile needs or the full variant per pixel (the same "
+      "image; default the first)");
+  add_enum_option<BillboardGeometry>(
+      layers_cmd, "--billboards", [&lo](BillboardGeometry v) { lo.billboards = v; },
+      "Billboard primitive, point sprites where they fit or quads (the same image; default the first)");
   layers_cmd->add_flag("--json", layers->json, "Print one JSON object");
   layers_cmd->callback([layers] {
-    layers->options.depth_aware = layers->upsampling == "depth-aware";
-    layers->options.compose_tiles = layers->compose == "tiled";
-    layers->options.billboard_sprites = layers->billboards == "sprites";
+    layers->options.progress = terminal_progress();
     print(bench_layers(layers->options), layers->json);
   });
+}
 
+void add_bench_table1(CLI::App* bench) {
   struct Table1Args { Table1BenchOptions options; bool json = false; };
   auto table1 = std::make_shared<Table1Args>();
   CLI::App* table1_cmd = bench->add_subcommand(
@@ -125,8 +132,13 @@ void add_bench_commands(CLI::App& app) {
   table1_cmd->add_option("--scene", table1->options.scene, "Explosion scene (JSON)");
   table1_cmd->add_option("--frames", table1->options.frames, "Timed frames per row")->check(CLI::Range(1, 100000));
   table1_cmd->add_flag("--json", table1->json, "Print one JSON object");
-  table1_cmd->callback([table1] { print(bench_table1(table1->options), table1->json); });
+  table1_cmd->callback([table1] {
+    table1->options.progress = terminal_progress();
+    print(bench_table1(table1->options), table1->json);
+  });
+}
 
+void add_bench_soak(CLI::App* bench) {
   struct SoakArgs { SoakBenchOptions options; bool json = false; };
   auto soak = std::make_shared<SoakArgs>();
   CLI::App* soak_cmd = bench->add_subcommand(
@@ -141,7 +153,23 @@ void add_bench_commands(CLI::App& app) {
   soak_cmd->add_option("--width", soak->options.width, "Width when rendering")->check(CLI::Range(16, 8192));
   soak_cmd->add_option("--height", soak->options.height, "Height when rendering")->check(CLI::Range(16, 8192));
   soak_cmd->add_flag("--json", soak->json, "Print one JSON object");
-  soak_cmd->callback([soak] { print(bench_soak(soak->options), soak->json); });
+  soak_cmd->callback([soak] {
+    soak->options.progress = terminal_progress();
+    print(bench_soak(soak->options), soak->json);
+  });
+}
+
+}  // namespace
+
+void add_bench_commands(CLI::App& app) {
+  CLI::App* bench = app.add_subcommand("bench", "Benchmarks, printed as ratios to a baseline run alongside");
+  bench->require_subcommand(1);
+  add_bench_vdb_command(*bench);
+  add_bench_schedule_command(*bench);
+
+  for (const auto add : {add_bench_ecs, add_bench_render, add_bench_johnson, add_bench_layers,
+                         add_bench_table1, add_bench_soak})
+    add(bench);
 }
 
 }  // namespace pyro::cli

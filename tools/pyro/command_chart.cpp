@@ -11,7 +11,7 @@
 
 #include "engine/core/user_error.h"
 #include "engine/io/text_file.h"
-#include "tools/pyro/charts.h"
+#include "systems/charts/charts.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/plot_script.h"
 

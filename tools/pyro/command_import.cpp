@@ -17,7 +17,7 @@
 #include "engine/io/vdb_reader.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
-#include "tools/pyro/vdb_import_evaluation.h"
+#include "systems/benchmarks/vdb_import_evaluation.h"
 
 namespace pyro::cli {
 

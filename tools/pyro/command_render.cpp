@@ -14,7 +14,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "components/draw_list.h"
 #include "engine/core/trace_events.h"
 #include "engine/core/user_error.h"
 #include "engine/io/output_folder.h"
@@ -22,6 +21,7 @@
 #include "systems/quality_picker/quality_picker.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/frame_range.h"
+#include "systems/scene_runtime/particle_counts.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
@@ -49,11 +49,6 @@ std::string frame_name(int f) {
   return name;
 }
 
-size_t drawn_particles(SceneRuntime& runtime) {
-  const auto* lists = runtime.world().try_resource<EyeDrawLists>();
-  return lists && !lists->eyes.empty() ? lists->eyes[0].size() : 0;
-}
-
 nlohmann::json render_summary(const RenderArgs& a, SceneRuntime& runtime, const FrameRange& range,
                               const nlohmann::json& files, double seconds) {
   const RenderSettings& rs = runtime.settings();
@@ -72,7 +67,7 @@ nlohmann::json render_summary(const RenderArgs& a, SceneRuntime& runtime, const 
       {"stereo", name_of(rs.stereo_mode)},
       {"billboards", name_of(rs.alignment)},
       {"layer_scale", rs.layer_scale},
-      {"particles", drawn_particles(runtime)},
+      {"particles", drawn_particles(runtime.world())},
       {"files", files},
       {"seconds", seconds},
       {"ms_per_frame", seconds * 1000.0 / range.count()},
@@ -91,8 +86,8 @@ nlohmann::json pixel_settings(SceneRuntime& runtime, const RuntimeOptions& o) {
                       {"billboards", name_of(rs.alignment)},
                       {"layer_scale", rs.layer_scale},
                       {"frame_scale", o.frame_scale}};
-  if (o.particles) s["particles"] = static_cast<int>(*o.particles);
-  if (o.shading) s["shading"] = static_cast<int>(*o.shading);
+  if (o.particles) s["particles"] = name_of(*o.particles);
+  if (o.shading) s["shading"] = name_of(*o.shading);
   if (o.interocular) s["interocular"] = *o.interocular;
   if (o.zero_parallax_distance) s["zero_parallax"] = *o.zero_parallax_distance;
   if (o.swap_eyes) s["swap_eyes"] = *o.swap_eyes;

@@ -5,9 +5,12 @@
 // the last step and when the stage named changes.
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include <unistd.h>
+
+#include "engine/core/progress_sink.h"
 
 namespace pyro::cli {
 
@@ -65,5 +68,27 @@ class Progress {
   bool drawn_ = false;
   std::chrono::steady_clock::time_point start_, last_{};
 };
+
+// The engine's progress reports (engine/core/progress_sink.h) as a bar on stderr when it is a
+// terminal: one Progress per task.
+class TerminalProgress : public ProgressSink {
+ public:
+  void begin(const std::string& label, size_t total) override { bar_.emplace(label, total); }
+  void update(size_t done, const std::string& stage) override {
+    if (!bar_) return;
+    if (stage.empty()) bar_->update(done);
+    else bar_->stage(done, stage);
+  }
+  void finish() override { bar_.reset(); }
+
+ private:
+  std::optional<Progress> bar_;
+};
+
+// The process's terminal progress, for the commands to hand to long work.
+inline ProgressSink* terminal_progress() {
+  static TerminalProgress progress;
+  return &progress;
+}
 
 }  // namespace pyro::cli

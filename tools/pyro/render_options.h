@@ -3,10 +3,14 @@
 // alignment, particles, layer and frame scale, eye order and separation. The accepted names are
 // the enums' own tables (engine/core/enum_names.h), so the scene file and the command line
 // cannot drift apart.
+#include <functional>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "components/render_modes.h"
+#include "components/render_settings.h"
+#include "components/stereo_camera.h"
 #include "engine/core/enum_names.h"
 #include "systems/scene_runtime/runtime_options.h"
 #include "tools/pyro/print_note.h"

@@ -1,0 +1,119 @@
+#include "systems/benchmarks/bench_vdb.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "engine/core/user_error.h"
+#include "systems/cloud_import/cloud_import.h"
+#include "systems/cloud_import/grid_framing.h"
+#include "systems/reference/rgb_image.h"
+#include "systems/reference/volume_reference.h"
+#include "systems/scene_runtime/particle_snapshot.h"
+
+namespace pyro {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+std::string vec(const glm::dvec3& v) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g", v.x, v.y, v.z);
+  return buf;
+}
+
+// vdb_render's command line for the grid seen by `cam` through `medium`, writing `image`.
+std::string vdb_render_command(const VdbBenchOptions& a, const DenseGrid& grid,
+                               const CameraDescription& cam, const VolumeMedium& medium,
+                               const std::string& image) {
+  const double voxel_length = std::cbrt(std::abs(grid.voxel_size[0] * grid.voxel_size[1] * grid.voxel_size[2]));
+  const double sigma_voxel = medium.extinction * voxel_length;
+  const double scatter = sigma_voxel * medium.albedo, absorb = sigma_voxel - scatter;
+  const double fov_x = 2.0 * std::atan(std::tan(0.5 * glm::radians(double(cam.fov_y_deg))) * a.width / a.height);
+  const glm::dvec3 to_light = -glm::normalize(medium.light_direction);
+  std::string grid_option;
+  if (!a.grid.empty()) grid_option = " -name '" + a.grid + "'";
+  return a.vdb_render + " '" + a.file + "' '" + image + "'" + grid_option + " -res " +
+         std::to_string(a.width) + "x" + std::to_string(a.height) + " -translate " +
+         vec(glm::dvec3(cam.position)) + " -lookat " + vec(glm::dvec3(cam.target)) + " -up " +
+         vec(glm::dvec3(cam.up)) + " -fov " + std::to_string(glm::degrees(fov_x)) + " -absorb " +
+         vec(glm::dvec3(absorb)) + " -scatter " + vec(glm::dvec3(scatter)) + " -light " +
+         vec(to_light) + "," + vec(medium.light_color) + " -gain 0 -step 0.5 -shadowstep 1" +
+         " -cpus 0 > /dev/null 2>&1";
+}
+
+// Runs `cmd`; its wall time in seconds, or a negative number when it failed.
+double time_vdb_render(const std::string& cmd, const std::filesystem::path& image) {
+  const auto t = std::chrono::steady_clock::now();
+  const int status = std::system(cmd.c_str());
+  const double seconds = seconds_since(t);
+  std::error_code ec;
+  std::filesystem::remove(image, ec);
+  return status == 0 ? seconds : -1.0 - status;
+}
+
+}  // namespace
+
+nlohmann::json bench_vdb(const VdbBenchOptions& a) {
+  ProgressTask progress(a.progress, "bench vdb", 5);
+  progress.stage(0, "read");
+  std::string note;
+  const DenseGrid grid = read_vdb_grid(a.file, {a.grid, a.grid_index}, &note);
+  if (!note.empty() && a.on_note) a.on_note(a.file + ": " + note);
+  if (grid.empty()) throw UserError(a.file, "grid \"" + grid.name + "\"", "a grid with active voxels to render");
+  CloudImportOptions opt;
+  opt.medium = default_medium(grid);
+  opt.tau_tolerance = tau_tolerance_for_error(a.error);
+  progress.stage(1, "import");
+  auto t = std::chrono::steady_clock::now();
+  CloudImportReport rep;
+  const std::vector<GaussianParticle> particles = import_cloud(grid, opt, &rep);
+  const double import_seconds = seconds_since(t);
+
+  const CameraDescription cam = framing_camera(grid);
+  SnapshotTiming timing;
+  progress.stage(2, "splats");
+  const RgbImage splat = render_particle_snapshot(particles, cam, a.width, a.height,
+                                                  glm::vec3(opt.medium.background), 3, &timing);
+  progress.stage(3, "reference");
+  t = std::chrono::steady_clock::now();
+  const std::vector<float> light = light_optical_depth(grid, opt.medium);
+  const RgbImage ref = render_volume_reference(grid, light, camera_frame(cam, a.width, a.height), opt.medium);
+  const double reference_seconds = seconds_since(t);
+
+  const std::filesystem::path image =
+      std::filesystem::temp_directory_path() / ("pyro_bench_vdb_" + std::to_string(::getpid()) + ".ppm");
+  const std::string cmd = vdb_render_command(a, grid, cam, opt.medium, image.string());
+  progress.stage(4, "vdb_render");
+  const double vdb_render_seconds = time_vdb_render(cmd, image);
+  progress.update(5);
+  progress.finish();
+  const bool vdb_ok = vdb_render_seconds >= 0.0;
+  if (!vdb_ok && a.on_note)
+    a.on_note("vdb_render failed (status " + std::to_string(int(-1.0 - vdb_render_seconds)) + "): " + cmd);
+  return {{"file", a.file},
+          {"width", a.width},
+          {"height", a.height},
+          {"active_voxels", rep.active_voxels},
+          {"particles", rep.particles},
+          {"import_seconds", import_seconds},
+          {"splat_ms", timing.render_seconds * 1e3},
+          {"reference_ms", reference_seconds * 1e3},
+          {"vdb_render_ms", vdb_ok ? vdb_render_seconds * 1e3 : -1.0},
+          {"speedup_vs_vdb_render", vdb_ok ? vdb_render_seconds / timing.render_seconds : 0.0},
+          {"speedup_vs_reference", reference_seconds / timing.render_seconds},
+          {"rmse_vs_reference", image_rmse(ref, splat)},
+          {"vdb_render_command", cmd}};
+}
+
+}  // namespace pyro

@@ -1,0 +1,64 @@
+#pragma once
+// The data of `pyro chart NAME` (tools/pyro/command_chart.cpp), one function per chart, one file
+// each (chart_<name>.cpp). Each measures through the same code as the matching bench or analyze
+// command, so its points agree with their figures. Sizes are the charts' defaults; tests pass
+// smaller ones.
+#include <string>
+#include <vector>
+
+#include "systems/charts/chart_table.h"
+
+namespace pyro {
+
+// Table size x quadrature rule x intervals (engine/math/footprint.h, as `pyro analyze
+// footprint`): time to build the table against the error of the raw table, sampled bilinearly,
+// against the erf closed form.
+struct FootprintChartOptions {
+  std::vector<int> sizes{8, 16, 32, 64, 128};
+  std::vector<int> intervals{2, 4, 8, 16, 32};  // even, for Simpson's rule
+  int sample_grid = 241;
+  int repeats = 3;  // the table build is timed as the best of this many
+};
+ChartTable chart_footprint(const FootprintChartOptions& options);
+
+// Explicit Euler against the engine's exponential integrator
+// (systems/animation/particle_integrator.h) as the step grows, against the exact solution.
+struct IntegratorChartOptions {
+  std::vector<double> steps{1.0 / 480, 1.0 / 240, 1.0 / 120, 1.0 / 60, 1.0 / 30,
+                            1.0 / 15,  0.125,     0.25,      0.5};
+  double horizon = 2.0;  // seconds simulated; each step divides it
+  double drag = 10.0;    // k (1/s): explicit Euler is unstable for k dt > 2
+  int particles = 1000;  // particles stepped per timing (time per particle is reported)
+};
+ChartTable chart_integrators(const IntegratorChartOptions& options);
+
+// Viewplane, viewpoint and spherical billboards on scenes, against the CPU reference.
+struct BillboardModesChartOptions {
+  std::vector<std::string> scenes;  // empty: clouds, fog and explosion from content/scenes
+  int width = 160, height = 120;
+  int frames = 5;  // timed frames per mode
+};
+ChartTable chart_billboard_modes(const BillboardModesChartOptions& options);
+
+// Explosion media layers at 1, 1/2, 1/4, 1/8 with each upsampling method (`pyro bench layers`).
+struct LayerResolutionChartOptions {
+  std::string scene;  // empty: content/scenes/explosion.json
+  int width = 256, height = 256;
+  int frames = 16;
+  int error_frames = 4;
+};
+ChartTable chart_layer_resolution(const LayerResolutionChartOptions& options);
+
+// VDB import error targets -> particles, render time, image error (`pyro import-vdb`).
+struct ParticleBudgetChartOptions {
+  std::vector<std::string> files;  // empty: the sample cloud, and the Disney cloud when present
+  std::vector<double> error_targets{0.01, 0.02, 0.03, 0.05, 0.08, 0.12};
+  int width = 128, height = 128;
+  int repeats = 3;  // the splat render is timed as the best of this many
+};
+ChartTable chart_particle_budget(const ParticleBudgetChartOptions& options);
+
+// "footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators".
+std::vector<std::string> chart_names();
+
+}  // namespace pyro

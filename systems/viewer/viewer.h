@@ -1,0 +1,49 @@
+#pragma once
+// The interactive viewer (pyro view): a GLFW window (engine/gpu/window_context.h) whose context
+// the scene runtime renders with; each frame the runtime's output is letterboxed into the window
+// (window_image.h) and the overlay drawn over it. The logic lives in window-free files with
+// their own tests: the keys (viewer_keys.h), what they change (viewer_settings.h), the camera
+// (engine/math/view_controller.h), hot reload (scene_reloader.h) and the overlay's text
+// (viewer_overlay.h); this module and engine_window are the only code that links GLFW.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "systems/scene/scene_description.h"
+#include "systems/scene_runtime/runtime_options.h"
+
+namespace pyro {
+
+// At `frame`, `content` is written over the scene file in place, as an editor saving would; the
+// hot reload then finds the edit like any other.
+struct ViewerEdit {
+  uint64_t frame = 0;
+  std::string content;
+};
+
+// At `frame`, `key` (GLFW_KEY_*) is pressed, through the same path as a real press.
+struct ViewerPress {
+  uint64_t frame = 0;
+  int key = 0;
+};
+
+struct ViewerOptions {
+  std::string scene;           // the file shown and watched
+  int width = 0, height = 0;   // view size; 0: the scene's
+  int frames = 0;              // 0: until the window is closed
+  std::string screenshot;      // PNG of the window after the last frame (or when closed)
+  bool overlay = true;
+  RuntimeOptions runtime;      // stereo mode, billboards, layer scale: the keys change them later
+  std::vector<ViewerEdit> edits;
+  std::vector<ViewerPress> presses;
+  NoteSink on_note;            // reloads, good and failed
+};
+
+// Opens the window (GpuError when there is no display or no OpenGL 4.5 context), shows `scene`
+// until the window closes, Esc, or options.frames frames, and returns the summary: frames, fps,
+// milliseconds per frame (runtime and window parts), the settings at the end, the reloads.
+nlohmann::json run_viewer(const ViewerOptions& options, SceneDescription scene);
+
+}  // namespace pyro
