@@ -5,7 +5,7 @@ set(PYRO_CONSUMER_PREFIX ${CMAKE_BINARY_DIR}/consumer-prefix)
 set(PYRO_CONSUMER_BUILD ${CMAKE_BINARY_DIR}/consumer-build)
 string(TOUPPER "${CMAKE_BUILD_TYPE}" build_type)
 # The same compiler and flags as this build (a sanitizer build's libraries need its flags to link).
-set(PYRO_CONSUMER_ARGS -DCMAKE_PREFIX_PATH=${PYRO_CONSUMER_PREFIX}
+set(PYRO_CONSUMER_ARGS -DCMAKE_PREFIX_PATH=${PYRO_CONSUMER_PREFIX} -DCONSUMER_WINDOW=ON
   -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE}
   -DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER}
   "-DCMAKE_CXX_FLAGS=${CMAKE_CXX_FLAGS}"
@@ -35,7 +35,8 @@ set_tests_properties(consumer_install consumer_configure consumer_build PROPERTI
 add_test(NAME consumer_render
   COMMAND ${PYRO_CONSUMER_BUILD}/spin_render --out ${PYRO_CONSUMER_BUILD}/spin_render.png)
 add_test(NAME consumer_gtest COMMAND ${PYRO_CONSUMER_BUILD}/consumer_tests)
-set_tests_properties(consumer_render consumer_gtest PROPERTIES
+add_test(NAME consumer_window_gtest COMMAND ${PYRO_CONSUMER_BUILD}/consumer_window_tests)
+set_tests_properties(consumer_render consumer_gtest consumer_window_gtest PROPERTIES
   FIXTURES_REQUIRED "consumer_installed;consumer_configured;consumer_built"
   ENVIRONMENT_MODIFICATION "PYRO_CONTENT_DIR=unset:;PYRO_FLIPBOOK_DIR=unset:")
 # A program linking Pyrocumulus::engine from the package needs no GLFW either.
@@ -43,4 +44,5 @@ add_test(NAME consumer_links_no_glfw
   COMMAND ${CMAKE_COMMAND} -DBINARY=${PYRO_CONSUMER_BUILD}/spin_render -DFORBIDDEN=glfw
           -P ${CMAKE_SOURCE_DIR}/cmake/check_needed_libraries.cmake)
 set_tests_properties(consumer_links_no_glfw PROPERTIES
-  FIXTURES_REQUIRED "consumer_installed;consumer_configured;consumer_built")
+  FIXTURES_REQUIRED "consumer_installed;consumer_configured;consumer_built"
+  ENVIRONMENT_MODIFICATION "LD_PRELOAD=unset:;ASAN_OPTIONS=unset:;LSAN_OPTIONS=unset:")

@@ -3,10 +3,10 @@
 // resolution) with the reduced-resolution particle layer, if any, upsampled bilinearly and
 // composited over it (premultiplied "over"); or, for explosions, the media layers (Umenhoffer et
 // al. 2006, section 4) upsampled (depth-aware or bilinear) and composited over the scene, whose
-// lookup the fire distorts (heat shimmer). Then the output is L * left + R * right, clamped, on linear
-// values (engine/math/anaglyph.h gives the matrices: identity/zero for a single view, Dubois or
-// colour/half-colour for anaglyphs). The target is sRGB: with SRGB_ENCODE the shader encodes
-// (GL_FRAMEBUFFER_SRGB off: cheaper on llvmpipe), else GL does (or the target is linear).
+// lookup the fire distorts (heat shimmer). Then the output is L * left + R * right, clamped, on
+// linear values (engine/math/anaglyph.h gives the matrices: identity/zero for a single view,
+// Dubois or colour/half-colour for anaglyphs). The target is sRGB: with SRGB_ENCODE the shader
+// encodes (GL_FRAMEBUFFER_SRGB off: cheaper on llvmpipe), else GL does (or the target is linear).
 //
 // Variants (defines from systems/composite/compositor.cpp; on llvmpipe a branch on a uniform
 // runs both sides, fetches included, so what is off is compiled out):
@@ -50,7 +50,7 @@ layout(binding = 3) uniform sampler2D u_right_layer;
 layout(binding = 4) uniform sampler2D u_left_depth;
 layout(binding = 5) uniform sampler2D u_right_depth;
 layout(binding = 6) uniform sampler2D u_left_media;        // media_prepare.frag: composited
-layout(binding = 7) uniform sampler2D u_left_media_depth;  // 1/z, fire opacity, shimmer offset
+layout(binding = 7) uniform sampler2D u_left_media_depth;  // +-1/z, fire opacity, shimmer offset
 layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
 // Per u_depth_cell-pixel cell of the view, 1/z at the far and the near end of the view depths z
@@ -136,15 +136,18 @@ vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth,
   // Clip depths, clamped in 1/z (a prediction beyond the horizon, u <= 0, clamps to the far end).
   vec2 range = texelFetch(particle_depths, texel / u_depth_cell, 0).rg;  // 1/z: far, near
   float extent = max(range.y - range.x, 1e-30);  // 0 where no particle reaches: r = 0
-  vec4 texel_u = textureGather(media_depth, uv, 0);
+  vec4 texel_u = abs(textureGather(media_depth, uv, 0));  // (negative on edges: media_prepare)
   vec4 r = abs(clamp(texel_u, range.x, range.y) - clamp(predicted, range.x, range.y)) / extent;
   const float rho = 0.5, kappa = 1e-4;
   vec4 b = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
   vec4 q = r * r / (rho * rho);
   vec4 w = b * (exp(-q * q) + kappa);
   w /= dot(w, vec4(1.0));
-  vec4 weighted = vec4(dot(w, textureGather(media, uv, 0)), dot(w, textureGather(media, uv, 1)),
-                       dot(w, textureGather(media, uv, 2)), dot(w, textureGather(media, uv, 3)));
+  // The four texels whole (four fetches, where a gather per channel reads sixteen).
+  ivec2 t0 = ivec2(lo), t1 = ivec2(hi);
+  vec4 weighted = w.x * texelFetch(media, ivec2(t0.x, t1.y), 0) +
+                  w.y * texelFetch(media, t1, 0) + w.z * texelFetch(media, ivec2(t1.x, t0.y), 0) +
+                  w.w * texelFetch(media, t0, 0);
   return max4(r) <= u_depth_tolerance ? bilinear : weighted;
 }
 #endif

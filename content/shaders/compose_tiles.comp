@@ -13,17 +13,12 @@
 //          pixels show the scene alone: exact;
 //   fire   any fire opacity above 0: the shimmer's offset (opacity times noise) is not 0.
 //          Without, the scene is read unshifted: exact;
-//   edge   a depth edge in the layer that the particles can see: at some texel the second
-//          difference of u = 1/z (the layer's view depths) along x or y exceeds the tolerance
-//          times u, and the three texels' clip depths (clamped to the depths the particles reach
-//          there, systems/composite/particle_depth_grid.h) differ by more than the tolerance
-//          times that range's extent, compose.frag's test. u is affine on a plane, so a slope (the
-//          ground receding) is no edge however steep; a silhouette between texels is a jump; a
-//          horizon behind the particles clamps alike. Where neither holds, compose.frag's
-//          depth-aware test keeps the bilinear sample at every pixel whose surface the texels
-//          saw. Not exact: geometry thinner than a layer texel, which no texel saw, is not found,
-//          and there the bilinear sample is kept where compose.frag's per-pixel test might
-//          reweight (all four texels carry the background's media).
+//   edge   a depth edge in the layer that the particles can see: a texel whose 1/z is negative
+//          (media_prepare.frag marks them, and says what an edge is). Where there is none,
+//          compose.frag's depth-aware test keeps the bilinear sample at every pixel whose
+//          surface the texels saw. Not exact: geometry thinner than a layer texel, which no texel
+//          saw, is not found, and there the bilinear sample is kept where compose.frag's
+//          per-pixel test might reweight (all four texels carry the background's media).
 // The class is media | edge << 1 | fire << 2, or 0 (the scene alone) without media; each tile is
 // appended to its class's list, and counts[c] is the list's length.
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -46,8 +41,6 @@ layout(binding = 6) uniform sampler2D u_left_media;         // layer size, premu
 layout(binding = 7) uniform sampler2D u_left_media_depth;   // 1/z, fire opacity, offset
 layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
-layout(binding = 11) uniform sampler2D u_left_particle_depths;  // compose.frag says what they are
-layout(binding = 12) uniform sampler2D u_right_particle_depths;
 
 layout(std430, binding = 0) buffer TileLists {
   uint counts[8];  // per class c: the length of its list
@@ -59,10 +52,9 @@ uniform int u_tile_count;         // u_tiles.x * u_tiles.y
 uniform int u_tile_pixels;        // P
 uniform ivec2 u_view_size;        // pixels
 uniform vec2 u_texels_per_pixel;  // s, at most 1
-uniform float u_depth_tolerance;
-uniform int u_depth_cell;         // their cells' size in pixels
 
 float max4(vec4 v) { return max(max(v.x, v.y), max(v.z, v.w)); }
+float min4(vec4 v) { return min(min(v.x, v.y), min(v.z, v.w)); }
 
 // textureGather's 2x2 block with lower-left texel b: uv at the block's centre. b is kept inside so
 // that the last texel is read in a block and no texel outside.
@@ -70,7 +62,7 @@ vec2 block_uv(ivec2 b, ivec2 size) {
   return (vec2(min(b, max(size - 2, ivec2(0)))) + 1.0) / vec2(size);
 }
 
-uint eye_class(sampler2D media, sampler2D media_depth, sampler2D particle_depths, ivec2 tile) {
+uint eye_class(sampler2D media, sampler2D media_depth, ivec2 tile) {
   ivec2 layer = textureSize(media, 0);
   ivec2 p0 = tile * u_tile_pixels;
   ivec2 p1 = min(p0 + u_tile_pixels, u_view_size) - 1;
@@ -78,7 +70,7 @@ uint eye_class(sampler2D media, sampler2D media_depth, sampler2D particle_depths
   ivec2 hi = ivec2(floor((vec2(p1) + 0.5) * u_texels_per_pixel - 0.5)) + 1;
   ivec2 t0 = clamp(lo - 1, ivec2(0), layer - 1);
   ivec2 t1 = clamp(hi + 1, ivec2(0), layer - 1);
-  float alpha = 0.0, fire = 0.0;
+  float alpha = 0.0, fire = 0.0, inverse_depth = 1.0;
   for (int y = t0.y; y <= t1.y; y += 2) {
     for (int x = t0.x; x <= t1.x; x += 2) {
       vec2 uv = block_uv(ivec2(x, y), layer);
@@ -86,46 +78,12 @@ uint eye_class(sampler2D media, sampler2D media_depth, sampler2D particle_depths
 #if FIRE
       fire = max(fire, max4(textureGather(media_depth, uv, 1)));
 #endif
-    }
-  }
 #if EDGES
-  // Depth edges: second differences of the layer's 1/z along x and y, row by row (three rows
-  // kept), at every footprint texel.
-  bool edge = false;
-  vec2 pixels_per_texel = 1.0 / u_texels_per_pixel;
-  const int span = 40;  // >= footprint width + 2: at most P s + 6 <= 38 (P = 32, s <= 1: grid_for)
-  float rows[3][span];
-  int width = t1.x - t0.x + 3;
-  for (int y = t0.y - 1; y <= t1.y + 1; ++y) {
-    int row = (y - t0.y + 1) % 3;
-    for (int i = 0; i < width; ++i) {
-      ivec2 at = clamp(ivec2(t0.x - 1 + i, y), ivec2(0), layer - 1);
-      rows[row][i] = texelFetch(media_depth, at, 0).r;  // 1/z
-    }
-    if (y < t0.y + 1) continue;
-    int below = (row + 1) % 3, centre = (row + 2) % 3;  // rows y - 2 and y - 1
-    for (int i = 1; i < width - 1; ++i) {
-      float u = rows[centre][i];
-      // The depths the particles reach around this texel (a cell's range covers its neighbours).
-      ivec2 t = ivec2(t0.x - 1 + i, y - 1);
-      vec2 centre_pixel = (vec2(clamp(t, ivec2(0), layer - 1)) + 0.5) * pixels_per_texel;
-      ivec2 cell = ivec2(centre_pixel) / u_depth_cell;
-      vec2 range = texelFetch(particle_depths, cell, 0).rg;  // 1/z: far, near
-      vec2 a = vec2(rows[centre][i - 1], rows[below][i]);
-      vec2 b = vec2(rows[centre][i + 1], rows[row][i]);
-      vec2 second = abs(a + b - 2.0 * u);
-      // Clip depths: can the particles tell the three texels apart?
-      vec2 ca = clamp(a, range.x, range.y), cb = clamp(b, range.x, range.y);
-      float cu = clamp(u, range.x, range.y);
-      vec2 apart = max(abs(ca - cu), abs(cb - cu));
-      float seen = u_depth_tolerance * (range.y - range.x);
-      edge = edge || (second.x > u_depth_tolerance * u && apart.x > seen) ||
-             (second.y > u_depth_tolerance * u && apart.y > seen);
+      inverse_depth = min(inverse_depth, min4(textureGather(media_depth, uv, 0)));
+#endif
     }
   }
-#else
-  bool edge = false;
-#endif
+  bool edge = inverse_depth < 0.0;
   if (alpha <= 0.0) return 0u;
   uint c = 1u;
   if (edge) c |= 2u;
@@ -138,10 +96,10 @@ void main() {
   if (any(greaterThanEqual(tile, u_tiles))) return;
   uint c = 0u;
 #if USE_LEFT
-  c |= eye_class(u_left_media, u_left_media_depth, u_left_particle_depths, tile);
+  c |= eye_class(u_left_media, u_left_media_depth, tile);
 #endif
 #if USE_RIGHT
-  c |= eye_class(u_right_media, u_right_media_depth, u_right_particle_depths, tile);
+  c |= eye_class(u_right_media, u_right_media_depth, tile);
 #endif
   uint slot = atomicAdd(counts[c], 1u);
   tiles[int(c) * u_tile_count + int(slot)] = uint(tile.x) | uint(tile.y) << 16;

@@ -4,7 +4,6 @@
 #include <string>
 
 #include "engine/gpu/shader_program.h"
-#include "systems/composite/particle_depth_grid.h"
 
 namespace pyro {
 
@@ -56,8 +55,6 @@ void ComposeTiles::classify(const Grid& grid, const Classify& how, int slot) {
   glUniform1i(loc("u_tile_pixels"), tile_pixels);
   glUniform2i(loc("u_view_size"), grid.view.x, grid.view.y);
   glUniform2f(loc("u_texels_per_pixel"), grid.texels_per_pixel.x, grid.texels_per_pixel.y);
-  glUniform1f(loc("u_depth_tolerance"), how.depth_tolerance);
-  glUniform1i(loc("u_depth_cell"), ParticleDepthGrid::cell_pixels);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lists_[s].get());
   glDispatchCompute(static_cast<GLuint>((grid.tiles.x + 7) / 8), static_cast<GLuint>((grid.tiles.y + 7) / 8), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

@@ -40,9 +40,8 @@ class ComposeTiles {
 
   struct Classify {
     bool use_left = true, use_right = false;  // the views this draw reads (bound by the caller)
-    bool edges = true;                        // depth-aware upsampling: find depth edges
-    bool fire = true;                         // heat shimmer: find fire
-    float depth_tolerance = 0.15f;
+    bool edges = true;  // depth-aware upsampling: find the edges media_prepare.frag marked
+    bool fire = true;   // heat shimmer: find fire
   };
   // Fills list set `slot` (0 or 1: the two views of a side-by-side frame) for `grid`, reading the
   // views' depth and media textures on compose.frag's units.

@@ -13,7 +13,8 @@
 namespace pyro {
 
 Compositor::Compositor()
-    : media_prepare_(gpu::load_program("fullscreen.vert", "media_prepare.frag")),
+    : media_prepare_{gpu::load_program("fullscreen.vert", "media_prepare.frag", {"EDGES 0"}),
+                     gpu::load_program("fullscreen.vert", "media_prepare.frag", {"EDGES 1"})},
       prepare_fbo_(gpu::make_framebuffer()),
       empty_(gpu::make_vertex_array()) {}
 
@@ -83,7 +84,7 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glBindTextureUnit(12, r.particle_depths.get());
 }
 
-void Compositor::prepare_media(const EyeTargets& eye) {
+void Compositor::prepare_media(const EyeTargets& eye, bool edges) {
   const gpu::GpuPassScope pass("media prepare");  // profiling hook (no-op by default)
   const gpu::RenderTarget& combined = *eye.media_combined;
   const GLuint fbo = prepare_fbo_.get();
@@ -95,11 +96,12 @@ void Compositor::prepare_media(const EyeTargets& eye) {
   glViewport(0, 0, combined.width(), combined.height());
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  glUseProgram(media_prepare_.get());
+  const gpu::Program& program = media_prepare_[edges ? 1 : 0];
+  glUseProgram(program.get());
   glBindVertexArray(empty_.get());
   glBindTextureUnit(0, eye.media_atlas->color_texture());
   glBindTextureUnit(3, eye.scene->depth_texture());
-  auto loc = [&](const char* name) { return gpu::uniform_location(media_prepare_, name); };
+  auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
   glUniform2f(loc("u_scale"), static_cast<float>(eye.scene->width()) / combined.width(),
               static_cast<float>(eye.scene->height()) / combined.height());
   glUniform1f(loc("u_near"), media_.near);
@@ -109,6 +111,11 @@ void Compositor::prepare_media(const EyeTargets& eye) {
   glBindTextureUnit(4, shimmer_noise_.get());
   glUniform1f(loc("u_shimmer"), media_.shimmer);
   glUniform1f(loc("u_shimmer_tiling"), 3.0f);  // noise periods across the view
+  if (edges) {
+    glBindTextureUnit(5, eye.particle_depths.get());
+    glUniform1i(loc("u_depth_cell"), ParticleDepthGrid::cell_pixels);
+    glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
+  }
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -154,7 +161,6 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
   how.use_right = use_right;
   how.edges = all.depth_aware;
   how.fire = all.shimmer;
-  how.depth_tolerance = media_.depth_tolerance;
   {
     const gpu::GpuPassScope pass("tile classify");
     tiles_.classify(grid, how, slot);
@@ -188,7 +194,11 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
 
 void Compositor::compose(StereoMode mode, GpuFrame& frame, bool swap_eyes, float motion_blur) {
   for (const EyeTargets& eye : frame.eyes)
-    if (eye.media_combined) prepare_media(eye);
+    if (eye.media_combined) {
+      const bool reduced = eye.media_combined->width() != eye.scene->width() ||
+                           eye.media_combined->height() != eye.scene->height();
+      prepare_media(eye, media_.depth_aware && reduced);
+    }
   const gpu::RenderTarget& out = *frame.output;
   const bool blur = motion_blur > 0.0f && frame.history;
   if (blur) {

@@ -55,8 +55,9 @@ class Compositor {
  private:
   // Binds the views' textures (the same units for every variant of compose.frag).
   void bind_views(const EyeTargets& left, const EyeTargets& right);
-  // Explosion media: the three layers composited, and their depths, at layer size.
-  void prepare_media(const EyeTargets& eye);
+  // Explosion media: the three layers composited, and their depths, at layer size; `edges`: the
+  // texels on depth edges marked (media_prepare.frag).
+  void prepare_media(const EyeTargets& eye, bool edges);
   // One full-screen draw with the compose.frag variant for these matrices (a zero matrix
   // compiles that view out) and the bound views' kind (plain, layers, media).
   // With media, the draw is split into tiles (list set `slot`: one per view of a frame).
@@ -74,7 +75,7 @@ class Compositor {
   void upload_shimmer_noise(float time);
 
   std::array<gpu::Program, 512> compose_;  // compose.frag variants, compiled on first use
-  gpu::Program media_prepare_;
+  std::array<gpu::Program, 2> media_prepare_;  // without and with EDGES
   gpu::Framebuffer prepare_fbo_;  // two outputs: media_combined and media_depth
   gpu::VertexArray empty_;
   MediaComposition media_;
