@@ -44,4 +44,5 @@ add_test(NAME consumer_links_no_glfw
   COMMAND ${CMAKE_COMMAND} -DBINARY=${PYRO_CONSUMER_BUILD}/spin_render -DFORBIDDEN=glfw
           -P ${CMAKE_SOURCE_DIR}/cmake/check_needed_libraries.cmake)
 set_tests_properties(consumer_links_no_glfw PROPERTIES
-  FIXTURES_REQUIRED "consumer_installed;consumer_configured;consumer_built")
+  FIXTURES_REQUIRED "consumer_installed;consumer_configured;consumer_built"
+  ENVIRONMENT_MODIFICATION "LD_PRELOAD=unset:;ASAN_OPTIONS=unset:;LSAN_OPTIONS=unset:")

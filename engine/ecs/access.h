@@ -92,6 +92,8 @@ class Access {
   // One past the largest declared type id: the World's type tables must be this large before
   // systems run in parallel (World::reserve_type_slots), so that none of them grows a table.
   std::size_t type_slots() const { return modes_.size(); }
+  // The AccessMode of each type id below type_slots(), as bytes.
+  const uint8_t* mode_table() const { return modes_.data(); }
 
  private:
   template <class... Ts>
@@ -108,10 +110,23 @@ class Access {
   std::vector<uint8_t> modes_;  // AccessMode by type id
 };
 
-// The system running on this thread under a Schedule.
+// The system running on this thread under a Schedule, with its access table flattened so that
+// a check is one load from it.
 struct RunningSystem {
+  RunningSystem(const std::string& system_name, const Access& system_access)
+      : name(&system_name),
+        access(&system_access),
+        modes(system_access.mode_table()),
+        slots(system_access.type_slots()) {}
+
+  bool allows(std::size_t id, AccessMode wanted) const {
+    return id < slots && modes[id] >= static_cast<uint8_t>(wanted);
+  }
+
   const std::string* name;
   const Access* access;
+  const uint8_t* modes;
+  std::size_t slots;
 };
 
 namespace detail {
@@ -146,7 +161,7 @@ class RunningSystemScope {
 template <class T>
 inline void check_access(AccessMode wanted, const char* op) {
   const RunningSystem* s = detail::running_system;
-  if (s && !s->access->allows(type_id<T>(), wanted)) [[unlikely]]
+  if (s && !s->allows(type_id<T>(), wanted)) [[unlikely]]
     throw_undeclared_access(*s, type_name<std::remove_cvref_t<T>>(), wanted, op);
 }
 

@@ -1,12 +1,182 @@
 #include "engine/ecs/schedule.h"
 
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
+
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "engine/ecs/world.h"
 
 namespace pyro::ecs {
+
+namespace {
+
+// Worker threads numbered 1, 2, ... by the first system each runs, process-wide and for the
+// thread's lifetime, so a trace shows one track per thread.
+int worker_number() {
+  static std::atomic<int> next{1};
+  thread_local const int number = next.fetch_add(1, std::memory_order_relaxed);
+  return number;
+}
+
+int thread_of(std::thread::id caller) {
+  return std::this_thread::get_id() == caller ? 0 : worker_number();
+}
+
+}  // namespace
+
+// The arena the systems run in (its concurrency is the schedule's thread count) and, per
+// system, the later systems of its phase that wait for it and how many earlier ones it waits
+// for: those it names in `after` and those it conflicts with.
+struct Schedule::Executor {
+  Executor(const Schedule& s, int threads)
+      : arena(threads > 0 ? threads : tbb::task_arena::automatic, 1),
+        successors(s.systems_.size()),
+        predecessors(s.systems_.size(), 0) {
+    for (std::size_t j = 0; j < s.systems_.size(); ++j)
+      for (std::size_t i = 0; i < j && s.systems_[i].phase <= s.systems_[j].phase; ++i) {
+        if (s.systems_[i].phase != s.systems_[j].phase) continue;
+        const std::vector<std::string>& after = s.systems_[j].after;
+        const bool named = std::find(after.begin(), after.end(), s.systems_[i].name) != after.end();
+        if (!named && !s.systems_[i].access.conflicts_with(s.systems_[j].access)) continue;
+        successors[i].push_back(j);
+        ++predecessors[j];
+      }
+  }
+
+  tbb::task_arena arena;
+  std::vector<std::vector<std::size_t>> successors;
+  std::vector<int> predecessors;
+};
+
+namespace {
+
+// One phase's systems [first, first + count) run as their dependencies allow: the others on
+// TBB workers (tasks of one group), main_thread systems on the calling thread, which otherwise
+// waits. A failure stops systems from starting; the first exception is rethrown at the end.
+template <class RunSystem>
+class PhaseRun {
+ public:
+  PhaseRun(const std::vector<SystemDesc>& systems,
+           const std::vector<std::vector<std::size_t>>& successors,
+           const std::vector<int>& predecessors, std::size_t first, std::size_t count,
+           RunSystem run)
+      : systems_(systems),
+        successors_(successors),
+        first_(first),
+        count_(count),
+        run_(std::move(run)),
+        waiting_(std::make_unique<std::atomic<int>[]>(count)) {
+    for (std::size_t k = 0; k < count; ++k) waiting_[k].store(predecessors[first + k]);
+  }
+
+  void run() {
+    bool on_caller = false;
+    for (std::size_t k = 0; k < count_; ++k)
+      on_caller = on_caller || systems_[first_ + k].main_thread;
+    // The roots, found before any is launched: once systems run, counters reach 0 as their
+    // predecessors finish, and those systems are launched by the predecessors.
+    std::vector<std::size_t> roots;
+    for (std::size_t k = 0; k < count_; ++k)
+      if (waiting_[k].load() == 0) roots.push_back(first_ + k);
+    for (const std::size_t i : roots) launch(i);
+    if (on_caller) serve_caller();
+    group_.wait();  // with no main_thread system, the caller works through the tasks here
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  void launch(std::size_t i) {
+    if (systems_[i].main_thread) {
+      {
+        const std::lock_guard lock(mutex_);
+        ready_on_caller_.push_back(i);
+      }
+      wake_.notify_one();
+      return;
+    }
+    group_.run([this, i] { execute(i); });
+  }
+
+  void execute(std::size_t i) {
+    if (!failed_.load()) {
+      try {
+        // Isolated: while the system waits inside its own parallel loops, its thread takes only
+        // that loop's work, never another system (which would count into this one's time).
+        tbb::this_task_arena::isolate([&] { run_(i); });
+      } catch (...) {
+        const std::lock_guard lock(mutex_);
+        if (!error_) error_ = std::current_exception();
+        failed_.store(true);
+      }
+    }
+    for (const std::size_t next : successors_[i])
+      if (waiting_[next - first_].fetch_sub(1) == 1) launch(next);
+    {
+      const std::lock_guard lock(mutex_);
+      ++done_;
+    }
+    wake_.notify_one();
+  }
+
+  // The calling thread runs the main_thread systems as they become ready, lowest index (the
+  // sequential order) first, until every system of the phase is done.
+  void serve_caller() {
+    std::unique_lock lock(mutex_);
+    while (done_ < count_) {
+      wake_.wait(lock, [&] { return !ready_on_caller_.empty() || done_ == count_; });
+      while (!ready_on_caller_.empty()) {
+        const auto next = std::min_element(ready_on_caller_.begin(), ready_on_caller_.end());
+        const std::size_t i = *next;
+        ready_on_caller_.erase(next);
+        lock.unlock();
+        execute(i);
+        lock.lock();
+      }
+    }
+  }
+
+  const std::vector<SystemDesc>& systems_;
+  const std::vector<std::vector<std::size_t>>& successors_;
+  const std::size_t first_, count_;
+  RunSystem run_;
+  std::unique_ptr<std::atomic<int>[]> waiting_;
+  tbb::task_group group_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::vector<std::size_t> ready_on_caller_;
+  std::size_t done_ = 0;
+  std::atomic<bool> failed_{false};
+  std::exception_ptr error_;
+};
+
+}  // namespace
+
+Schedule::Schedule() = default;
+Schedule::~Schedule() = default;
+Schedule::Schedule(Schedule&&) noexcept = default;
+Schedule& Schedule::operator=(Schedule&&) noexcept = default;
+
+int Schedule::effective_threads() const {
+  return threads_ > 0 ? threads_ : tbb::info::default_concurrency();
+}
+
+void Schedule::set_threads(int threads) {
+  if (threads < 0)
+    throw std::invalid_argument("Schedule::set_threads: " + std::to_string(threads) +
+                                " threads (expected 0 for the default, or at least 1)");
+  threads_ = threads;
+  executor_.reset();
+}
 
 const char* phase_name(Phase phase) {
   switch (phase) {
@@ -32,7 +202,7 @@ void run_system_once(const SystemDesc& system, World& world) {
   if (!system.run)
     throw std::invalid_argument("run_system_once: system '" + system.name + "' has no run function");
   world.reserve_type_slots(std::max(system.access.type_slots(), type_id<Entities>() + 1));
-  const RunningSystem running{&system.name, &system.access};
+  const RunningSystem running(system.name, system.access);
   const RunningSystemScope scope(running);
   if (system.setup) system.setup(world);
   system.run(world);
@@ -83,7 +253,8 @@ void Schedule::add(SystemDesc system) {
   }
   // The running-system records point into systems_, which just moved.
   running_.clear();
-  for (const SystemDesc& s : systems_) running_.push_back({&s.name, &s.access});
+  for (const SystemDesc& s : systems_) running_.emplace_back(s.name, s.access);
+  executor_.reset();
 }
 
 void Schedule::setup(World& world) {
@@ -104,7 +275,7 @@ void Schedule::run_phases_through(World& world, Phase last) {
   run_phases(world, all_phases[0], last);
 }
 
-void Schedule::run_system(World& world, std::size_t i) {
+void Schedule::run_system(World& world, std::size_t i, int thread) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   {
@@ -117,16 +288,40 @@ void Schedule::run_system(World& world, std::size_t i) {
   st.last_start = t0;
   st.total_ms += ms;
   st.max_ms = std::max(st.max_ms, ms);
-  st.thread = 0;
+  st.thread = thread;
   ++st.frames;
 }
 
 void Schedule::run_phases(World& world, Phase first, Phase last) {
   world.reserve_type_slots(type_slots_);
+  if (!executor_) executor_ = std::make_unique<Executor>(*this, threads_);
+  // In the arena, so that the systems' own parallel loops use at most threads_ threads too.
+  executor_->arena.execute([&] {
+    if (threads_ == 1)
+      run_sequential(world, first, last);
+    else
+      run_parallel(world, first, last);
+  });
+}
+
+void Schedule::run_sequential(World& world, Phase first, Phase last) {
   for (std::size_t i = 0; i < systems_.size(); ++i) {
     if (systems_[i].phase < first) continue;
     if (systems_[i].phase > last) break;  // systems_ is sorted by phase
-    run_system(world, i);
+    run_system(world, i, 0);
+  }
+}
+
+void Schedule::run_parallel(World& world, Phase first, Phase last) {
+  const std::thread::id caller = std::this_thread::get_id();
+  const auto run = [this, &world, caller](std::size_t i) {
+    run_system(world, i, thread_of(caller));
+  };
+  for (std::size_t b = 0, e = 0; b < systems_.size(); b = e) {
+    for (e = b; e < systems_.size() && systems_[e].phase == systems_[b].phase;) ++e;
+    if (systems_[b].phase < first || systems_[b].phase > last) continue;
+    PhaseRun phase(systems_, executor_->successors, executor_->predecessors, b, e - b, run);
+    phase.run();
   }
 }
 

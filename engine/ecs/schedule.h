@@ -5,9 +5,16 @@
 // systems of one phase conflict when one writes what the other reads or writes; a conflicting
 // pair should be ordered explicitly (SystemDesc::after), and unordered_conflicts() lists the
 // pairs that are not.
+//
+// Parallel execution (set_threads): within a phase, a system starts once every earlier system
+// of the phase that it conflicts with or names in `after` has finished; systems with no such
+// tie run concurrently on TBB worker threads, while main_thread systems run on the thread that
+// called run_frame. Phases still run one after another. The order of conflicting systems is the
+// sequential run order, so results do not depend on the thread count.
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -69,6 +76,20 @@ void run_system_once(const SystemDesc& system, World& world);
 
 class Schedule {
  public:
+  Schedule();
+  ~Schedule();
+  Schedule(Schedule&&) noexcept;
+  Schedule& operator=(Schedule&&) noexcept;
+
+  // How many threads run the systems: 1 runs them one by one in order() on the calling thread
+  // (the sequential schedule); n > 1 lets at most n threads (the caller included) run the
+  // systems of a phase that do not conflict, and the particle loops inside them; 0 (the
+  // default) is TBB's default, one per core. Throws std::invalid_argument below 0.
+  void set_threads(int threads);
+  int threads() const { return threads_; }
+  // The number of threads that threads() stands for (TBB's default concurrency for 0).
+  int effective_threads() const;
+
   // Throws std::invalid_argument for an empty or duplicate name, an empty run function, or an
   // `after` naming a system that is not yet added or that runs in a later phase.
   void add(SystemDesc system);
@@ -76,8 +97,9 @@ class Schedule {
   // Runs every system's setup once, in order(), each under its declared access.
   void setup(World& world);
 
-  // Runs every system once, in order(), timing each. An exception from a system propagates;
-  // the systems after it do not run and its own timing is not recorded.
+  // Runs every system once, in order() (or concurrently where set_threads allows), timing each.
+  // An exception from a system propagates; the systems after it do not run (in parallel: none
+  // starts after it; those already running finish) and its own timing is not recorded.
   void run_frame(World& world);
 
   // Runs, in order(), only the systems whose phase is `last` or earlier (e.g. Phase::simulate:
@@ -109,8 +131,12 @@ class Schedule {
   uint64_t frames() const { return frames_; }
 
  private:
+  struct Executor;  // the TBB arena and the phases' dependency lists (schedule.cpp)
+
   std::size_t index_of(const std::string& name) const;
-  void run_system(World& world, std::size_t i);
+  void run_system(World& world, std::size_t i, int thread);
+  void run_sequential(World& world, Phase first, Phase last);
+  void run_parallel(World& world, Phase first, Phase last);
 
   // Kept sorted by phase (stable, so insertion order holds within a phase); stats_ and
   // running_ are parallel to it.
@@ -119,6 +145,8 @@ class Schedule {
   std::vector<RunningSystem> running_;
   std::size_t type_slots_ = 0;  // World::reserve_type_slots before running
   uint64_t frames_ = 0;
+  int threads_ = 0;
+  std::unique_ptr<Executor> executor_;  // made on the first parallel run after a change
 };
 
 }  // namespace pyro::ecs

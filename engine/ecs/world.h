@@ -88,7 +88,7 @@ class World {
       if (!p || !p->contains(e.index)) continue;
       require_unlocked(*p, "destroy");
       if (const RunningSystem* s = running_system();
-          s && !s->access->allows(std::size_t(&p - pools_.data()), AccessMode::write))
+          s && !s->allows(std::size_t(&p - pools_.data()), AccessMode::write))
         throw_undeclared_access(*s, p->component_name(), AccessMode::write, "destroy");
     }
     for (auto& p : pools_)

@@ -1,5 +1,5 @@
 #pragma once
-// A profiling session's figures (pyro profile; an embedding program's own reports): from a
+// A profiling run's figures (pyro profile; an embedding program's own reports): from a
 // runtime that ran with RuntimeOptions::profile, per system the mean, median, 95th percentile,
 // minimum and maximum CPU milliseconds (and the GPU milliseconds of its pass), per GPU pass the
 // same and the fragments it drew (summed over a frame's views), the frame times, and the live

@@ -38,6 +38,9 @@ struct RuntimeOptions {
   // Finish the GPU's work after every system, so each system's timing includes the GPU work it
   // issued (profiling; it removes CPU/GPU overlap, so frames get slower).
   bool sync_timing = false;
+  // Threads of the schedule (ecs::Schedule::set_threads): 0 one per core, 1 the sequential
+  // schedule, n at most n. Results are the same for every count.
+  int threads = 0;
   // Profiling: every step() records one span per system (CPU time, from the schedule)
   // and one per GPU pass (timer queries: each render, composite and output system, and the
   // layers inside billboard_render with the fragments they drew), read one frame late.

@@ -22,13 +22,16 @@ void RuntimeProfiler::end_frame(const std::vector<ecs::SystemStats>& stats, uint
     return std::chrono::duration<double, std::micro>(t - origin_).count();
   };
   if (stats.empty()) return;
-  const double frame_start = us(stats.front().last_start);
+  // Systems of a phase may run concurrently: the frame spans from the earliest start.
+  double frame_start = us(stats.front().last_start);
+  for (const ecs::SystemStats& s : stats) frame_start = std::min(frame_start, us(s.last_start));
   double frame_end = frame_start;
   const size_t first = trace_.size();
   trace_.push_back({"frame " + std::to_string(f), "frame", TraceTrack::cpu, frame_start, 0.0, f, -1});
   for (const ecs::SystemStats& s : stats) {
     const double start = us(s.last_start);
-    trace_.push_back({s.name, ecs::phase_name(s.phase), TraceTrack::cpu, start, s.last_ms * 1e3, f, -1});
+    trace_.push_back({s.name, ecs::phase_name(s.phase), TraceTrack::cpu, start, s.last_ms * 1e3, f,
+                      -1, s.thread});
     frame_end = std::max(frame_end, start + s.last_ms * 1e3);
   }
   trace_[first].duration_us = frame_end - frame_start;

@@ -31,6 +31,7 @@ std::vector<ecs::SystemDesc> standard_systems(bool readback) {
 
 ecs::Schedule standard_schedule(const RuntimeOptions& options) {
   ecs::Schedule schedule;
+  schedule.set_threads(options.threads);
   std::vector<ecs::SystemDesc> systems = standard_systems(options.readback);
   systems.insert(systems.end(), options.extra_systems.begin(), options.extra_systems.end());
   for (ecs::SystemDesc& d : systems) {

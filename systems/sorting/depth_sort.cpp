@@ -1,5 +1,9 @@
 #include "systems/sorting/depth_sort.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <glm/geometric.hpp>
 
@@ -11,33 +15,44 @@
 namespace pyro {
 
 void sort_back_to_front(std::vector<SortKey>& keys) {
-  std::sort(keys.begin(), keys.end(), back_to_front);
+  // The order is total (no two keys compare equal), so a parallel sort gives the same result
+  // as any other sort, whatever the thread count.
+  tbb::parallel_sort(keys.begin(), keys.end(), back_to_front);
 }
 
-void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
-                     SortKeyKind kind, SortScratch& s, DrawList& list) {
-  s.sets.clear();
-  world.each<ParticleSet>(
-      [&](ecs::Entity e, const ParticleSet& set) { s.sets.emplace_back(e.index, &set.pool); });
-  // Sets in entity-index order, so the tie-break does not depend on the storage's history.
-  std::sort(s.sets.begin(), s.sets.end());
-  s.keys.clear();
+namespace {
+
+// Particles per task when key making or list filling is split across threads.
+constexpr std::size_t kParticlesPerTask = 4096;
+
+// Every set's keys, set after set: set k's particles from offsets[k] on. Each key depends on
+// its particle alone, so any split of the work gives the same keys.
+void make_keys(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind, SortScratch& s) {
+  std::vector<std::size_t> offsets(s.sets.size() + 1, 0);
+  for (size_t set = 0; set < s.sets.size(); ++set)
+    offsets[set + 1] = offsets[set] + s.sets[set].second->size();
+  s.keys.resize(offsets.back());
   for (size_t set = 0; set < s.sets.size(); ++set) {
     const ParticlePool& p = *s.sets[set].second;
-    for (size_t i = 0; i < p.size(); ++i) {
-      const float dx = p.px[i] - eye.x, dy = p.py[i] - eye.y, dz = p.pz[i] - eye.z;
-      // Squared distance orders like distance and needs no square root.
-      const float depth = kind == SortKeyKind::view_depth
-                              ? dx * forward.x + dy * forward.y + dz * forward.z
-                              : dx * dx + dy * dy + dz * dz;
-      s.keys.push_back({depth, static_cast<uint32_t>(set), p.id[i], static_cast<uint32_t>(i)});
-    }
+    SortKey* out = s.keys.data() + offsets[set];
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, p.size(), kParticlesPerTask),
+        [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t i = r.begin(); i < r.end(); ++i) {
+            const float dx = p.px[i] - eye.x, dy = p.py[i] - eye.y, dz = p.pz[i] - eye.z;
+            // Squared distance orders like distance and needs no square root.
+            const float depth = kind == SortKeyKind::view_depth
+                                    ? dx * forward.x + dy * forward.y + dz * forward.z
+                                    : dx * dx + dy * dy + dz * dz;
+            out[i] = {depth, static_cast<uint32_t>(set), p.id[i], static_cast<uint32_t>(i)};
+          }
+        });
   }
-  sort_back_to_front(s.keys);
-  list.center_radius.resize(s.keys.size());
-  list.color_density.resize(s.keys.size());
-  list.medium.resize(s.keys.size());
-  for (size_t k = 0; k < s.keys.size(); ++k) {
+}
+
+// Entries [begin, end) of the draw list, from the sorted keys.
+void fill_draw_list(const SortScratch& s, DrawList& list, size_t begin, size_t end) {
+  for (size_t k = begin; k < end; ++k) {
     const ParticlePool& p = *s.sets[s.keys[k].set].second;
     const uint32_t i = s.keys[k].particle;
     list.center_radius[k] = {p.px[i], p.py[i], p.pz[i], p.radius[i]};
@@ -48,6 +63,25 @@ void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::v
     const float key = static_cast<float>((ident * 2654435769u) >> 8) * 0x1p-24f;
     list.medium[k] = {p.temperature[i], p.opacity[i], static_cast<float>(p.medium[i]), key};
   }
+}
+
+}  // namespace
+
+void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
+                     SortKeyKind kind, SortScratch& s, DrawList& list) {
+  s.sets.clear();
+  world.each<ParticleSet>(
+      [&](ecs::Entity e, const ParticleSet& set) { s.sets.emplace_back(e.index, &set.pool); });
+  // Sets in entity-index order, so the tie-break does not depend on the storage's history.
+  std::sort(s.sets.begin(), s.sets.end());
+  make_keys(eye, forward, kind, s);
+  sort_back_to_front(s.keys);
+  list.center_radius.resize(s.keys.size());
+  list.color_density.resize(s.keys.size());
+  list.medium.resize(s.keys.size());
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, s.keys.size(), kParticlesPerTask),
+      [&](const tbb::blocked_range<size_t>& r) { fill_draw_list(s, list, r.begin(), r.end()); });
 }
 
 ecs::SystemDesc sorting_system() {

@@ -31,8 +31,8 @@ inline bool back_to_front(const SortKey& a, const SortKey& b) {
   return a.id < b.id;
 }
 
-// Sorts keys in place (std::sort with the total order above: the result does not depend on
-// the input order).
+// Sorts keys in place (in parallel, with the total order above: the result depends neither on
+// the input order nor on the thread count).
 void sort_back_to_front(std::vector<SortKey>& keys);
 
 enum class SortKeyKind { view_depth, eye_distance };

@@ -1,4 +1,4 @@
-// pyro bench ecs | render | johnson | layers | table1 | soak | vdb ... [--json]
+// pyro bench ecs | render | johnson | layers | table1 | soak | vdb | schedule ... [--json]
 //
 // Each subcommand parses its options, runs the benchmark (systems/benchmarks; bench ecs:
 // tools/pyro/bench_ecs.h) and prints its result.
@@ -165,6 +165,7 @@ void add_bench_commands(CLI::App& app) {
   CLI::App* bench = app.add_subcommand("bench", "Benchmarks, printed as ratios to a baseline run alongside");
   bench->require_subcommand(1);
   add_bench_vdb_command(*bench);
+  add_bench_schedule_command(*bench);
 
   for (const auto add : {add_bench_ecs, add_bench_render, add_bench_johnson, add_bench_layers,
                          add_bench_table1, add_bench_soak})

@@ -1,4 +1,4 @@
-// A profiling session's report, against what the run itself knows: one row per scheduled system
+// A profiling run's report, against what the run itself knows: one row per scheduled system
 // with one sample per counted frame (the warm-up left out), GPU passes for the render systems,
 // frame times that bound the systems', and the particles the world holds.
 #include <gtest/gtest.h>

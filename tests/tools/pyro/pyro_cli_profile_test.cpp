@@ -48,23 +48,37 @@ TEST(PyroCliProfile, ExplosionTraceHasASpanPerSystemPerFrame) {
   };
   std::map<int, Span> frames;                                 // CPU frame spans
   std::map<std::pair<int, std::string>, std::vector<Span>> cpu, gpu;  // (frame, name)
+  std::set<int> named_tracks, used_tracks;
   for (const json& e : trace["traceEvents"]) {
-    if (e["ph"] == "M") continue;
+    if (e["ph"] == "M") {
+      if (e["name"] == "thread_name") named_tracks.insert(e["tid"].get<int>());
+      continue;
+    }
     ASSERT_EQ(e["ph"], "X");
     const Span s{e["ts"].get<double>(), e["dur"].get<double>()};
     const int f = e["args"]["frame"];
+    const int tid = e["tid"];
+    used_tracks.insert(tid);
     if (e["cat"] == "frame") {
       EXPECT_GT(s.dur, 0.0) << "a frame that renders takes time: " << e.dump();
-      EXPECT_EQ(e["tid"], 1);
+      EXPECT_EQ(tid, 1);
       EXPECT_FALSE(frames.count(f)) << "two frame spans for frame " << f;
       frames[f] = s;
-    } else if (e["tid"] == 1) {
-      cpu[{f, e["name"]}].push_back(s);
-    } else {
-      EXPECT_EQ(e["tid"], 2) << e.dump();
+    } else if (e["cat"] == "gpu") {
+      EXPECT_EQ(tid, 2) << e.dump();
       gpu[{f, e["name"]}].push_back(s);
+    } else {
+      // A system: on the frame's thread (1) or on a worker's track (3, 4, ...); GL systems
+      // always on the frame's thread, which owns the context.
+      EXPECT_TRUE(tid == 1 || tid >= 3) << e.dump();
+      const std::string p = e["cat"];
+      if (p == "render" || p == "composite" || p == "output") {
+        EXPECT_EQ(tid, 1) << e.dump();
+      }
+      cpu[{f, e["name"]}].push_back(s);
     }
   }
+  for (const int tid : used_tracks) EXPECT_TRUE(named_tracks.count(tid)) << "track " << tid;
   ASSERT_EQ(frames.size(), size_t(kFrames));
   for (int f = 0; f < kFrames; ++f) {
     ASSERT_TRUE(frames.count(f));
