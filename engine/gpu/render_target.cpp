@@ -1,13 +1,18 @@
 #include "engine/gpu/render_target.h"
 
+#include <atomic>
 #include <string>
 
 #include "engine/gpu/gpu_error.h"
 
 namespace pyro::gpu {
 
+namespace {
+std::atomic<uint64_t> next_serial{1};
+}  // namespace
+
 RenderTarget::RenderTarget(int width, int height, GLenum color_format)
-    : width_(width), height_(height), format_(color_format) {
+    : width_(width), height_(height), format_(color_format), serial_(next_serial++) {
   if (width < 1 || height < 1) throw GpuError("render target needs a positive size");
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
@@ -33,6 +38,7 @@ RenderTarget::RenderTarget(int width, int height, GLenum color_format)
 }
 
 void RenderTarget::bind() const {
+  ++binds_;
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
   glViewport(0, 0, width_, height_);
 }

@@ -19,7 +19,13 @@ class RenderTarget {
   GLenum format() const { return format_; }  // the colour texture's internal format
   GLuint depth_texture() const { return depth_.get(); }
 
+  // Binds the framebuffer for drawing, with the viewport on the whole target. Passes draw into
+  // a target through bind(), so binds() counts the times it may have been drawn into: a pass that
+  // sees the count unchanged since its own draw knows the target still holds what it drew.
   void bind() const;
+  uint64_t binds() const { return binds_; }
+  // Unique over the process (GL object names are reused once deleted).
+  uint64_t serial() const { return serial_; }
   // RGBA floats, row 0 at the top of the image (GL's bottom-up rows are flipped).
   std::vector<float> read_rgba() const;
   // RGBA bytes as stored (sRGB-encoded for an sRGB target), row 0 at the top.
@@ -32,6 +38,8 @@ class RenderTarget {
   GLenum format_;
   Texture color_, depth_;
   Framebuffer fbo_;
+  uint64_t serial_;
+  mutable uint64_t binds_ = 0;
 };
 
 }  // namespace pyro::gpu

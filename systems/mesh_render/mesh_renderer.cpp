@@ -84,11 +84,15 @@ void copy_image(GLuint from, GLuint to, const gpu::RenderTarget& target) {
 void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                         const RenderSettings& settings, const gpu::RenderTarget& target) {
   std::vector<float> inputs = draw_inputs(instances, frame, settings, target);
-  Drawn& last = drawn_[target.color_texture()];
+  Drawn& last = drawn_[target.serial()];
   if (last.color && last.inputs == inputs) {
-    copy_image(last.color.get(), target.color_texture(), target);
-    copy_image(last.depth.get(), target.depth_texture(), target);
+    if (target.binds() != last.binds) {
+      copy_image(last.color.get(), target.color_texture(), target);
+      copy_image(last.depth.get(), target.depth_texture(), target);
+      ++images_restored_;
+    }
     leave_state(!instances.empty(), settings, target);
+    last.binds = target.binds();
     return;
   }
   draw_meshes(instances, frame, settings, target);
@@ -104,6 +108,7 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
   copy_image(target.color_texture(), last.color.get(), target);
   copy_image(target.depth_texture(), last.depth.get(), target);
   last.inputs = std::move(inputs);
+  last.binds = target.binds();
 }
 
 void MeshRenderer::leave_state(bool meshes, const RenderSettings& settings,

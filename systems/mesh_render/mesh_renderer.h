@@ -19,14 +19,16 @@ class MeshRenderer {
   MeshRenderer();
   // Clears `target` to the background and draws every instance with depth. When the last draw
   // into this target had the same inputs (the instances, the view, the lights, the background and
-  // the sRGB state: everything the image depends on), its colour and depth are copied back
-  // instead, the same bytes for a fraction of the cost: the opaque scene of a still camera is
-  // drawn once. Other passes may have drawn into the target since; the copy undoes that as the
-  // clear would.
+  // the sRGB state: everything the image depends on), the target is left as it is if nothing was
+  // drawn into it since (RenderTarget::binds(): particles in layers), else that image's colour
+  // and depth are copied back (particles blended into it): the same bytes for a fraction of the
+  // cost. The opaque scene of a still camera is drawn once.
   void draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
             const RenderSettings& settings, const gpu::RenderTarget& target);
-  // How many of the draws so far drew the meshes (the others copied the last image back).
+  // How many of the draws so far drew the meshes, and how many copied the last image back (the
+  // others found it in place).
   int meshes_drawn() const { return meshes_drawn_; }
+  int images_restored() const { return images_restored_; }
 
  private:
   struct GpuMesh {
@@ -42,14 +44,15 @@ class MeshRenderer {
   void leave_state(bool meshes, const RenderSettings& settings,
                    const gpu::RenderTarget& target) const;
 
-  // The last draw into a target (by its colour texture): its inputs and its image.
+  // The last draw into a target (by RenderTarget::serial()): its inputs and its image.
   struct Drawn {
     std::vector<float> inputs;
     glm::ivec3 shape{0};  // the target's width, height and colour format
     gpu::Texture color, depth;
+    uint64_t binds = 0;  // the target's RenderTarget::binds() when this renderer left it
   };
-  std::map<GLuint, Drawn> drawn_;
-  int meshes_drawn_ = 0;
+  std::map<uint64_t, Drawn> drawn_;
+  int meshes_drawn_ = 0, images_restored_ = 0;
 
   gpu::Program program_;         // linear output: a floating-point target, or GL encodes
   gpu::Program encode_program_;  // writes sRGB itself (srgb_encode.glsl), GL_FRAMEBUFFER_SRGB off

@@ -1,6 +1,7 @@
 // The opaque pass draws a still scene once (systems/mesh_render/mesh_renderer.h): later frames
-// copy its image back, the same bytes a draw gives, also when particles were blended into the
-// scene target on top of it in between; anything the image depends on changing draws it again.
+// copy its image back when particles were blended into the scene target on top of it, or find it
+// in place when the particles went into layers, the same bytes a draw gives either way; anything
+// the image depends on changing draws it again.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -59,7 +60,23 @@ TEST(OpaquePassReuse, AStillSceneIsDrawnOnceAndGivesTheSameImages) {
   const auto a = images(reused, 4, false), b = images(drawn, 4, true);
   for (size_t f = 0; f < a.size(); ++f) EXPECT_EQ(a[f], b[f]) << f;
   EXPECT_NE(a[0], a[3]);  // the fog drifted: the particles were drawn every frame
-  EXPECT_EQ(reused.world().resource<MeshRenderer>().meshes_drawn(), 1);
+  const MeshRenderer& r = reused.world().resource<MeshRenderer>();
+  EXPECT_EQ(r.meshes_drawn(), 1);
+  EXPECT_EQ(r.images_restored(), 3);  // the fog was blended into the scene target each frame
+}
+
+TEST(OpaquePassReuse, WithParticlesInLayersTheImageStaysInPlace) {
+  SceneDescription scene = meshes_under_fog();
+  scene.render.particles = ParticleShape::spherical;
+  scene.render.shading = ParticleShading::explosion;
+  scene.render.layer_scale = 0.5f;
+  SceneRuntime reused(scene), drawn(scene);
+  const auto a = images(reused, 4, false), b = images(drawn, 4, true);
+  for (size_t f = 0; f < a.size(); ++f) EXPECT_EQ(a[f], b[f]) << f;
+  EXPECT_NE(a[0], a[3]);
+  const MeshRenderer& r = reused.world().resource<MeshRenderer>();
+  EXPECT_EQ(r.meshes_drawn(), 1);
+  EXPECT_EQ(r.images_restored(), 0);
 }
 
 TEST(OpaquePassReuse, AMovedMeshIsDrawnAgain) {
