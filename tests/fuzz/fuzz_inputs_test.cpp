@@ -13,22 +13,14 @@
 
 #include "tests/fuzz/fuzz_targets.h"
 
+#include "tests/support/under_asan.h"
+
 namespace pyro {
 namespace {
 
 namespace fs = std::filesystem;
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kUnderAsan = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kUnderAsan = true;
-#else
-constexpr bool kUnderAsan = false;
-#endif
-#else
-constexpr bool kUnderAsan = false;
-#endif
+using test::kUnderAsan;
 
 // Feeds every input under tests/fuzz/<folder>/<target>/ to its target and returns how many each
 // target was fed. A missing folder is a failure, not an empty result.

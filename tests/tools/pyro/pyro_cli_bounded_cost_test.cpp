@@ -17,26 +17,14 @@
 
 #include "tests/support/test_paths.h"
 
+#include "tests/support/under_asan.h"
+
 namespace pyro {
 namespace {
 
 namespace fs = std::filesystem;
 
-// AddressSanitizer reserves terabytes of shadow address space when a program starts, so an
-// instrumented pyro cannot start under a small RLIMIT_AS, and its allocator's quarantine makes
-// resident memory no measure of the loader's. Under ASan the address-space cap and the memory
-// bound are left out; the exit, the message and the CPU limit are still checked.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kUnderAsan = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kUnderAsan = true;
-#else
-constexpr bool kUnderAsan = false;
-#endif
-#else
-constexpr bool kUnderAsan = false;
-#endif
+using test::kUnderAsan;
 
 struct LimitedRun {
   int exit_code = -1;
