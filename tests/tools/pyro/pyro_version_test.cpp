@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 
@@ -12,16 +11,22 @@
 namespace pyro {
 namespace {
 
-// The VERSION of project(...) in the top-level CMakeLists.txt, read independently of the build.
+// The VERSION of project(pyrocumulus VERSION x.y.z ...) in the top-level CMakeLists.txt, read
+// independently of the build. (Plain string search: std::regex trips g++ 12's
+// -Wmaybe-uninitialized under -O2 -Werror.)
 std::string project_version() {
   std::ifstream in(std::string(PYRO_SOURCE_DIR) + "/CMakeLists.txt");
   std::stringstream text;
   text << in.rdbuf();
-  std::smatch m;
   const std::string s = text.str();
-  if (!std::regex_search(s, m, std::regex(R"(project\(\s*pyrocumulus\s+VERSION\s+([0-9.]+))")))
-    return "";
-  return m[1];
+  const std::size_t project = s.find("project(");
+  if (project == std::string::npos) return "";
+  const std::size_t keyword = s.find("VERSION", project);
+  if (keyword == std::string::npos || keyword > s.find(')', project)) return "";
+  std::size_t begin = s.find_first_not_of(" \t\n", keyword + 7);
+  std::size_t end = s.find_first_not_of("0123456789.", begin);
+  if (begin == std::string::npos || end == begin) return "";
+  return s.substr(begin, end - begin);
 }
 
 TEST(PyroVersion, PrintsTheProjectVersionAndTheRenderer) {
