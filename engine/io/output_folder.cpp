@@ -65,7 +65,10 @@ OutputFolder::OutputFolder(const std::string& out, const std::string& scene,
   try {
     lock(options.wait);
     check_manifest(options.overwrite);
-    staging_ = std::make_unique<StagingFolder>(out_);
+    staging_ = std::make_unique<StagingFolder>(out_, /*remove_stale=*/false);
+    write_run_record();
+    take_killed_runs_files(options.resume);
+    remove_stale_staging(out_);
   } catch (...) {
     if (created && fs::is_empty(out_, ec)) fs::remove(out_, ec);
     throw;
@@ -116,7 +119,10 @@ void OutputFolder::check_manifest(bool overwrite) {
     if (!listed.empty()) why = "holds " + std::to_string(listed.size()) + " frame files no manifest accounts for";
   }
   if (why.empty()) {
-    held_ = listed;
+    // A run killed while moving its files in wrote the manifest first: keep what is there.
+    for (const std::string& name : listed)
+      if (name.find('/') == std::string::npos && fs::exists(fs::path(out_) / name, ec))
+        held_.push_back(name);
     return;
   }
   if (!overwrite)
@@ -127,22 +133,55 @@ void OutputFolder::check_manifest(bool overwrite) {
   stale_ = listed;
 }
 
+void OutputFolder::write_run_record() {
+  const nlohmann::json record = {{"scene", scene_}, {"settings", nlohmann::json::parse(settings_json_)}};
+  write_file_durably((staging_->path() / kStagingRecordName).string(), record.dump() + "\n");
+}
+
+bool OutputFolder::same_run(const fs::path& record) const {
+  std::ifstream in(record, std::ios::binary);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const nlohmann::json r = nlohmann::json::parse(text, nullptr, false);
+  return !r.is_discarded() && r.is_object() && r.value("scene", "") == scene_ &&
+         r["settings"] == nlohmann::json::parse(settings_json_);
+}
+
+void OutputFolder::take_killed_runs_files(bool resume) {
+  std::error_code ec;
+  for (const fs::path& stale : stale_staging_folders(out_)) {
+    if (!same_run(stale / kStagingRecordName)) continue;
+    for (fs::directory_iterator it(stale, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      // Finished files only: a temporary file (NAME.partial-PID) was cut by the kill.
+      if (name.rfind("frame_", 0) != 0 || name.find(".partial-") != std::string::npos) continue;
+      if (!resume) {
+        ++discarded_;
+      } else if (std::find(adopted_.begin(), adopted_.end(), name) == adopted_.end()) {
+        staging_->adopt(it->path());
+        adopted_.push_back(name);
+      }
+    }
+  }
+  std::sort(adopted_.begin(), adopted_.end());
+}
+
 void OutputFolder::commit() {
   std::set<std::string> files(held_.begin(), held_.end());
-  std::vector<std::string> fresh;
   std::error_code ec;
   for (fs::directory_iterator it(staging_->path(), ec), end; !ec && it != end; it.increment(ec))
-    fresh.push_back(it->path().filename().string());
-  files.insert(fresh.begin(), fresh.end());
+    if (it->path().filename() != kStagingRecordName) files.insert(it->path().filename().string());
+  // The manifest first: a run killed while the files move in leaves a manifest naming them
+  // (check_manifest keeps those that arrived; --resume adopts the rest from the staging folder,
+  // whose record goes last).
+  nlohmann::json manifest = {{"scene", scene_},
+                             {"settings", nlohmann::json::parse(settings_json_)},
+                             {"files", std::vector<std::string>(files.begin(), files.end())}};
+  write_file_durably((fs::path(out_) / kOutputManifestName).string(), manifest.dump(1) + "\n");
   staging_->commit();
   if (replacing_)
     for (const std::string& name : stale_)
       if (!files.count(name) && name.find('/') == std::string::npos)
         fs::remove(fs::path(out_) / name, ec);
-  nlohmann::json manifest = {{"scene", scene_},
-                             {"settings", nlohmann::json::parse(settings_json_)},
-                             {"files", std::vector<std::string>(files.begin(), files.end())}};
-  write_file_durably((fs::path(out_) / kOutputManifestName).string(), manifest.dump(1) + "\n");
   held_.assign(files.begin(), files.end());
   replacing_ = false;
 }

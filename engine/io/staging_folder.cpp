@@ -34,17 +34,25 @@ bool process_alive(int pid) {
   return pid == ::getpid() || fs::exists("/proc/" + std::to_string(pid), ec);
 }
 
-// The staging folders of `out` found in `folder` whose names start with `prefix`.
-int remove_stale_in(const fs::path& folder, const std::string& prefix) {
-  int removed = 0;
+// The folders in `folder` whose names start with `prefix` and end with the id of a process
+// that is gone.
+std::vector<fs::path> stale_in(const fs::path& folder, const std::string& prefix) {
+  std::vector<fs::path> stale;
   std::error_code ec;
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (name.rfind(prefix, 0) != 0) continue;
     const int pid = staging_owner(name);
-    if (pid <= 0 || process_alive(pid)) continue;
+    if (pid > 0 && !process_alive(pid)) stale.push_back(it->path());
+  }
+  return stale;
+}
+
+int remove_all_of(const std::vector<fs::path>& folders) {
+  int removed = 0;
+  for (const fs::path& f : folders) {
     std::error_code rm;
-    fs::remove_all(it->path(), rm);
+    fs::remove_all(f, rm);
     if (!rm) ++removed;
   }
   return removed;
@@ -61,21 +69,31 @@ int staging_owner(const std::string& name) {
   return std::atoi(digits.c_str());
 }
 
-int remove_stale_staging(const fs::path& out) {
-  const fs::path target = normalized(out.string());
-  // Beside `out`: the name older versions used (`.NAME.partial-PID`).
-  return remove_stale_in(target, ".partial-") +
-         remove_stale_in(target.parent_path(), "." + target.filename().string() + ".partial-");
+std::vector<fs::path> stale_staging_folders(const fs::path& out) {
+  std::vector<fs::path> folders;
+  std::error_code ec;
+  for (const fs::path& p : stale_in(normalized(out.string()), ".partial-"))
+    if (fs::is_directory(p, ec)) folders.push_back(p);
+  return folders;
 }
 
-StagingFolder::StagingFolder(const std::string& out) : out_(normalized(out)) {
+int remove_stale_staging(const fs::path& out) {
+  const fs::path target = normalized(out.string());
+  // Inside `out`: staging folders (`.partial-PID`) and a durable file's temporary file cut by the
+  // kill (`.pyro_manifest.json.partial-PID`). Beside `out`: the name older versions used
+  // (`.NAME.partial-PID`).
+  return remove_all_of(stale_in(target, ".")) +
+         remove_all_of(stale_in(target.parent_path(), "." + target.filename().string() + ".partial-"));
+}
+
+StagingFolder::StagingFolder(const std::string& out, bool remove_stale) : out_(normalized(out)) {
   std::error_code ec;
   if (fs::exists(out_, ec) && !fs::is_directory(out_, ec))
     throw UserError(out, "--out", "expected a folder for the output, found a file");
   created_out_ = !fs::exists(out_, ec);
   fs::create_directories(out_, ec);
   if (ec) throw UserError(out, "--out", "cannot create the output folder: " + ec.message());
-  remove_stale_staging(out_);
+  if (remove_stale) remove_stale_staging(out_);
   staging_ = out_ / (".partial-" + std::to_string(::getpid()));
   fs::remove_all(staging_, ec);  // left by an earlier process with the same id, killed
   if (::mkdir(staging_.c_str(), 0755) != 0) {
@@ -95,16 +113,29 @@ StagingFolder::~StagingFolder() {
 
 void StagingFolder::commit() {
   std::error_code ec;
+  std::vector<fs::path> records;
   for (fs::directory_iterator it(staging_, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().filename().string()[0] == '.') {
+      records.push_back(it->path());
+      continue;
+    }
     const fs::path to = out_ / it->path().filename();
     if (::rename(it->path().c_str(), to.c_str()) != 0)
       throw IoError(to.string(), "move the finished file into the output folder", errno);
   }
   if (ec) throw IoError(staging_.string(), "list the temporary folder", ec.value());
+  for (const fs::path& record : records)
+    if (::unlink(record.c_str()) != 0) throw IoError(record.string(), "remove", errno);
   if (::rmdir(staging_.c_str()) != 0)
     throw IoError(staging_.string(), "remove the emptied temporary folder", errno);
   created_out_ = false;  // holds the output now
   sync_folder(out_.string());
+}
+
+void StagingFolder::adopt(const fs::path& file) {
+  const fs::path to = staging_ / file.filename();
+  if (::rename(file.c_str(), to.c_str()) != 0)
+    throw IoError(file.string(), "move a killed run's finished file into the temporary folder", errno);
 }
 
 }  // namespace pyro

@@ -7,15 +7,17 @@
 // object created it and it is still empty.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace pyro {
 
 class StagingFolder {
  public:
   // Creates `out` if needed, removes staging folders left in it by processes that are gone
-  // (remove_stale_staging) and creates `out/.partial-PID`. Throws UserError naming `out` when
-  // `out` is a file or cannot be created, IoError when the staging folder cannot.
-  explicit StagingFolder(const std::string& out);
+  // (remove_stale_staging; unless `remove_stale` is false, for a caller that first adopts what
+  // they hold) and creates `out/.partial-PID`. Throws UserError naming `out` when `out` is a
+  // file or cannot be created, IoError when the staging folder cannot.
+  explicit StagingFolder(const std::string& out, bool remove_stale = true);
   ~StagingFolder();
   StagingFolder(const StagingFolder&) = delete;
   StagingFolder& operator=(const StagingFolder&) = delete;
@@ -24,8 +26,13 @@ class StagingFolder {
   const std::filesystem::path& out() const { return out_; }
 
   // Renames every file of the staging folder into `out` (replacing a file of the same name),
+  // but for those whose names start with '.' (the staging folder's own records, removed last),
   // removes the staging folder and fsyncs `out`. Throws IoError.
   void commit();
+
+  // Moves `file` (on the same file system: another staging folder of `out`) into this staging
+  // folder under its own name. Throws IoError.
+  void adopt(const std::filesystem::path& file);
 
  private:
   std::filesystem::path out_, staging_;
@@ -35,8 +42,12 @@ class StagingFolder {
 // The process id a staging folder's name ends with (`.partial-PID`, `.NAME.partial-PID`), or 0.
 int staging_owner(const std::string& name);
 
+// The staging folders inside `out` whose process is gone: what killed runs left.
+std::vector<std::filesystem::path> stale_staging_folders(const std::filesystem::path& out);
+
 // Removes, inside `out` and beside it, every staging folder of `out` whose process is gone (no
-// /proc/PID): what a killed run left. Returns how many were removed.
+// /proc/PID), and inside `out` the temporary files (`.NAME.partial-PID`) of such processes:
+// what a killed run left. Returns how many were removed.
 int remove_stale_staging(const std::filesystem::path& out);
 
 }  // namespace pyro

@@ -136,18 +136,20 @@ std::vector<std::string> SceneRuntime::write_png(const std::string& stem) {
               rgba[(static_cast<size_t>(y) * w + x0 + x) * 4 + c];
     return rgb;
   };
-  std::vector<std::string> written;
-  if (settings().stereo_mode == StereoMode::left_right) {
+  const std::vector<std::string> paths = png_paths(stem);
+  if (paths.size() == 2) {
     const int half = w / 2;
-    pyro::write_png(stem + "_left.png", half, h, 3, rgb_columns(0, half));
-    written.push_back(stem + "_left.png");
-    pyro::write_png(stem + "_right.png", half, h, 3, rgb_columns(half, half));
-    written.push_back(stem + "_right.png");
+    pyro::write_png(paths[0], half, h, 3, rgb_columns(0, half));
+    pyro::write_png(paths[1], half, h, 3, rgb_columns(half, half));
   } else {
-    pyro::write_png(stem + ".png", w, h, 3, rgb_columns(0, w));
-    written.push_back(stem + ".png");
+    pyro::write_png(paths[0], w, h, 3, rgb_columns(0, w));
   }
-  return written;
+  return paths;
+}
+
+std::vector<std::string> SceneRuntime::png_paths(const std::string& stem) {
+  if (settings().stereo_mode == StereoMode::left_right) return {stem + "_left.png", stem + "_right.png"};
+  return {stem + ".png"};
 }
 
 }  // namespace pyro

@@ -89,6 +89,8 @@ class SceneRuntime : public FrameStepper {
   // Writes the last composed frame as sRGB PNG: `stem`.png, or `stem`_left.png and
   // `stem`_right.png in left-right mode. Returns the paths written.
   std::vector<std::string> write_png(const std::string& stem);
+  // The paths write_png(stem) writes, without writing anything.
+  std::vector<std::string> png_paths(const std::string& stem);
 
  private:
   SceneRuntime(const ResolvedScene& resolved, const RuntimeOptions& options);

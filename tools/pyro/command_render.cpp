@@ -1,16 +1,21 @@
 // pyro render SCENE --out DIR [--width W] [--height H] [--frames N | --frames A:B] [--json]
-//                  [--wait] [--overwrite]
+//                  [--wait] [--overwrite | --resume]
 //
 // DIR has one writer at a time and a manifest (engine/io/output_folder.h). Frames are rendered
 // into a temporary folder inside DIR and moved into place only when every frame has been
-// written: a failure (or a refusal) leaves DIR as it was. Which steps make which
-// frames (substeps, the motion-blur prefix, ranges) is the runtime's FrameSequencer.
+// written: a failure (or a refusal) leaves DIR as it was. With --resume, the frames a killed run
+// of the same scene and settings finished, and those DIR already holds, are kept and only the
+// others drawn (still simulated from frame 0: the same bytes as an uninterrupted run). Which
+// steps make which frames (substeps, the motion-blur prefix, ranges) is the runtime's
+// FrameSequencer.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -39,7 +44,7 @@ struct RenderArgs {
   std::string frames = "1";
   bool json = false;
   std::string trace;  // --trace FILE: Chrome trace-event JSON of the run
-  OutputFolderOptions folder;  // --wait, --overwrite
+  OutputFolderOptions folder;  // --wait, --overwrite, --resume
   RuntimeOptions runtime;
 };
 
@@ -95,6 +100,47 @@ nlohmann::json pixel_settings(SceneRuntime& runtime, const RuntimeOptions& o) {
   return s;
 }
 
+// What a resumed run need not draw again: the files the folder holds for this scene and
+// settings and those adopted from killed runs.
+std::set<std::string> finished_files(const OutputFolder& folder, bool resume) {
+  std::set<std::string> done;
+  if (!resume) return done;
+  done.insert(folder.held_files().begin(), folder.held_files().end());
+  done.insert(folder.adopted_files().begin(), folder.adopted_files().end());
+  return done;
+}
+
+// Draws the frames of `range` that `folder` does not already hold finished (all of them unless
+// --resume) into its staging folder. Returns every file of the range, as paths under --out.
+nlohmann::json draw_into(SceneRuntime& runtime, OutputFolder& folder, const FrameRange& range,
+                         const RenderArgs& a) {
+  if (folder.discarded_files() > 0)
+    print_note("removed " + std::to_string(folder.discarded_files()) + " finished frame file(s) a "
+               "killed run of this render had left in " + a.out + " (--resume keeps them)");
+  const std::set<std::string> done = finished_files(folder, a.folder.resume);
+  nlohmann::json files = nlohmann::json::array();
+  std::vector<int> to_draw;
+  for (int f = range.first; f <= range.last; ++f) {
+    bool finished = true;
+    for (const std::string& path : runtime.png_paths(frame_name(f))) {
+      files.push_back((std::filesystem::path(a.out) / path).string());
+      finished = finished && done.count(path) > 0;
+    }
+    if (!finished) to_draw.push_back(f);
+  }
+  if (a.folder.resume)
+    print_note("resuming: " + std::to_string(range.count() - static_cast<int>(to_draw.size())) +
+               " of " + std::to_string(range.count()) + " frame(s) already finished");
+  Progress progress("render " + runtime.scene().name, to_draw.size());
+  for (size_t i = 0; i < to_draw.size(); ++i) {
+    runtime.draw_frame(to_draw[i]);
+    runtime.write_png((folder.staging().path() / frame_name(to_draw[i])).string());
+    progress.update(i + 1);
+  }
+  progress.finish();
+  return files;
+}
+
 void run_render(const RenderArgs& a) {
   // Everything the user can get wrong is checked before anything is written.
   const FrameRange range = parse_frame_range(a.frames, "--frames");
@@ -103,6 +149,9 @@ void run_render(const RenderArgs& a) {
   if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
     throw UserError(a.out, "--out", "expected a folder for the frames, found a file");
   if (!a.trace.empty()) check_trace_path(a.trace, "--trace");
+  if (a.folder.resume && a.folder.overwrite)
+    throw UserError("--resume", "", "either --resume (keep this render's finished frames) or "
+                                    "--overwrite (replace another render's), not both");
 
   RuntimeOptions options = a.runtime;
   options.readback = false;
@@ -122,15 +171,7 @@ void run_render(const RenderArgs& a) {
   SceneRuntime runtime(scene, options);  // refuses a scene over its budget (scene_budget.h)
   const std::string scene_id = std::filesystem::weakly_canonical(a.scene, ec).string();
   OutputFolder folder(a.out, scene_id, pixel_settings(runtime, options).dump(), a.folder);
-  StagingFolder& staging = folder.staging();
-  nlohmann::json files = nlohmann::json::array();
-  Progress progress("render " + scene.name, static_cast<size_t>(range.count()));
-  runtime.draw_frames(range, [&](int f) {
-    for (const std::string& path : runtime.write_png((staging.path() / frame_name(f)).string()))
-      files.push_back((std::filesystem::path(a.out) / std::filesystem::path(path).filename()).string());
-    progress.update(static_cast<size_t>(f - range.first + 1));
-  });
-  progress.finish();
+  const nlohmann::json files = draw_into(runtime, folder, range, a);
   folder.commit();
   if (!a.trace.empty())
     write_text_file(a.trace, chrome_trace_json(runtime.trace(), "pyro render " + scene.file));
@@ -177,6 +218,9 @@ void add_render_command(CLI::App& app) {
                 "Wait for another run writing into --out to finish (default: refuse)");
   cmd->add_flag("--overwrite", args->folder.overwrite,
                 "Replace --out's frames of another scene or other settings");
+  cmd->add_flag("--resume", args->folder.resume,
+                "Finish a killed run: keep the frames it (and --out) already hold for this scene "
+                "and settings, draw the others");
   add_render_options(cmd, args->runtime);
   cmd->callback([args] { run_render(*args); });
 }

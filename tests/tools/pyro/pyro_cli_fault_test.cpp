@@ -10,11 +10,10 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
-#include <map>
 #include <string>
 #include <thread>
 
+#include "tests/support/cli_render.h"
 #include "tests/support/scratch_mount.h"
 #include "tests/support/test_paths.h"
 
@@ -23,27 +22,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// Every entry of `dir` with its bytes (folders as "<dir>").
-std::map<std::string, std::string> contents(const fs::path& dir) {
-  std::map<std::string, std::string> m;
-  for (const auto& e : fs::directory_iterator(dir))
-    m[e.path().filename().string()] = e.is_directory() ? "<dir>" : read_bytes(e.path());
-  return m;
-}
-
-test::CommandResult render(const std::string& scene, const fs::path& out, const std::string& frames,
-                           int size, std::vector<std::string> extra = {}) {
-  std::vector<std::string> args = {"render", test::scene_path(scene), "--out", out.string(),
-                                   "--frames", frames, "--width", std::to_string(size),
-                                   "--height", std::to_string(size)};
-  args.insert(args.end(), extra.begin(), extra.end());
-  return test::run_pyro(args);
-}
+using test::contents;
+using test::read_bytes;
+using test::render;
 
 bool is_complete_png(const std::string& bytes) {
   return bytes.size() > 20 && bytes.compare(0, 4, "\x89PNG") == 0 &&
