@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tools/fuzz.sh TARGET SECONDS — builds the libFuzzer targets (clang++-14, PYRO_FUZZ=ON: coverage,
-# ASan, UBSan) into build-fuzz/ and runs TARGET (scene, vdb, png or cli) for SECONDS under
+# ASan, UBSan) into build-fuzz/ and runs TARGET (scene, vdb, png, particles or cli) for SECONDS under
 # `nice -n 19`, starting from the committed seeds in tests/fuzz/corpus/TARGET. New inputs go to
 # build-fuzz/corpus/TARGET (not committed); a crashing input is written to
 # build-fuzz/artifacts/TARGET/ — commit it under tests/fuzz/regressions/TARGET/ with the fix
@@ -9,13 +9,13 @@
 # libFuzzer flags).
 set -euo pipefail
 if [[ $# -ne 2 ]]; then
-  echo "usage: tools/fuzz.sh TARGET SECONDS   (TARGET: scene, vdb, png, cli)" >&2
+  echo "usage: tools/fuzz.sh TARGET SECONDS   (TARGET: scene, vdb, png, particles, cli)" >&2
   exit 2
 fi
 target=$1
 seconds=$2
-case "$target" in scene | vdb | png | cli) ;; *)
-  echo "tools/fuzz.sh: unknown target \"$target\" (expected scene, vdb, png or cli)" >&2
+case "$target" in scene | vdb | png | particles | cli) ;; *)
+  echo "tools/fuzz.sh: unknown target \"$target\" (expected scene, vdb, png, particles or cli)" >&2
   exit 2 ;;
 esac
 if ! [[ "$seconds" =~ ^[1-9][0-9]*$ ]]; then

@@ -63,7 +63,7 @@ void expect_inputs_for(const std::string& folder, const std::set<std::string>& e
   }
 }
 
-TEST(FuzzInputs, SeedCorpusIsHandled) { expect_inputs_for("corpus", {"cli", "png", "scene", "vdb"}); }
+TEST(FuzzInputs, SeedCorpusIsHandled) { expect_inputs_for("corpus", {"cli", "particles", "png", "scene", "vdb"}); }
 
 // The targets that have had a crash, each kept as an input (tools/fuzz.sh says where they go).
 TEST(FuzzInputs, RegressionsAreHandled) { expect_inputs_for("regressions", {"png", "vdb"}); }

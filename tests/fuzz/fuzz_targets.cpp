@@ -3,6 +3,9 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -11,6 +14,7 @@
 
 #include "engine/core/user_error.h"
 #include "engine/io/isolated_call.h"
+#include "engine/io/particle_file.h"
 #include "engine/io/png_file.h"
 #include "systems/scene/scene_loader.h"
 #include "engine/io/vdb_file_check.h"
@@ -72,6 +76,26 @@ void png(const uint8_t* data, std::size_t size) {
   }
 }
 
+void particles(const uint8_t* data, std::size_t size) {
+  const TempFile file(data, size, ".pyrop");
+  ParticleFile read;
+  try {
+    read = read_particle_file(file.path());
+  } catch (const UserError&) {
+    return;
+  }
+  const std::string again = file.path() + ".again.pyrop";
+  write_particle_file(again, read);  // throws (escapes: a bug) for what the reader accepted
+  std::ifstream in(again, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::remove(again.c_str());
+  if (bytes != std::string(reinterpret_cast<const char*>(data), size)) {
+    std::fprintf(stderr, "fuzz particles: an accepted file of %zu bytes is written back as %zu "
+                         "other bytes\n", size, bytes.size());
+    std::abort();
+  }
+}
+
 void cli(const uint8_t* data, std::size_t size) {
   std::vector<std::string> args{"pyro"};
   std::string current;
@@ -104,6 +128,7 @@ bool run(const std::string& name, const std::string& input) {
   if (name == "scene") scene(data, input.size());
   else if (name == "vdb") vdb(data, input.size());
   else if (name == "png") png(data, input.size());
+  else if (name == "particles") particles(data, input.size());
   else if (name == "cli") cli(data, input.size());
   else return false;
   return true;

@@ -19,11 +19,16 @@ void scene(const uint8_t* data, std::size_t size);
 void vdb(const uint8_t* data, std::size_t size);
 // The bytes written to a temporary .png file, then read_png.
 void png(const uint8_t* data, std::size_t size);
+// The bytes written to a temporary .pyrop file, then read_particle_file, as a scene's particle
+// volume is loaded. An accepted file must come back byte for byte when written again
+// (write_particle_file), or the target aborts.
+void particles(const uint8_t* data, std::size_t size);
 // The bytes split into arguments at newlines, then parsed by the `pyro` CLI11 app, stopped before any
 // command runs (tools/pyro/app.h: stop_after_parsing).
 void cli(const uint8_t* data, std::size_t size);
 
-// Runs the target called `name` ("scene", "vdb", "png", "cli"); false for an unknown name.
+// Runs the target called `name` ("scene", "vdb", "png", "particles", "cli"); false for an
+// unknown name.
 bool run(const std::string& name, const std::string& input);
 
 }  // namespace pyro::fuzz
