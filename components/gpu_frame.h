@@ -34,6 +34,12 @@ struct EyeTargets {
   // z the frame's particles reach there (RG32F, systems/composite/particle_depth_grid.h), written
   // each frame by the composite system for depth-aware upsampling; 0 otherwise.
   gpu::Texture particle_depths;
+  // With media and depth-aware upsampling: per cell of particle_depths, the smallest window depth
+  // of the scene target's opaque geometry (R32F; content/shaders/cell_nearest_depth.comp), and
+  // the scene target's RenderTarget::binds() when it was made (it is made again after a draw).
+  gpu::Texture cell_nearest_depths;
+  uint64_t cell_nearest_binds = 0;
+  bool cell_nearest_valid = false;
 };
 
 struct GpuFrame {

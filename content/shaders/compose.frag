@@ -115,6 +115,10 @@ float slope(sampler2D depth, ivec2 texel, ivec2 step, float u, int at, int last)
 //   texel out would (measured on the explosion). kappa = 1e-4: where no texel saw the surface
 //   (a bar, or a gap between bars, thinner than a texel), the texels keep their bilinear shares,
 //   the best guess left.
+// Before both: a pixel whose surface is nearer than every particle around it (u above the near
+// end of the particles' depths) has no particle in front of it, so its media is 0, exactly (the
+// spherical billboard's path ends at the surface, eq. 2). That removes the halo that geometry
+// thinner than a texel, which no texel saw, would carry (media_edges.frag marks its tiles).
 vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth,
                      sampler2D particle_depths, ivec2 texel, vec2 uv) {
   vec4 bilinear = textureLod(media, uv, 0.0);
@@ -148,6 +152,7 @@ vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth,
   vec4 weighted = w.x * texelFetch(media, ivec2(t0.x, t1.y), 0) +
                   w.y * texelFetch(media, t1, 0) + w.z * texelFetch(media, ivec2(t1.x, t0.y), 0) +
                   w.w * texelFetch(media, t0, 0);
+  if (u > range.y) return vec4(0.0);  // nearer than every particle around: no media, exactly
   return max4(r) <= u_depth_tolerance ? bilinear : weighted;
 }
 #endif

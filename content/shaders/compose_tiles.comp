@@ -13,12 +13,11 @@
 //          pixels show the scene alone: exact;
 //   fire   any fire opacity above 0: the shimmer's offset (opacity times noise) is not 0.
 //          Without, the scene is read unshifted: exact;
-//   edge   a depth edge in the layer that the particles can see: a texel media_edges.frag
-//          marked (it says what an edge is). Where there is none,
-//          compose.frag's depth-aware test keeps the bilinear sample at every pixel whose
-//          surface the texels saw. Not exact: geometry thinner than a layer texel, which no texel
-//          saw, is not found, and there the bilinear sample is kept where compose.frag's
-//          per-pixel test might reweight (all four texels carry the background's media).
+//   edge   a texel media_edges.frag marked: a depth edge in the layer that the particles can
+//          see, or a pixel whose surface is nearer than every particle around it (geometry
+//          thinner than a texel, which no texel saw). Where there is none, compose.frag's
+//          depth-aware test keeps the bilinear sample at every pixel whose surface the texels
+//          saw.
 // The class is media | edge << 1 | fire << 2, or 0 (the scene alone) without media; each tile is
 // appended to its class's list, and counts[c] is the list's length.
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -42,7 +42,9 @@ ChartTable chart_billboard_modes(const BillboardModesChartOptions& options);
 
 // Explosion media layers at 1, 1/2, 1/4, 1/8 with each upsampling method (`pyro bench layers`).
 struct LayerResolutionChartOptions {
-  std::string scene;  // empty: content/scenes/explosion.json
+  // Empty: content/scenes/explosion.json (the paper's view) and explosion_behind_tower.json (the
+  // tower in front of the explosion: depth edges across the media).
+  std::vector<std::string> scenes;
   int width = 256, height = 256;
   int frames = 16;
   int error_frames = 4;

@@ -15,6 +15,7 @@ namespace pyro {
 Compositor::Compositor()
     : media_prepare_(gpu::load_program("fullscreen.vert", "media_prepare.frag")),
       media_edges_(gpu::load_program("fullscreen.vert", "media_edges.frag")),
+      cell_nearest_depth_(gpu::load_compute_program("cell_nearest_depth.comp")),
       prepare_fbo_(gpu::make_framebuffer()),
       empty_(gpu::make_vertex_array()) {}
 
@@ -86,7 +87,7 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glBindTextureUnit(14, r.media_edges->color_texture());
 }
 
-void Compositor::prepare_media(const EyeTargets& eye, bool edges) {
+void Compositor::prepare_media(EyeTargets& eye, bool edges) {
   const gpu::GpuPassScope pass("media prepare");  // profiling hook (no-op by default)
   const gpu::RenderTarget& combined = *eye.media_combined;
   const GLuint fbo = prepare_fbo_.get();
@@ -117,18 +118,38 @@ void Compositor::prepare_media(const EyeTargets& eye, bool edges) {
   if (edges) mark_edges(eye);
 }
 
-void Compositor::mark_edges(const EyeTargets& eye) {
+void Compositor::find_cell_nearest_depths(EyeTargets& eye) {
+  const gpu::GpuPassScope pass("cell nearest depth");  // profiling hook (no-op by default)
+  const glm::ivec2 cells = particle_depth_cells({eye.scene->width(), eye.scene->height()});
+  glUseProgram(cell_nearest_depth_.get());
+  glBindTextureUnit(0, eye.scene->depth_texture());
+  glBindImageTexture(0, eye.cell_nearest_depths.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  glUniform1i(gpu::uniform_location(cell_nearest_depth_, "u_cell"), ParticleDepthGrid::cell_pixels);
+  glDispatchCompute(static_cast<GLuint>((cells.x + 7) / 8), static_cast<GLuint>((cells.y + 7) / 8), 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  eye.cell_nearest_binds = eye.scene->binds();
+  eye.cell_nearest_valid = true;
+}
+
+void Compositor::mark_edges(EyeTargets& eye) {
+  // The opaque scene is redrawn (or drawn into) only through bind(): unchanged binds, the same
+  // depth (a still camera's scene is drawn once, mesh_renderer.h).
+  if (!eye.cell_nearest_valid || eye.cell_nearest_binds != eye.scene->binds())
+    find_cell_nearest_depths(eye);
   const gpu::RenderTarget& edges = *eye.media_edges;
   glBindFramebuffer(GL_FRAMEBUFFER, edges.framebuffer());
   glViewport(0, 0, edges.width(), edges.height());
   glUseProgram(media_edges_.get());
   glBindTextureUnit(0, eye.media_depth->color_texture());
   glBindTextureUnit(1, eye.particle_depths.get());
+  glBindTextureUnit(2, eye.cell_nearest_depths.get());
   auto loc = [&](const char* name) { return gpu::uniform_location(media_edges_, name); };
   glUniform2f(loc("u_scale"), static_cast<float>(eye.scene->width()) / edges.width(),
               static_cast<float>(eye.scene->height()) / edges.height());
   glUniform1i(loc("u_depth_cell"), ParticleDepthGrid::cell_pixels);
   glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
+  const float n = media_.near, f = media_.far;
+  glUniform2f(loc("u_inverse_depth"), 1.0f / n, (f - n) / (n * f));
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -206,7 +227,7 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
 }
 
 void Compositor::compose(StereoMode mode, GpuFrame& frame, bool swap_eyes, float motion_blur) {
-  for (const EyeTargets& eye : frame.eyes)
+  for (EyeTargets& eye : frame.eyes)
     if (eye.media_combined) {
       const bool reduced = eye.media_combined->width() != eye.scene->width() ||
                            eye.media_combined->height() != eye.scene->height();

@@ -57,9 +57,12 @@ class Compositor {
   void bind_views(const EyeTargets& left, const EyeTargets& right);
   // Explosion media: the three layers composited, and their depths, at layer size; `edges`: the
   // texels on depth edges marked (mark_edges).
-  void prepare_media(const EyeTargets& eye, bool edges);
-  // EyeTargets::media_edges from media_depth and the particle depths (media_edges.frag).
-  void mark_edges(const EyeTargets& eye);
+  void prepare_media(EyeTargets& eye, bool edges);
+  // EyeTargets::media_edges from media_depth, the particle depths and the cells' nearest
+  // surfaces (media_edges.frag), those made first when the scene target changed.
+  void mark_edges(EyeTargets& eye);
+  // EyeTargets::cell_nearest_depths from the scene target's depth (cell_nearest_depth.comp).
+  void find_cell_nearest_depths(EyeTargets& eye);
   // One full-screen draw with the compose.frag variant for these matrices (a zero matrix
   // compiles that view out) and the bound views' kind (plain, layers, media).
   // With media, the draw is split into tiles (list set `slot`: one per view of a frame).
@@ -77,7 +80,7 @@ class Compositor {
   void upload_shimmer_noise(float time);
 
   std::array<gpu::Program, 512> compose_;  // compose.frag variants, compiled on first use
-  gpu::Program media_prepare_, media_edges_;
+  gpu::Program media_prepare_, media_edges_, cell_nearest_depth_;
   gpu::Framebuffer prepare_fbo_;  // two outputs: media_combined and media_depth
   gpu::VertexArray empty_;
   MediaComposition media_;

@@ -36,6 +36,10 @@ GpuFrame make_gpu_frame(const RenderSettings& settings) {
       glTextureStorage2D(t.particle_depths.get(), 1, GL_RG32F, cells.x, cells.y);
       glTextureParameteri(t.particle_depths.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
       glTextureParameteri(t.particle_depths.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      t.cell_nearest_depths = gpu::make_texture(GL_TEXTURE_2D);
+      glTextureStorage2D(t.cell_nearest_depths.get(), 1, GL_R32F, cells.x, cells.y);
+      glTextureParameteri(t.cell_nearest_depths.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTextureParameteri(t.cell_nearest_depths.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     } else if (s.layer_scale < 1.0f)
       t.layer = std::make_unique<gpu::RenderTarget>(layer_extent(s.width, s.layer_scale),
                                                     layer_extent(s.height, s.layer_scale));

@@ -17,8 +17,8 @@ TEST(ChartLayerResolution, ErrorIsZeroAtFullResolutionAndGrowsAsLayersShrink) {
   o.frames = 4;
   o.error_frames = 2;
   const ChartTable t = chart_layer_resolution(o);
-  ASSERT_EQ(t.rows.size(), 8u);  // 4 scales x 2 methods
-  for (size_t m = 0; m < 2; ++m) {
+  ASSERT_EQ(t.rows.size(), 16u);  // 2 views x 2 methods x 4 scales
+  for (size_t m = 0; m < 4; ++m) {
     const auto* rows = &t.rows[4 * m];
     EXPECT_EQ(rows[0].extra[0], 1.0);
     EXPECT_EQ(rows[0].error, 0.0) << rows[0].label;  // its own ground truth
@@ -30,8 +30,15 @@ TEST(ChartLayerResolution, ErrorIsZeroAtFullResolutionAndGrowsAsLayersShrink) {
     EXPECT_EQ(rows[0].extra[4], 0.0) << rows[0].label;
     EXPECT_GT(rows[3].extra[3], 0.0) << rows[3].label;
   }
-  EXPECT_EQ(t.rows[0].group, "depth-aware");
-  EXPECT_EQ(t.rows[4].group, "bilinear");
+  EXPECT_EQ(t.rows[0].group, "depth-aware (explosion)");
+  EXPECT_EQ(t.rows[4].group, "bilinear (explosion)");
+  EXPECT_EQ(t.rows[8].group, "depth-aware (explosion_behind_tower)");
+  // One Pareto front per view: each view has a row on it.
+  EXPECT_EQ(t.rows[0].front, "explosion");
+  EXPECT_EQ(t.rows[15].front, "explosion_behind_tower");
+  bool first = false, second = false;
+  for (size_t i = 0; i < t.rows.size(); ++i) (i < 8 ? first : second) |= t.rows[i].pareto;
+  EXPECT_TRUE(first && second);
 }
 
 TEST(ChartBillboardModes, ThreeModesPerSceneWithinTheAccuracyBar) {

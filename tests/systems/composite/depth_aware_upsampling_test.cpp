@@ -6,7 +6,10 @@
 // - on the paper's explosion, as `pyro chart layer-resolution` renders it, its whole-image RMSE is
 //   at most bilinear's + 1e-4 at every scale;
 // - behind an opaque edge (a dust particle under the edge of a plane) its error near the edge and
-//   its halo (engine/math/depth_edge_error.h) are lower than bilinear's at 1/2, 1/4 and 1/8.
+//   its halo (engine/math/depth_edge_error.h) are lower than bilinear's at 1/2, 1/4 and 1/8;
+// - a surface nearer than every particle (a water tower in front of dust), however thin, shows
+//   the scene alone, as with full-resolution layers, where bilinear upsampling carries the dust
+//   onto its legs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -84,6 +87,25 @@ SceneDescription dust_below_an_edge() {
   c.radius = 1.6f;
   c.density = 3.0f;
   c.box_min = c.box_max = {2.4f, -2.0f, 0.0f};
+  s.clouds.push_back(c);
+  return s;
+}
+
+// A water tower in front of a bright dust particle, nothing else (the background is far): at 1/4
+// and 1/8 of 128 pixels the tower's legs are thinner than a layer texel.
+SceneDescription dust_behind_a_tower() {
+  MeshDescription tower;
+  tower.kind = MeshKind::water_tower;
+  tower.position = {0.0f, 0.0f, 3.0f};
+  tower.color = {0.5f, 0.5f, 0.5f};
+  SceneDescription s = dust_over(tower, 128);
+  s.camera.position = {0.0f, 4.0f, 14.0f};
+  s.camera.target = {0.0f, 4.0f, 0.0f};
+  CloudDescription c;
+  c.count = 1;
+  c.radius = 4.0f;
+  c.density = 3.0f;
+  c.box_min = c.box_max = {0.5f, 4.5f, -6.0f};
   s.clouds.push_back(c);
   return s;
 }
@@ -190,6 +212,53 @@ TEST(DepthAwareUpsampling, LessErrorAndHaloThanBilinearBehindAnEdge) {
     else
       EXPECT_LE(e[0].edges.halo, e[1].edges.halo) << scale;
     EXPECT_LE(e[0].edges.halo, 1e-3) << scale;
+  }
+}
+
+TEST(DepthAwareUpsampling, ASurfaceInFrontOfEveryParticleShowsTheSceneAlone) {
+  const SceneDescription scene = dust_behind_a_tower();
+  // The tower's pixels: nearer than the dust's front (view depth 20 - 4 = 16), by a margin.
+  const float tower_depth = 14.0f;
+  for (float scale : scales) {
+    RuntimeOptions full;
+    full.layer_scale = 1.0f;
+    RuntimeOptions reduced;
+    reduced.layer_scale = scale;
+    SceneRuntime reference(scene, full), depth_aware(scene, reduced), bilinear(scene, reduced);
+    MediaComposition plain;
+    plain.depth_aware = false;
+    bilinear.world().set_resource<MediaComposition>(plain);
+    reference.step();
+    depth_aware.step();
+    bilinear.step();
+    ecs::World& world = reference.world();
+    const OpaqueView opaque = read_opaque_view(world.resource<GpuFrame>(), world.resource<View>(),
+                                               world.resource<EyeDrawLists>());
+    const std::vector<float>& truth = reference.image().rgba;
+    const std::vector<float>& a = depth_aware.image().rgba;
+    const std::vector<float>& b = bilinear.image().rgba;
+    float depth_aware_light = 0.0f, bilinear_light = 0.0f, dust = 0.0f;
+    size_t tower_pixels = 0;
+    for (size_t p = 0; p < opaque.view_depth.size(); ++p) {
+      const bool tower = opaque.view_depth[p] < tower_depth;
+      tower_pixels += tower;
+      for (size_t c = 0; c < 3; ++c) {
+        const size_t i = 4 * p + c;
+        if (tower) {
+          depth_aware_light = std::max(depth_aware_light, std::abs(a[i] - truth[i]));
+          bilinear_light = std::max(bilinear_light, std::abs(b[i] - truth[i]));
+        } else {
+          dust = std::max(dust, truth[i] - opaque.rgba[i]);
+        }
+      }
+    }
+    ASSERT_GT(tower_pixels, 200u) << scale;
+    EXPECT_GT(dust, 0.1f) << scale << ": the dust shows around the tower";
+    // No particle lies in front of the tower: its pixels show the scene alone, as at full size.
+    EXPECT_LE(depth_aware_light, 1e-4f) << scale << " (bilinear: " << bilinear_light << ")";
+    if (scale < 0.5f) {
+      EXPECT_GT(bilinear_light, 0.02f) << scale;
+    }
   }
 }
 
