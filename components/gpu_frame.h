@@ -35,11 +35,9 @@ struct EyeTargets {
   // each frame by the composite system for depth-aware upsampling; 0 otherwise.
   gpu::Texture particle_depths;
   // With media and depth-aware upsampling: per cell of particle_depths, the smallest window depth
-  // of the scene target's opaque geometry (R32F; content/shaders/cell_nearest_depth.comp), and
-  // the scene target's RenderTarget::binds() when it was made (it is made again after a draw).
+  // of the scene target's opaque geometry (R32F; content/shaders/cell_nearest_depth.comp), made
+  // each frame before the tiles are classified.
   gpu::Texture cell_nearest_depths;
-  uint64_t cell_nearest_binds = 0;
-  bool cell_nearest_valid = false;
 };
 
 struct GpuFrame {

@@ -13,7 +13,9 @@
 //   USE_LEFT, USE_RIGHT  which views this draw reads (a side-by-side half reads one);
 //   LAYERS               a reduced-resolution particle layer per view;
 //   MEDIA                explosion media instead (FULL_SIZE: layers at the view's size, read
-//                        texel for texel; else DEPTH_AWARE: upsampled_media below, or bilinear;
+//                        texel for texel; else DEPTH_AWARE: upsampled_media below, FRONT:
+//                        bilinear but no media on a surface nearer than every particle, or
+//                        bilinear;
 //                        SHIMMER: heat shimmer).
 #ifndef USE_LEFT
 #define USE_LEFT 1
@@ -32,6 +34,9 @@
 #endif
 #ifndef SHIMMER
 #define SHIMMER 0
+#endif
+#ifndef FRONT
+#define FRONT 0
 #endif
 #ifndef FULL_SIZE
 #define FULL_SIZE 0
@@ -72,11 +77,22 @@ uniform vec2 u_view_size;
 layout(location = 0) out vec4 o_color;
 
 #if MEDIA
-#if DEPTH_AWARE
+#if DEPTH_AWARE || FRONT
 // 1/z of a window depth, affine in it: 1/n - d (f - n) / (n f) for the clip distances n, f.
 float inverse_depth(float window_depth) {
   return u_inverse_depth.x - window_depth * u_inverse_depth.y;
 }
+
+// Whether this pixel's surface is nearer than every particle around it (u above the near end of
+// the particles' depths in its cell): then no particle lies in front of it and its media is 0,
+// exactly (the spherical billboard's path ends at the surface, Umenhoffer et al. eq. 2).
+bool nearer_than_every_particle(sampler2D depth, sampler2D particle_depths, ivec2 texel) {
+  float u = inverse_depth(texelFetch(depth, texel, 0).r);
+  return u > texelFetch(particle_depths, texel / u_depth_cell, 0).g;
+}
+#endif
+
+#if DEPTH_AWARE
 
 float max4(vec4 v) { return max(max(v.x, v.y), max(v.z, v.w)); }
 
@@ -115,10 +131,9 @@ float slope(sampler2D depth, ivec2 texel, ivec2 step, float u, int at, int last)
 //   texel out would (measured on the explosion). kappa = 1e-4: where no texel saw the surface
 //   (a bar, or a gap between bars, thinner than a texel), the texels keep their bilinear shares,
 //   the best guess left.
-// Before both: a pixel whose surface is nearer than every particle around it (u above the near
-// end of the particles' depths) has no particle in front of it, so its media is 0, exactly (the
-// spherical billboard's path ends at the surface, eq. 2). That removes the halo that geometry
-// thinner than a texel, which no texel saw, would carry (media_edges.frag marks its tiles).
+// Before both: a pixel nearer_than_every_particle has no media. That removes the halo that
+// geometry thinner than a texel, which no texel saw, would carry (media_edges.frag marks its
+// tiles, and the FRONT variant does the same there).
 vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth,
                      sampler2D particle_depths, ivec2 texel, vec2 uv) {
   vec4 bilinear = textureLod(media, uv, 0.0);
@@ -152,7 +167,7 @@ vec4 upsampled_media(sampler2D depth, sampler2D media, sampler2D media_depth,
   vec4 weighted = w.x * texelFetch(media, ivec2(t0.x, t1.y), 0) +
                   w.y * texelFetch(media, t1, 0) + w.z * texelFetch(media, ivec2(t1.x, t0.y), 0) +
                   w.w * texelFetch(media, t0, 0);
-  if (u > range.y) return vec4(0.0);  // nearer than every particle around: no media, exactly
+  if (u > range.y) return vec4(0.0);  // nearer_than_every_particle
   return max4(r) <= u_depth_tolerance ? bilinear : weighted;
 }
 #endif
@@ -163,6 +178,9 @@ vec4 layer_media(sampler2D depth, sampler2D media, sampler2D media_depth,
   return texelFetch(media, texel, 0);  // a texel per pixel: nothing to upsample
 #elif DEPTH_AWARE
   return upsampled_media(depth, media, media_depth, particle_depths, texel, uv);
+#elif FRONT
+  return nearer_than_every_particle(depth, particle_depths, texel) ? vec4(0.0)
+                                                                   : textureLod(media, uv, 0.0);
 #else
   return textureLod(media, uv, 0.0);
 #endif

@@ -9,7 +9,7 @@
 // shade the blocks on its diagonal. Not an instanced or indirect draw: llvmpipe runs those
 // instance by instance, or flushes.)
 layout(std430, binding = 0) readonly buffer TileLists {
-  uint counts[8];
+  uint counts[16];
   uint tiles[];
 };
 

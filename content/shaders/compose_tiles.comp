@@ -14,12 +14,15 @@
 //   fire   any fire opacity above 0: the shimmer's offset (opacity times noise) is not 0.
 //          Without, the scene is read unshifted: exact;
 //   edge   a texel media_edges.frag marked: a depth edge in the layer that the particles can
-//          see, or a pixel whose surface is nearer than every particle around it (geometry
-//          thinner than a texel, which no texel saw). Where there is none, compose.frag's
-//          depth-aware test keeps the bilinear sample at every pixel whose surface the texels
-//          saw.
-// The class is media | edge << 1 | fire << 2, or 0 (the scene alone) without media; each tile is
-// appended to its class's list, and counts[c] is the list's length.
+//          see. Where there is none, compose.frag's depth-aware test keeps the bilinear
+//          sample at every pixel whose surface the texels saw, but for
+//   front  a cell of the tile's pixels (systems/composite/particle_depth_grid.h) whose nearest
+//          opaque surface (cell_nearest_depth.comp) is nearer than every particle that reaches
+//          it: geometry thinner than a texel, which no texel saw, may stand there. compose.frag's
+//          FRONT variant gives such pixels no media and the others the bilinear sample, as its
+//          depth-aware variant does. Only without edge.
+// The class is media | edge << 1 | fire << 2 | front << 3, or 0 (the scene alone) without media;
+// each tile is appended to its class's list, and counts[c] is the list's length.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #ifndef USE_LEFT
@@ -42,9 +45,15 @@ layout(binding = 9) uniform sampler2D u_right_media;
 layout(binding = 10) uniform sampler2D u_right_media_depth;
 layout(binding = 13) uniform sampler2D u_left_media_edges;  // media_edges.frag's marks
 layout(binding = 14) uniform sampler2D u_right_media_edges;
+layout(binding = 11) uniform sampler2D u_left_particle_depths;  // per cell, 1/z: far, near
+layout(binding = 12) uniform sampler2D u_right_particle_depths;
+layout(binding = 15) uniform sampler2D u_left_cell_nearest;     // per cell, window depth
+layout(binding = 16) uniform sampler2D u_right_cell_nearest;
+uniform vec2 u_inverse_depth;  // 1/z = x - y d for a window depth d
+uniform int u_depth_cell;      // the cells' size in pixels
 
 layout(std430, binding = 0) buffer TileLists {
-  uint counts[8];  // per class c: the length of its list
+  uint counts[16];  // per class c: the length of its list
   uint tiles[];       // class c's tiles from c * u_tile_count on, packed x | y << 16
 };
 
@@ -62,7 +71,21 @@ vec2 block_uv(ivec2 b, ivec2 size) {
   return (vec2(min(b, max(size - 2, ivec2(0)))) + 1.0) / vec2(size);
 }
 
-uint eye_class(sampler2D media, sampler2D media_depth, sampler2D media_edges, ivec2 tile) {
+// Whether a cell of pixels p0..p1 holds a surface nearer than every particle that reaches it
+// (a cell no particle reaches holds one value and counts as none).
+bool front_in(sampler2D particle_depths, sampler2D cell_nearest, ivec2 p0, ivec2 p1) {
+  ivec2 c0 = p0 / u_depth_cell, c1 = p1 / u_depth_cell;
+  for (int y = c0.y; y <= c1.y; ++y)
+    for (int x = c0.x; x <= c1.x; ++x) {
+      vec2 range = texelFetch(particle_depths, ivec2(x, y), 0).rg;
+      float u = u_inverse_depth.x - texelFetch(cell_nearest, ivec2(x, y), 0).r * u_inverse_depth.y;
+      if (range.y > range.x && u > range.y) return true;
+    }
+  return false;
+}
+
+uint eye_class(sampler2D media, sampler2D media_depth, sampler2D media_edges,
+               sampler2D particle_depths, sampler2D cell_nearest, ivec2 tile) {
   ivec2 layer = textureSize(media, 0);
   ivec2 p0 = tile * u_tile_pixels;
   ivec2 p1 = min(p0 + u_tile_pixels, u_view_size) - 1;
@@ -88,6 +111,9 @@ uint eye_class(sampler2D media, sampler2D media_depth, sampler2D media_edges, iv
   uint c = 1u;
   if (edge) c |= 2u;
   if (fire > 0.0) c |= 4u;
+#if EDGES
+  if (!edge && front_in(particle_depths, cell_nearest, p0, p1)) c |= 8u;
+#endif
   return c;
 }
 
@@ -96,11 +122,14 @@ void main() {
   if (any(greaterThanEqual(tile, u_tiles))) return;
   uint c = 0u;
 #if USE_LEFT
-  c |= eye_class(u_left_media, u_left_media_depth, u_left_media_edges, tile);
+  c |= eye_class(u_left_media, u_left_media_depth, u_left_media_edges, u_left_particle_depths,
+                 u_left_cell_nearest, tile);
 #endif
 #if USE_RIGHT
-  c |= eye_class(u_right_media, u_right_media_depth, u_right_media_edges, tile);
+  c |= eye_class(u_right_media, u_right_media_depth, u_right_media_edges,
+                 u_right_particle_depths, u_right_cell_nearest, tile);
 #endif
+  if ((c & 2u) != 0u) c &= ~8u;  // the depth-aware variant covers the front test
   uint slot = atomicAdd(counts[c], 1u);
   tiles[int(c) * u_tile_count + int(slot)] = uint(tile.x) | uint(tile.y) << 16;
 }

@@ -1,47 +1,20 @@
 #version 450 core
-// The layer texels where depth-aware upsampling can change the result, at layer size after
-// media_prepare.frag, for compose_tiles.comp to find with one gather per 2 x 2 texels: 1 at
-// texel t when
-//   (a) along x or y t lies on a depth edge the particles can see:
-//       - the second difference of the texels' 1/z exceeds u_depth_tolerance times t's (u = 1/z
-//         is affine on a plane, so a slope is no edge however steep; a silhouette is a jump),
-//       - and the three texels' clip depths (1/z clamped to the depths the particles reach at t,
-//         systems/composite/particle_depth_grid.h) differ by more than u_depth_tolerance times
-//         that range: compose.frag's own test (a horizon behind the particles clamps alike);
-//   (b) or a cell that t's footprint (the full-size pixels floor(t s) .. floor((t + 1) s) - 1)
-//       meets holds a pixel whose surface is nearer than every particle that reaches the cell:
-//       no particle lies in front of it, so its media is 0, which compose.frag gives it (where
-//       bilinear filtering would carry the media of texels that saw another surface). This
-//       finds geometry thinner than a texel (a tower's bars at 1/8), which no texel saw and (a)
-//       cannot find.
+// The layer texels on a depth edge the particles can see (depth-aware upsampling), at layer size
+// after media_prepare.frag, for compose_tiles.comp to find with one gather per 2 x 2 texels: 1 at
+// texel t when along x or y
+//   - the second difference of the texels' 1/z exceeds u_depth_tolerance times t's (u = 1/z is
+//     affine on a plane, so a slope is no edge however steep; a silhouette is a jump), and
+//   - the three texels' clip depths (1/z clamped to the depths the particles reach at t,
+//     systems/composite/particle_depth_grid.h) differ by more than u_depth_tolerance times that
+//     range: compose.frag's own test (a horizon behind the particles clamps alike);
 // else 0. The neighbours beyond the layer's border are the border texels (clamp to edge).
 layout(binding = 0) uniform sampler2D u_media_depth;      // media_prepare.frag's: 1/z in r
 layout(binding = 1) uniform sampler2D u_particle_depths;  // compose.frag says what they are
-layout(binding = 2) uniform sampler2D u_cell_nearest;     // cell_nearest_depth.comp
-uniform vec2 u_inverse_depth;  // 1/z = x - y d for a window depth d
 uniform vec2 u_scale;     // full-size pixels per layer texel
 uniform int u_depth_cell;  // the particle depths' cells in pixels
 uniform float u_depth_tolerance;
 
 layout(location = 0) out vec4 o_edge;
-
-// Whether a cell t's footprint meets holds a pixel whose surface is nearer than every particle
-// that reaches the cell (1/z of the cell's nearest surface, cell_nearest_depth.comp, above the
-// cell's near end; a cell no particle reaches holds one value and counts as none). The pixel
-// may lie outside the footprint: a mark more, which costs time, never the image.
-bool footprint_in_front(ivec2 t) {
-  ivec2 cells = textureSize(u_cell_nearest, 0);
-  ivec2 c0 = min(ivec2(floor(vec2(t) * u_scale)) / u_depth_cell, cells - 1);
-  ivec2 c1 = clamp((ivec2(floor(vec2(t + 1) * u_scale)) - 1) / u_depth_cell, c0, cells - 1);
-  for (int y = c0.y; y <= c1.y; ++y)
-    for (int x = c0.x; x <= c1.x; ++x) {
-      vec2 range = texelFetch(u_particle_depths, ivec2(x, y), 0).rg;  // 1/z: far, near
-      float nearest = texelFetch(u_cell_nearest, ivec2(x, y), 0).r;
-      if (range.y > range.x && u_inverse_depth.x - nearest * u_inverse_depth.y > range.y)
-        return true;
-    }
-  return false;
-}
 
 void main() {
   ivec2 t = ivec2(gl_FragCoord.xy);
@@ -61,5 +34,5 @@ void main() {
   float seen = u_depth_tolerance * (range.y - range.x);
   bool edge = (second.x > u_depth_tolerance * u && apart.x > seen) ||
               (second.y > u_depth_tolerance * u && apart.y > seen);
-  o_edge = vec4(edge || footprint_in_front(t) ? 1.0 : 0.0);
+  o_edge = vec4(edge ? 1.0 : 0.0);
 }

@@ -8,7 +8,7 @@
 namespace pyro {
 
 namespace {
-constexpr int class_slots = 8;  // the buffer's counts: one per 3-bit class
+constexpr int class_slots = 16;  // the buffer's counts: one per 4-bit class
 constexpr GLsizeiptr count_bytes = class_slots * sizeof(GLuint);
 }  // namespace
 
@@ -55,6 +55,10 @@ void ComposeTiles::classify(const Grid& grid, const Classify& how, int slot) {
   glUniform1i(loc("u_tile_pixels"), tile_pixels);
   glUniform2i(loc("u_view_size"), grid.view.x, grid.view.y);
   glUniform2f(loc("u_texels_per_pixel"), grid.texels_per_pixel.x, grid.texels_per_pixel.y);
+  if (how.edges) {
+    glUniform2f(loc("u_inverse_depth"), how.inverse_depth.x, how.inverse_depth.y);
+    glUniform1i(loc("u_depth_cell"), how.depth_cell);
+  }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lists_[s].get());
   glDispatchCompute(static_cast<GLuint>((grid.tiles.x + 7) / 8), static_cast<GLuint>((grid.tiles.y + 7) / 8), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

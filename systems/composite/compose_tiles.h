@@ -6,9 +6,11 @@
 // (content/shaders/compose_tiles.comp, which says what decides a class) appends each tile to its
 // class's list, and each class is drawn with its variant by one draw of point sprites, a tile
 // each (content/shaders/compose_tile.vert): llvmpipe rasterises a point as one square, where a
-// quad's two triangles cost a fifth more on its diagonal's blocks. Tiles without media or without fire give exactly the full
-// variant's image; depth edges are found in the layer's depths, so geometry thinner than a layer
-// texel can differ (the comp file says how): tests/systems/composite/compose_tiles_test.cpp bounds it.
+// quad's two triangles cost a fifth more on its diagonal's blocks. Tiles without media or without
+// fire give exactly the full variant's image; depth edges are found in the layer's depths and
+// surfaces nearer than every particle per 8-pixel cell (the comp file says how), so the rest can
+// differ only where the depth-aware test would reweight texels across an edge no texel saw:
+// tests/systems/composite/compose_tiles_test.cpp bounds it.
 #include <array>
 
 #include <glm/vec2.hpp>
@@ -19,10 +21,11 @@ namespace pyro {
 
 class ComposeTiles {
  public:
-  // Tile classes: media | edge << 1 | fire << 2, or 0 for the scene alone.
-  static constexpr unsigned media = 1u, edge = 2u, fire = 4u;
-  static constexpr std::array<unsigned, 5> classes = {0u, media, media | edge, media | fire,
-                                                      media | edge | fire};
+  // Tile classes: media | edge << 1 | fire << 2 | front << 3, or 0 for the scene alone; front
+  // (a surface nearer than every particle, no layer edge) only without edge, which covers it.
+  static constexpr unsigned media = 1u, edge = 2u, fire = 4u, front = 8u;
+  static constexpr std::array<unsigned, 7> classes = {
+      0u, media, media | front, media | edge, media | fire, media | front | fire, media | edge | fire};
 
   // Square tiles of tile_pixels from the view's lower-left corner; the last column and row may
   // reach past the view (the draw scissors them to it). 32 was the fastest of 8 to 64 on
@@ -40,7 +43,9 @@ class ComposeTiles {
 
   struct Classify {
     bool use_left = true, use_right = false;  // the views this draw reads (bound by the caller)
-    bool edges = true;  // depth-aware upsampling: find the edges media_edges.frag marked
+    bool edges = true;  // depth-aware upsampling: find the edges media_edges.frag marked, and fronts
+    glm::vec2 inverse_depth{0.0f};  // with edges: 1/z = x - y d for a window depth d
+    int depth_cell = 8;             // with edges: the particle depths' cells in pixels
     bool fire = true;   // heat shimmer: find fire
   };
   // Fills list set `slot` (0 or 1: the two views of a side-by-side frame) for `grid`, reading the

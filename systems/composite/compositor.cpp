@@ -23,17 +23,19 @@ const gpu::Program& Compositor::variant(bool use_left, bool use_right, const Fea
   const bool media = media_bound_ && f.media;
   const bool full_size = media && f.full_size;
   const bool depth_aware = media && f.depth_aware && !full_size;
+  const bool front = media && f.front && !depth_aware && !full_size;
   const bool shimmer = media && f.shimmer;
   const bool layers = layers_ && !media_bound_;
   const size_t key = size_t(use_left) | size_t(use_right) << 1 | size_t(layers) << 2 |
                      size_t(media) << 3 | size_t(depth_aware) << 4 | size_t(shimmer) << 5 |
-                     size_t(f.tiled) << 6 | size_t(encode_) << 7 | size_t(full_size) << 8;
+                     size_t(f.tiled) << 6 | size_t(encode_) << 7 | size_t(full_size) << 8 |
+                     size_t(front) << 9;
   gpu::Program& p = compose_[key];
   if (p.get() == 0) {
     auto flag = [](const char* name, bool on) { return std::string(name) + (on ? " 1" : " 0"); };
     std::vector<std::string> defines = {flag("USE_LEFT", use_left), flag("USE_RIGHT", use_right),
                                         flag("LAYERS", layers), flag("MEDIA", media),
-                                        flag("DEPTH_AWARE", depth_aware),
+                                        flag("DEPTH_AWARE", depth_aware), flag("FRONT", front),
                                         flag("FULL_SIZE", full_size), flag("SHIMMER", shimmer),
                                         flag("SRGB_ENCODE", encode_)};
     if (encode_) defines.push_back(srgb_polynomial_define());
@@ -85,6 +87,8 @@ void Compositor::bind_views(const EyeTargets& l, const EyeTargets& r) {
   glBindTextureUnit(12, r.particle_depths.get());
   glBindTextureUnit(13, l.media_edges->color_texture());
   glBindTextureUnit(14, r.media_edges->color_texture());
+  glBindTextureUnit(15, l.cell_nearest_depths.get());
+  glBindTextureUnit(16, r.cell_nearest_depths.get());
 }
 
 void Compositor::prepare_media(EyeTargets& eye, bool edges) {
@@ -127,29 +131,21 @@ void Compositor::find_cell_nearest_depths(EyeTargets& eye) {
   glUniform1i(gpu::uniform_location(cell_nearest_depth_, "u_cell"), ParticleDepthGrid::cell_pixels);
   glDispatchCompute(static_cast<GLuint>((cells.x + 7) / 8), static_cast<GLuint>((cells.y + 7) / 8), 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  eye.cell_nearest_binds = eye.scene->binds();
-  eye.cell_nearest_valid = true;
 }
 
 void Compositor::mark_edges(EyeTargets& eye) {
-  // The opaque scene is redrawn (or drawn into) only through bind(): unchanged binds, the same
-  // depth (a still camera's scene is drawn once, mesh_renderer.h).
-  if (!eye.cell_nearest_valid || eye.cell_nearest_binds != eye.scene->binds())
-    find_cell_nearest_depths(eye);
+  find_cell_nearest_depths(eye);  // for compose_tiles.comp's front class
   const gpu::RenderTarget& edges = *eye.media_edges;
   glBindFramebuffer(GL_FRAMEBUFFER, edges.framebuffer());
   glViewport(0, 0, edges.width(), edges.height());
   glUseProgram(media_edges_.get());
   glBindTextureUnit(0, eye.media_depth->color_texture());
   glBindTextureUnit(1, eye.particle_depths.get());
-  glBindTextureUnit(2, eye.cell_nearest_depths.get());
   auto loc = [&](const char* name) { return gpu::uniform_location(media_edges_, name); };
   glUniform2f(loc("u_scale"), static_cast<float>(eye.scene->width()) / edges.width(),
               static_cast<float>(eye.scene->height()) / edges.height());
   glUniform1i(loc("u_depth_cell"), ParticleDepthGrid::cell_pixels);
   glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
-  const float n = media_.near, f = media_.far;
-  glUniform2f(loc("u_inverse_depth"), 1.0f / n, (f - n) / (n * f));
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -194,6 +190,8 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
   how.use_left = use_left;
   how.use_right = use_right;
   how.edges = all.depth_aware;
+  how.inverse_depth = {1.0f / media_.near, (media_.far - media_.near) / (media_.near * media_.far)};
+  how.depth_cell = ParticleDepthGrid::cell_pixels;
   how.fire = all.shimmer;
   {
     const gpu::GpuPassScope pass("tile classify");
@@ -213,11 +211,13 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
     f.full_size = all.full_size;
     f.media = (cls & ComposeTiles::media) != 0;
     f.depth_aware = (cls & ComposeTiles::edge) != 0;
+    f.front = (cls & ComposeTiles::front) != 0;
     f.shimmer = (cls & ComposeTiles::fire) != 0;
-    if ((f.depth_aware && !all.depth_aware) || (f.shimmer && !all.shimmer)) continue;  // never filled
-    static constexpr const char* names[8] = {"scene tiles", "media tiles", "",
-                                             "depth-edge tiles", "", "fire tiles", "",
-                                             "fire and depth-edge tiles"};
+    if (((f.depth_aware || f.front) && !all.depth_aware) || (f.shimmer && !all.shimmer))
+      continue;  // never filled
+    static constexpr const char* names[16] = {
+        "scene tiles", "media tiles", "", "depth-edge tiles", "", "fire tiles", "",
+        "fire and depth-edge tiles", "", "front tiles", "", "", "", "fire and front tiles", "", ""};
     const gpu::GpuPassScope pass(names[cls]);
     const gpu::Program& program = variant(use_left, use_right, f);
     draw_with(program);

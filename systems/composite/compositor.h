@@ -58,8 +58,8 @@ class Compositor {
   // Explosion media: the three layers composited, and their depths, at layer size; `edges`: the
   // texels on depth edges marked (mark_edges).
   void prepare_media(EyeTargets& eye, bool edges);
-  // EyeTargets::media_edges from media_depth, the particle depths and the cells' nearest
-  // surfaces (media_edges.frag), those made first when the scene target changed.
+  // EyeTargets::media_edges from media_depth and the particle depths (media_edges.frag), and
+  // EyeTargets::cell_nearest_depths.
   void mark_edges(EyeTargets& eye);
   // EyeTargets::cell_nearest_depths from the scene target's depth (cell_nearest_depth.comp).
   void find_cell_nearest_depths(EyeTargets& eye);
@@ -72,6 +72,7 @@ class Compositor {
   struct Features {
     bool media = true;        // with media bound: composite them (false: the scene alone)
     bool depth_aware = false;
+    bool front = false;       // no media where the surface is nearer than every particle
     bool full_size = false;   // layers at the view's size: read texel for texel
     bool shimmer = false;
     bool tiled = false;       // linked with compose_tile.vert instead of fullscreen.vert
@@ -79,7 +80,7 @@ class Compositor {
   const gpu::Program& variant(bool use_left, bool use_right, const Features& features);
   void upload_shimmer_noise(float time);
 
-  std::array<gpu::Program, 512> compose_;  // compose.frag variants, compiled on first use
+  std::array<gpu::Program, 1024> compose_;  // compose.frag variants, compiled on first use
   gpu::Program media_prepare_, media_edges_, cell_nearest_depth_;
   gpu::Framebuffer prepare_fbo_;  // two outputs: media_combined and media_depth
   gpu::VertexArray empty_;

@@ -11,26 +11,13 @@
 #include "engine/math/billboard_alignment.h"
 #include "engine/math/camera_math.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "tests/support/one_particle_scene.h"
 
 namespace pyro {
 namespace {
 
 std::vector<float> render(const glm::vec3& at, BillboardAlignment alignment) {
-  SceneDescription s;
-  s.width = 120;
-  s.height = 90;
-  s.background = {0, 0, 0};
-  s.camera.position = {0, 0, 0};
-  s.camera.target = {0, 0, -1};
-  s.camera.fov_y_deg = 60.0f;
-  CloudDescription c;
-  c.count = 1;
-  c.radius = 0.5f;
-  c.density = 1.0f;
-  c.color = {1, 1, 1};
-  c.box_min = at;
-  c.box_max = at;
-  s.clouds.push_back(c);
+  const SceneDescription s = test::one_particle_scene(at, 0.5f, 1.0f, 120, 90, 60.0f);
   RuntimeOptions o;
   o.alignment = alignment;
   SceneRuntime r(s, o);

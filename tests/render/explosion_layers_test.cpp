@@ -13,29 +13,20 @@
 #include "components/frame_image.h"
 #include "engine/math/phase_function.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "tests/support/one_particle_scene.h"
 
 namespace pyro {
 namespace {
 
 SceneDescription dust_scene(const glm::vec3& at, float radius, float tau) {
-  SceneDescription s;
-  s.width = 96;
-  s.height = 96;
-  s.background = {0, 0, 0};
-  s.camera.position = {0, 0, 0};
-  s.camera.target = {0, 0, -1};
-  s.camera.fov_y_deg = 50.0f;
+  // Cloud particles are dust (medium 0), opacity 1.
+  SceneDescription s = test::one_particle_scene(at, radius, tau, 96, 96, 50.0f);
+  s.clouds[0].color = CloudDescription{}.color;
   s.light.direction = {-0.6f, -0.8f, 0.0f};
   s.light.color = {1.0f, 1.0f, 1.0f};
   s.light.ambient = {0.1f, 0.1f, 0.1f};
   s.render.particles = ParticleShape::spherical;
   s.render.shading = ParticleShading::explosion;
-  CloudDescription c;  // cloud particles are dust (medium 0), opacity 1
-  c.count = 1;
-  c.radius = radius;
-  c.density = tau;
-  c.box_min = c.box_max = at;
-  s.clouds.push_back(c);
   return s;
 }
 

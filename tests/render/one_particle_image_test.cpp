@@ -8,27 +8,14 @@
 #include "components/draw_list.h"
 #include "components/frame_image.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "tests/support/one_particle_scene.h"
 
 namespace pyro {
 namespace {
 
 SceneDescription one_particle_scene(const glm::vec3& at, float radius, float density) {
-  SceneDescription s;
+  SceneDescription s = test::one_particle_scene(at, radius, density, 161, 121, 40.0f, 1e-4f);
   s.name = "one particle";
-  s.width = 161;
-  s.height = 121;
-  s.background = {0.0f, 0.0f, 0.0f};
-  s.camera.position = {0.0f, 0.0f, 0.0f};
-  s.camera.target = {0.0f, 0.0f, -1.0f};
-  s.camera.fov_y_deg = 40.0f;
-  CloudDescription c;
-  c.count = 1;
-  c.radius = radius;
-  c.density = density;
-  c.color = {1.0f, 1.0f, 1.0f};
-  c.box_min = at - glm::vec3(1e-4f);
-  c.box_max = at + glm::vec3(1e-4f);
-  s.clouds.push_back(c);
   return s;
 }
 

@@ -13,28 +13,15 @@
 #include "engine/math/stereo_projection.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
+#include "tests/support/one_particle_scene.h"
 
 namespace pyro {
 namespace {
 
 SceneDescription one_particle(const glm::vec3& at) {
-  SceneDescription s;
-  s.width = 160;
-  s.height = 120;
-  s.background = {0, 0, 0};
-  s.camera.position = {0, 0, 0};
-  s.camera.target = {0, 0, -1};
-  s.camera.fov_y_deg = 40.0f;
+  SceneDescription s = test::one_particle_scene(at, 0.5f, 1.0f, 160, 120, 40.0f);
   s.camera.interocular = 0.4f;
   s.camera.zero_parallax_distance = 5.0f;
-  CloudDescription c;
-  c.count = 1;
-  c.radius = 0.5f;
-  c.density = 1.0f;
-  c.color = {1, 1, 1};
-  c.box_min = at;
-  c.box_max = at + glm::vec3(1e-6f);
-  s.clouds.push_back(c);
   return s;
 }
 

@@ -17,6 +17,7 @@
 #include "systems/reference/particle_reference.h"
 #include "systems/reference/pixel_ray.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "systems/reference/world_snapshot.h"
 
 namespace pyro {
 namespace {
@@ -121,17 +122,7 @@ TEST(QualityGroundTruth, CpuTruthAgreesWithTheGlRenderWhereTheGroundHidesParticl
   background.step();
   particles.step();
   const CameraFrame camera = particles.world().resource<View>().eyes.at(0);
-  ParticlePool all(80);
-  particles.world().each<ParticleSet>([&](ecs::Entity, ParticleSet& set) {
-    for (size_t i = 0; i < set.pool.size(); ++i) {
-      ParticleInit init;
-      init.position = {set.pool.px[i], set.pool.py[i], set.pool.pz[i]};
-      init.radius = set.pool.radius[i];
-      init.density = set.pool.density[i];
-      init.color = {set.pool.r[i], set.pool.g[i], set.pool.b[i]};
-      all.spawn(init);
-    }
-  });
+  const ParticlePool all = gather_particles(particles.world());
   RgbImage behind;
   behind.width = 64;
   behind.height = 48;

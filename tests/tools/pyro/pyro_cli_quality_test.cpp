@@ -18,6 +18,7 @@
 #include "engine/math/color.h"
 #include "systems/reference/particle_reference.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "systems/reference/world_snapshot.h"
 #include "tests/support/json_output.h"
 #include "tests/support/test_paths.h"
 
@@ -85,17 +86,7 @@ TEST(PyroCliQuality, RenderedPickMeetsTheTargetAgainstTheCpuReference) {
   SceneRuntime runtime(scene, o);
   runtime.step();
   const CameraFrame camera = runtime.world().resource<View>().eyes.at(0);
-  ParticlePool all(60);
-  runtime.world().each<ParticleSet>([&](ecs::Entity, ParticleSet& s) {
-    for (size_t i = 0; i < s.pool.size(); ++i) {
-      ParticleInit init;
-      init.position = {s.pool.px[i], s.pool.py[i], s.pool.pz[i]};
-      init.radius = s.pool.radius[i];
-      init.density = s.pool.density[i];
-      init.color = {s.pool.r[i], s.pool.g[i], s.pool.b[i]};
-      all.spawn(init);
-    }
-  });
+  const ParticlePool all = gather_particles(runtime.world());
   ASSERT_EQ(all.size(), 60u);
   const RgbImage reference = render_particles_reference(all, camera, glm::dvec3(scene.background));
   const PngImage png = read_png((dir / "out" / "frame_0000.png").string());
