@@ -34,10 +34,15 @@ struct EyeTargets {
   // z the frame's particles reach there (RG32F, systems/composite/particle_depth_grid.h), written
   // each frame by the composite system for depth-aware upsampling; 0 otherwise.
   gpu::Texture particle_depths;
+  // Changes whenever the opaque pass draws the scene target's geometry (and depth) anew or copies
+  // it back (the mesh_render system); a still camera's scene keeps it.
+  uint64_t opaque_version = 0;
   // With media and depth-aware upsampling: per cell of particle_depths, the smallest window depth
-  // of the scene target's opaque geometry (R32F; content/shaders/cell_nearest_depth.comp), made
-  // each frame before the tiles are classified.
+  // of the scene target's opaque geometry (R32F; content/shaders/cell_nearest_depth.comp), and
+  // the opaque_version it was made for (made again when that changes).
   gpu::Texture cell_nearest_depths;
+  uint64_t cell_nearest_version = 0;
+  bool cell_nearest_made = false;
 };
 
 struct GpuFrame {

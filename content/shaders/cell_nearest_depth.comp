@@ -1,8 +1,9 @@
 #version 450 core
 // Per 8-pixel cell of a view (the cells of systems/composite/particle_depth_grid.h), the smallest
 // window depth of the opaque scene in it: its nearest surface, which compose_tiles.comp compares
-// with the nearest depth the cell's particles reach (its front class). Each frame, before the
-// tiles are classified: about 0.1 ms at 512 x 512 on llvmpipe.
+// with the nearest depth the cell's particles reach (its front class). Made again only when the
+// opaque pass drew or restored the scene target (EyeTargets::opaque_version): once for a still
+// camera.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D u_scene_depth;  // full size, window depth

@@ -131,10 +131,13 @@ void Compositor::find_cell_nearest_depths(EyeTargets& eye) {
   glUniform1i(gpu::uniform_location(cell_nearest_depth_, "u_cell"), ParticleDepthGrid::cell_pixels);
   glDispatchCompute(static_cast<GLuint>((cells.x + 7) / 8), static_cast<GLuint>((cells.y + 7) / 8), 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  eye.cell_nearest_version = eye.opaque_version;
+  eye.cell_nearest_made = true;
 }
 
 void Compositor::mark_edges(EyeTargets& eye) {
-  find_cell_nearest_depths(eye);  // for compose_tiles.comp's front class
+  if (!eye.cell_nearest_made || eye.cell_nearest_version != eye.opaque_version)
+    find_cell_nearest_depths(eye);  // for compose_tiles.comp's front class
   const gpu::RenderTarget& edges = *eye.media_edges;
   glBindFramebuffer(GL_FRAMEBUFFER, edges.framebuffer());
   glViewport(0, 0, edges.width(), edges.height());

@@ -59,7 +59,7 @@ class Compositor {
   // texels on depth edges marked (mark_edges).
   void prepare_media(EyeTargets& eye, bool edges);
   // EyeTargets::media_edges from media_depth and the particle depths (media_edges.frag), and
-  // EyeTargets::cell_nearest_depths.
+  // EyeTargets::cell_nearest_depths when the opaque scene changed.
   void mark_edges(EyeTargets& eye);
   // EyeTargets::cell_nearest_depths from the scene target's depth (cell_nearest_depth.comp).
   void find_cell_nearest_depths(EyeTargets& eye);

@@ -23,8 +23,12 @@ ecs::SystemDesc mesh_render_system() {
             const RenderSettings& settings = world.resource<const RenderSettings>();
             MeshRenderer& renderer = world.resource<MeshRenderer>();
             GpuFrame& frame = world.resource<GpuFrame>();
-            for (size_t v = 0; v < view.eyes.size() && v < frame.eyes.size(); ++v)
+            for (size_t v = 0; v < view.eyes.size() && v < frame.eyes.size(); ++v) {
+              const int before = renderer.meshes_drawn() + renderer.images_restored();
               renderer.draw(instances, view.eyes[v], settings, *frame.eyes[v].scene);
+              if (renderer.meshes_drawn() + renderer.images_restored() != before)
+                ++frame.eyes[v].opaque_version;
+            }
           },
       .setup =
           [](ecs::World& world) {
