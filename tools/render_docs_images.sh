@@ -37,6 +37,7 @@ shot mist mist 30 480 360
 shot clouds clouds 30 480 360
 shot cloud_vdb cloud_vdb 0 480 270
 shot explosion explosion 30 384 384
+shot explosion_behind_tower explosion_behind_tower 30 384 384
 shot flipbook_fire flipbook_fire 12 128 192
 shot campfire campfire 20 320 240 --stereo side-by-side
 shot flipbook_grid flipbook_grid 20 320 240 --stereo side-by-side
