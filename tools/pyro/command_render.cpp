@@ -110,20 +110,25 @@ std::set<std::string> finished_files(const OutputFolder& folder, bool resume) {
   return done;
 }
 
+struct DrawnFrames {
+  nlohmann::json files = nlohmann::json::array();  // every file of the range, under --out
+  int drawn = 0;                                   // frames drawn by this run (the rest kept)
+};
+
 // Draws the frames of `range` that `folder` does not already hold finished (all of them unless
-// --resume) into its staging folder. Returns every file of the range, as paths under --out.
-nlohmann::json draw_into(SceneRuntime& runtime, OutputFolder& folder, const FrameRange& range,
-                         const RenderArgs& a) {
+// --resume) into its staging folder.
+DrawnFrames draw_into(SceneRuntime& runtime, OutputFolder& folder, const FrameRange& range,
+                      const RenderArgs& a) {
   if (folder.discarded_files() > 0)
     print_note("removed " + std::to_string(folder.discarded_files()) + " finished frame file(s) a "
                "killed run of this render had left in " + a.out + " (--resume keeps them)");
   const std::set<std::string> done = finished_files(folder, a.folder.resume);
-  nlohmann::json files = nlohmann::json::array();
+  DrawnFrames result;
   std::vector<int> to_draw;
   for (int f = range.first; f <= range.last; ++f) {
     bool finished = true;
     for (const std::string& path : runtime.png_paths(frame_name(f))) {
-      files.push_back((std::filesystem::path(a.out) / path).string());
+      result.files.push_back((std::filesystem::path(a.out) / path).string());
       finished = finished && done.count(path) > 0;
     }
     if (!finished) to_draw.push_back(f);
@@ -138,7 +143,8 @@ nlohmann::json draw_into(SceneRuntime& runtime, OutputFolder& folder, const Fram
     progress.update(i + 1);
   }
   progress.finish();
-  return files;
+  result.drawn = static_cast<int>(to_draw.size());
+  return result;
 }
 
 void run_render(const RenderArgs& a) {
@@ -171,13 +177,15 @@ void run_render(const RenderArgs& a) {
   SceneRuntime runtime(scene, options);  // refuses a scene over its budget (scene_budget.h)
   const std::string scene_id = std::filesystem::weakly_canonical(a.scene, ec).string();
   OutputFolder folder(a.out, scene_id, pixel_settings(runtime, options).dump(), a.folder);
-  const nlohmann::json files = draw_into(runtime, folder, range, a);
+  const DrawnFrames drawn = draw_into(runtime, folder, range, a);
   folder.commit();
   if (!a.trace.empty())
     write_text_file(a.trace, chrome_trace_json(runtime.trace(), "pyro render " + scene.file));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  nlohmann::json summary = render_summary(a, runtime, range, files, seconds);
+  nlohmann::json summary = render_summary(a, runtime, range, drawn.files, seconds);
+  summary["drawn_frames"] = drawn.drawn;
+  summary["kept_frames"] = range.count() - drawn.drawn;
   if (quality) {
     summary["quality"] = {{"max_rmse", quality->max_rmse},
                           {"settings", to_json(quality->settings)},
@@ -189,10 +197,17 @@ void run_render(const RenderArgs& a) {
   if (a.json) {
     std::printf("%s\n", summary.dump().c_str());
   } else {
-    std::printf("rendered %d frame(s) of %s (%dx%d %s, %zu particles) into %s in %.2f s\n",
-                range.count(), scene.file.c_str(), summary["width"].get<int>(),
-                summary["height"].get<int>(), summary["stereo"].get<std::string>().c_str(),
-                summary["particles"].get<size_t>(), a.out.c_str(), seconds);
+    const std::string kept =
+        drawn.drawn < range.count()
+            ? ", " + std::to_string(range.count() - drawn.drawn) + " kept from an earlier run"
+            : "";
+    // (The particle count is the last drawn frame's: none when every frame was kept.)
+    const std::string particles =
+        drawn.drawn > 0 ? ", " + std::to_string(summary["particles"].get<size_t>()) + " particles" : "";
+    std::printf("rendered %d frame(s) of %s (%dx%d %s%s%s) into %s in %.2f s\n", drawn.drawn,
+                scene.file.c_str(), summary["width"].get<int>(), summary["height"].get<int>(),
+                summary["stereo"].get<std::string>().c_str(), particles.c_str(), kept.c_str(),
+                a.out.c_str(), seconds);
   }
 }
 
