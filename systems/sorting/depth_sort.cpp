@@ -2,7 +2,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <glm/geometric.hpp>
@@ -15,9 +14,8 @@
 namespace pyro {
 
 void sort_back_to_front(std::vector<SortKey>& keys) {
-  // The order is total (no two keys compare equal), so a parallel sort gives the same result
-  // as any other sort, whatever the thread count.
-  tbb::parallel_sort(keys.begin(), keys.end(), back_to_front);
+  RadixScratch scratch;
+  radix_sort_back_to_front(keys, scratch);
 }
 
 namespace {
@@ -50,16 +48,17 @@ void make_keys(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
   }
 }
 
-// Entries [begin, end) of the draw list, from the sorted keys.
+// Entries [begin, end) of the draw list, from the keys in draw order (s.radix.order).
 void fill_draw_list(const SortScratch& s, DrawList& list, size_t begin, size_t end) {
   for (size_t k = begin; k < end; ++k) {
-    const ParticlePool& p = *s.sets[s.keys[k].set].second;
-    const uint32_t i = s.keys[k].particle;
+    const SortKey& sorted = s.keys[s.radix.order[k]];
+    const ParticlePool& p = *s.sets[sorted.set].second;
+    const uint32_t i = sorted.particle;
     list.center_radius[k] = {p.px[i], p.py[i], p.pz[i], p.radius[i]};
     list.color_density[k] = {p.r[i], p.g[i], p.b[i], p.density[i]};
     // The detail key: the golden-ratio fraction of the particle id (mixed with its set's entity
     // index), so consecutive ids spread evenly over [0, 1) and stay put for a particle's life.
-    const uint32_t ident = p.id[i] + (s.sets[s.keys[k].set].first << 20);
+    const uint32_t ident = p.id[i] + (s.sets[sorted.set].first << 20);
     const float key = static_cast<float>((ident * 2654435769u) >> 8) * 0x1p-24f;
     list.medium[k] = {p.temperature[i], p.opacity[i], static_cast<float>(p.medium[i]), key};
   }
@@ -75,7 +74,7 @@ void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::v
   // Sets in entity-index order, so the tie-break does not depend on the storage's history.
   std::sort(s.sets.begin(), s.sets.end());
   make_keys(eye, forward, kind, s);
-  sort_back_to_front(s.keys);
+  radix_order_back_to_front(s.keys, s.radix);
   list.center_radius.resize(s.keys.size());
   list.color_density.resize(s.keys.size());
   list.medium.resize(s.keys.size());

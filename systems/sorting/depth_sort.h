@@ -5,7 +5,8 @@
 // the view axis), which is the same for both eyes of a parallel-axis stereo pair, so the eyes
 // share one sort. Billboards facing the viewpoint are ordered by distance to each eye.
 // The order is a strict total order: key descending, then the set's entity index, then the
-// particle's id, so equal keys never swap between frames or runs.
+// particle's id, so equal keys never swap between frames or runs. It is found by a radix sort
+// of the depths (radix_sort.h) into the order of the keys' indices; the keys are not moved.
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -14,25 +15,13 @@
 #include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
 #include "engine/math/camera_math.h"
+#include "systems/sorting/radix_sort.h"
+#include "systems/sorting/sort_key.h"
 
 namespace pyro {
 
-struct SortKey {
-  float depth;
-  uint32_t set;       // tie-break 1: the owning entity's index
-  uint32_t id;        // tie-break 2: the particle's id within its set
-  uint32_t particle;  // where to read it from
-};
-
-// Strict weak order: farther first, then set, then id.
-inline bool back_to_front(const SortKey& a, const SortKey& b) {
-  if (a.depth != b.depth) return a.depth > b.depth;
-  if (a.set != b.set) return a.set < b.set;
-  return a.id < b.id;
-}
-
-// Sorts keys in place (in parallel, with the total order above: the result depends neither on
-// the input order nor on the thread count).
+// Sorts keys in place with back_to_front (radix_sort.h: the result depends neither on the input
+// order nor on the thread count).
 void sort_back_to_front(std::vector<SortKey>& keys);
 
 enum class SortKeyKind { view_depth, eye_distance };
@@ -43,6 +32,7 @@ class ParticlePool;
 // steady state (the sorting system's setup makes it).
 struct SortScratch {
   std::vector<SortKey> keys;
+  RadixScratch radix;
   std::vector<std::pair<uint32_t, const ParticlePool*>> sets;  // (entity index, pool)
 };
 

@@ -1,4 +1,4 @@
-// pyro bench ecs | render | johnson | layers | table1 | soak | vdb | schedule ... [--json]
+// pyro bench ecs | sort | render | johnson | layers | table1 | soak | vdb | schedule ... [--json]
 //
 // Each subcommand parses its options, runs the benchmark (systems/benchmarks; bench ecs:
 // tools/pyro/bench_ecs.h) and prints its result.
@@ -13,6 +13,7 @@
 #include "systems/benchmarks/bench_layers.h"
 #include "systems/benchmarks/bench_render.h"
 #include "systems/benchmarks/bench_soak.h"
+#include "systems/benchmarks/bench_sort.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/render_options.h"
@@ -39,6 +40,18 @@ void add_bench_ecs(CLI::App* bench) {
       ->check(CLI::Range(1, 1000));
   ecs_cmd->add_flag("--json", ecs->json, "Print one JSON object");
   ecs_cmd->callback([ecs] { print(bench_ecs(ecs->entities, ecs->repeats), ecs->json); });
+}
+
+void add_bench_sort(CLI::App* bench) {
+  struct SortArgs { size_t count = 1500000; int repeats = 9; bool json = false; };
+  auto sort = std::make_shared<SortArgs>();
+  CLI::App* cmd = bench->add_subcommand(
+      "sort", "The draw order's radix sort against std::sort and tbb::parallel_sort of the same keys");
+  cmd->add_option("--count", sort->count, "Keys sorted")->check(CLI::Range(1, 100000000));
+  cmd->add_option("--repeats", sort->repeats, "Timings per method (medians reported)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_flag("--json", sort->json, "Print one JSON object");
+  cmd->callback([sort] { print(bench_sort(sort->count, sort->repeats), sort->json); });
 }
 
 void add_bench_render(CLI::App* bench) {
@@ -167,7 +180,7 @@ void add_bench_commands(CLI::App& app) {
   add_bench_vdb_command(*bench);
   add_bench_schedule_command(*bench);
 
-  for (const auto add : {add_bench_ecs, add_bench_render, add_bench_johnson, add_bench_layers,
+  for (const auto add : {add_bench_ecs, add_bench_sort, add_bench_render, add_bench_johnson, add_bench_layers,
                          add_bench_table1, add_bench_soak})
     add(bench);
 }

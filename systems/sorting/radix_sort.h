@@ -1,0 +1,32 @@
+#pragma once
+// Sorting keys into the draw order (depth_sort.h's back_to_front: farther first, then set, then
+// id) by a least-significant-digit radix sort of the depths, then std::sort of each run of equal
+// depths by (set, id). The depth's float bits are mapped to an unsigned integer that orders like
+// the float, descending (-0 taken as +0, which compares equal to it), so the order is exactly
+// back_to_front's, ties and all: the result equals std::sort's with that comparator.
+#include <cstdint>
+#include <vector>
+
+#include "systems/sorting/sort_key.h"
+
+namespace pyro {
+
+// The integer that orders like `depth`, farther (larger) first: a ascending-sort key.
+uint32_t descending_depth_bits(float depth);
+
+// Working space kept between frames (no allocation in steady state).
+struct RadixScratch {
+  std::vector<uint64_t> pairs, swap;  // (descending depth bits << 32 | key index)
+  std::vector<uint32_t> order;        // the result of radix_order_back_to_front
+  std::vector<SortKey> keys;          // radix_sort_back_to_front's sorted copy
+};
+
+// The indices of `keys` in back_to_front order, into scratch.order: three passes of 11, 11 and
+// 10 bits over 8-byte pairs (a pass whose digit is the same for every key is skipped), then the
+// runs of equal depths ordered by (set, id). The keys themselves are not moved.
+void radix_order_back_to_front(const std::vector<SortKey>& keys, RadixScratch& scratch);
+
+// Sorts `keys` with back_to_front (radix_order_back_to_front, then the keys gathered).
+void radix_sort_back_to_front(std::vector<SortKey>& keys, RadixScratch& scratch);
+
+}  // namespace pyro
