@@ -5,6 +5,7 @@
 // target is then 8-bit sRGB, since only opaque geometry is drawn into it). One output target
 // holds the composed sRGB image (two views side by side for side-by-side and left-right).
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -39,10 +40,9 @@ struct EyeTargets {
   uint64_t opaque_version = 0;
   // With media and depth-aware upsampling: per cell of particle_depths, the smallest window depth
   // of the scene target's opaque geometry (R32F; content/shaders/cell_nearest_depth.comp), and
-  // the opaque_version it was made for (made again when that changes).
+  // the opaque_version it was made for (made again when that changes; none yet: the largest).
   gpu::Texture cell_nearest_depths;
-  uint64_t cell_nearest_version = 0;
-  bool cell_nearest_made = false;
+  uint64_t cell_nearest_version = UINT64_MAX;
 };
 
 struct GpuFrame {

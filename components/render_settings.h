@@ -35,6 +35,11 @@ inline bool two_views_wide(StereoMode m) {
          m == StereoMode::left_right;
 }
 
+// The output's width for views of `view_width` pixels: two views side by side or one.
+inline int output_width(int view_width, StereoMode m) {
+  return two_views_wide(m) ? 2 * view_width : view_width;
+}
+
 struct RenderSettings {
   int width = 800;
   int height = 600;

@@ -68,7 +68,7 @@ uniform int u_depth_cell;
 // volume taken on the CPU (two channels: the x and y offsets), repeating; media_prepare.frag
 // multiplies it by the fire's opacity and u_shimmer at layer size into media_depth.ba.
 uniform float u_depth_tolerance;  // clip depths closer (share of their extent): bilinear
-uniform vec2 u_inverse_depth;  // 1/z = x - y d for a window depth d
+#include "inverse_depth.glsl"
 uniform mat3 u_left_matrix;
 uniform mat3 u_right_matrix;
 uniform ivec2 u_origin;  // the viewport's lower-left corner in the output: views map 1:1
@@ -77,12 +77,7 @@ uniform vec2 u_view_size;
 layout(location = 0) out vec4 o_color;
 
 #if MEDIA
-#if DEPTH_AWARE || FRONT
-// 1/z of a window depth, affine in it: 1/n - d (f - n) / (n f) for the clip distances n, f.
-float inverse_depth(float window_depth) {
-  return u_inverse_depth.x - window_depth * u_inverse_depth.y;
-}
-
+#if FRONT
 // Whether this pixel's surface is nearer than every particle around it (u above the near end of
 // the particles' depths in its cell): then no particle lies in front of it and its media is 0,
 // exactly (the spherical billboard's path ends at the surface, Umenhoffer et al. eq. 2).
@@ -93,7 +88,6 @@ bool nearer_than_every_particle(sampler2D depth, sampler2D particle_depths, ivec
 #endif
 
 #if DEPTH_AWARE
-
 float max4(vec4 v) { return max(max(v.x, v.y), max(v.z, v.w)); }
 
 // The slope of u = 1/z at this pixel along `step`: the smaller of the two one-sided differences

@@ -49,7 +49,7 @@ layout(binding = 11) uniform sampler2D u_left_particle_depths;  // per cell, 1/z
 layout(binding = 12) uniform sampler2D u_right_particle_depths;
 layout(binding = 15) uniform sampler2D u_left_cell_nearest;     // per cell, window depth
 layout(binding = 16) uniform sampler2D u_right_cell_nearest;
-uniform vec2 u_inverse_depth;  // 1/z = x - y d for a window depth d
+#include "inverse_depth.glsl"
 uniform int u_depth_cell;      // the cells' size in pixels
 
 layout(std430, binding = 0) buffer TileLists {
@@ -78,7 +78,7 @@ bool front_in(sampler2D particle_depths, sampler2D cell_nearest, ivec2 p0, ivec2
   for (int y = c0.y; y <= c1.y; ++y)
     for (int x = c0.x; x <= c1.x; ++x) {
       vec2 range = texelFetch(particle_depths, ivec2(x, y), 0).rg;
-      float u = u_inverse_depth.x - texelFetch(cell_nearest, ivec2(x, y), 0).r * u_inverse_depth.y;
+      float u = inverse_depth(texelFetch(cell_nearest, ivec2(x, y), 0).r);
       if (range.y > range.x && u > range.y) return true;
     }
   return false;

@@ -42,9 +42,10 @@ struct Schedule::Executor {
       : arena(threads > 0 ? threads : tbb::task_arena::automatic, 1),
         successors(s.systems_.size()),
         predecessors(s.systems_.size(), 0) {
-    for (std::size_t j = 0; j < s.systems_.size(); ++j)
-      for (std::size_t i = 0; i < j && s.systems_[i].phase <= s.systems_[j].phase; ++i) {
-        if (s.systems_[i].phase != s.systems_[j].phase) continue;
+    // systems_ is sorted by phase: the later systems of i's phase follow it.
+    for (std::size_t i = 0; i < s.systems_.size(); ++i)
+      for (std::size_t j = i + 1; j < s.systems_.size() && s.systems_[j].phase == s.systems_[i].phase;
+           ++j) {
         const std::vector<std::string>& after = s.systems_[j].after;
         const bool named = std::find(after.begin(), after.end(), s.systems_[i].name) != after.end();
         if (!named && !s.systems_[i].access.conflicts_with(s.systems_[j].access)) continue;

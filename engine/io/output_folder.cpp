@@ -41,10 +41,20 @@ std::vector<std::string> unaccounted_frames(const fs::path& out) {
   return names;
 }
 
-nlohmann::json read_manifest(const fs::path& file) {
+// The JSON in `file`; a discarded value when it cannot be read or parsed.
+nlohmann::json read_json(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  nlohmann::json m = nlohmann::json::parse(text, nullptr, false);
+  return nlohmann::json::parse(text, nullptr, false);
+}
+
+// The settings a manifest or a run record names; null where it names none.
+nlohmann::json settings_in(const nlohmann::json& j) {
+  return j.is_object() && j.contains("settings") ? j.at("settings") : nlohmann::json();
+}
+
+nlohmann::json read_manifest(const fs::path& file) {
+  nlohmann::json m = read_json(file);
   if (m.is_discarded() || !m.is_object() || !m["files"].is_array())
     throw UserError(file.string(), "", "a manifest written by pyro (a JSON object with \"files\"); "
                                        "pass --overwrite to replace the folder's contents");
@@ -112,8 +122,8 @@ void OutputFolder::check_manifest(bool overwrite) {
     const nlohmann::json settings = nlohmann::json::parse(settings_json_);
     if (m.value("scene", "") != scene_)
       why = "holds frames of " + m.value("scene", std::string("another scene"));
-    else if (m["settings"] != settings)
-      why = "holds frames of this scene with other settings: " + m["settings"].dump();
+    else if (settings_in(m) != settings)
+      why = "holds frames of this scene with other settings: " + settings_in(m).dump();
   } else {
     listed = unaccounted_frames(out_);
     if (!listed.empty()) why = "holds " + std::to_string(listed.size()) + " frame files no manifest accounts for";
@@ -129,7 +139,6 @@ void OutputFolder::check_manifest(bool overwrite) {
     throw UserError(out_, "--out", "an empty folder or one holding this scene's frames with the "
                                    "same settings; the folder " + why.substr(0, 300) +
                                        " (pass --overwrite to replace them)");
-  replacing_ = true;
   stale_ = listed;
 }
 
@@ -139,11 +148,9 @@ void OutputFolder::write_run_record() {
 }
 
 bool OutputFolder::same_run(const fs::path& record) const {
-  std::ifstream in(record, std::ios::binary);
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  const nlohmann::json r = nlohmann::json::parse(text, nullptr, false);
+  const nlohmann::json r = read_json(record);
   return !r.is_discarded() && r.is_object() && r.value("scene", "") == scene_ &&
-         r["settings"] == nlohmann::json::parse(settings_json_);
+         settings_in(r) == nlohmann::json::parse(settings_json_);
 }
 
 void OutputFolder::take_killed_runs_files(bool resume) {
@@ -178,12 +185,12 @@ void OutputFolder::commit() {
                              {"files", std::vector<std::string>(files.begin(), files.end())}};
   write_file_durably((fs::path(out_) / kOutputManifestName).string(), manifest.dump(1) + "\n");
   staging_->commit();
-  if (replacing_)
-    for (const std::string& name : stale_)
-      if (!files.count(name) && name.find('/') == std::string::npos)
-        fs::remove(fs::path(out_) / name, ec);
+  // With --overwrite: the other run's files this one did not rewrite.
+  for (const std::string& name : stale_)
+    if (!files.count(name) && name.find('/') == std::string::npos)
+      fs::remove(fs::path(out_) / name, ec);
+  stale_.clear();
   held_.assign(files.begin(), files.end());
-  replacing_ = false;
 }
 
 }  // namespace pyro

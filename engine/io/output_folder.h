@@ -61,8 +61,8 @@ class OutputFolder {
 
   std::string out_, scene_, settings_json_;
   int lock_fd_ = -1;
-  bool replacing_ = false;
-  std::vector<std::string> held_, stale_, adopted_;
+  std::vector<std::string> held_, adopted_;
+  std::vector<std::string> stale_;  // with overwrite: the files of the run being replaced
   int discarded_ = 0;
   std::unique_ptr<StagingFolder> staging_;
 };

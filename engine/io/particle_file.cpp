@@ -1,9 +1,9 @@
 #include "engine/io/particle_file.h"
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 

@@ -23,7 +23,6 @@ class StagingFolder {
   StagingFolder& operator=(const StagingFolder&) = delete;
 
   const std::filesystem::path& path() const { return staging_; }
-  const std::filesystem::path& out() const { return out_; }
 
   // Renames every file of the staging folder into `out` (replacing a file of the same name),
   // but for those whose names start with '.' (the staging folder's own records, removed last),

@@ -37,6 +37,13 @@ inline float window_to_view_depth(float d, float near, float far) {
   return 2.0f * near * far / (far + near - z_ndc * (far - near));
 }
 
+// 1/z for a window depth d is affine in d: 1/z = x - y d with (x, y) = (1/n, (f - n) / (n f)),
+// the same convention as window_to_view_depth (content/shaders/inverse_depth.glsl's
+// u_inverse_depth).
+inline glm::vec2 inverse_depth_terms(float near, float far) {
+  return {1.0f / near, (far - near) / (near * far)};
+}
+
 // Pixel coordinates (x right, y down, pixel centres at +0.5) of world point p.
 glm::vec2 project_to_pixels(const CameraFrame& f, const glm::vec3& p);
 // The same mapping in double precision through a double view-projection matrix (for analyses,

@@ -16,7 +16,6 @@
 #include "components/draw_list.h"
 #include "components/gpu_frame.h"
 #include "components/view.h"
-#include "components/particle_set.h"
 #include "components/render_settings.h"
 #include "engine/ecs/world.h"
 #include "systems/scene/scene_loader.h"

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/gpu/shader_program.h"
+#include "systems/composite/particle_depth_grid.h"
 
 namespace pyro {
 
@@ -57,7 +58,7 @@ void ComposeTiles::classify(const Grid& grid, const Classify& how, int slot) {
   glUniform2f(loc("u_texels_per_pixel"), grid.texels_per_pixel.x, grid.texels_per_pixel.y);
   if (how.edges) {
     glUniform2f(loc("u_inverse_depth"), how.inverse_depth.x, how.inverse_depth.y);
-    glUniform1i(loc("u_depth_cell"), how.depth_cell);
+    glUniform1i(loc("u_depth_cell"), ParticleDepthGrid::cell_pixels);
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lists_[s].get());
   glDispatchCompute(static_cast<GLuint>((grid.tiles.x + 7) / 8), static_cast<GLuint>((grid.tiles.y + 7) / 8), 1);

@@ -44,8 +44,7 @@ class ComposeTiles {
   struct Classify {
     bool use_left = true, use_right = false;  // the views this draw reads (bound by the caller)
     bool edges = true;  // depth-aware upsampling: find the edges media_edges.frag marked, and fronts
-    glm::vec2 inverse_depth{0.0f};  // with edges: 1/z = x - y d for a window depth d
-    int depth_cell = 8;             // with edges: the particle depths' cells in pixels
+    glm::vec2 inverse_depth{0.0f};  // with edges: inverse_depth.glsl's u_inverse_depth
     bool fire = true;   // heat shimmer: find fire
   };
   // Fills list set `slot` (0 or 1: the two views of a side-by-side frame) for `grid`, reading the

@@ -44,13 +44,17 @@ MediaComposition media_composition(const ecs::World& world) {
 // Each view's particle depth grid (particle_depth_grid.h) into EyeTargets::particle_depths, as
 // 1/z at its far and near end (from the near plane on); a cell no particle reaches gets one value,
 // so that every depth clamps alike there. Without a draw list nothing is known: every cell spans
-// all depths.
-void upload_particle_depths(const ecs::World& world, GpuFrame& frame, float near) {
+// all depths. Only depth-aware upsampling of reduced layers reads them: otherwise nothing is made.
+void upload_particle_depths(const ecs::World& world, GpuFrame& frame, const MediaComposition& m) {
+  const float near = m.near;
   const EyeDrawLists* lists = world.try_resource<EyeDrawLists>();
   const View* view = world.try_resource<View>();
   for (size_t v = 0; v < frame.eyes.size(); ++v) {
     EyeTargets& eye = frame.eyes[v];
-    if (!eye.particle_depths) continue;
+    if (!eye.particle_depths || !m.depth_aware) continue;
+    const bool reduced = eye.media_combined->width() != eye.scene->width() ||
+                         eye.media_combined->height() != eye.scene->height();
+    if (!reduced) continue;
     const glm::ivec2 size(eye.scene->width(), eye.scene->height());
     // A layer texel in view pixels, and one for rounding (particle_depth_grid.h).
     const float reach = static_cast<float>(eye.scene->width()) / eye.media_combined->width() +
@@ -80,7 +84,7 @@ void composite(ecs::World& world) {
   if (!frame.eyes.empty() && frame.eyes[0].media_atlas) {
     const MediaComposition m = media_composition(world);
     compositor.set_media(m);
-    upload_particle_depths(world, frame, m.near);
+    upload_particle_depths(world, frame, m);
   }
   bool swap_eyes = false;
   bool found = false;

@@ -6,11 +6,13 @@
 #include "engine/gpu/gpu_pass_timer.h"
 #include "engine/gpu/shader_program.h"
 #include "engine/math/anaglyph.h"
+#include "engine/math/camera_math.h"
 #include "engine/math/color.h"
 #include "engine/math/detail_noise.h"
 #include "systems/composite/particle_depth_grid.h"
 
 namespace pyro {
+
 
 Compositor::Compositor()
     : media_prepare_(gpu::load_program("fullscreen.vert", "media_prepare.frag")),
@@ -132,11 +134,10 @@ void Compositor::find_cell_nearest_depths(EyeTargets& eye) {
   glDispatchCompute(static_cast<GLuint>((cells.x + 7) / 8), static_cast<GLuint>((cells.y + 7) / 8), 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   eye.cell_nearest_version = eye.opaque_version;
-  eye.cell_nearest_made = true;
 }
 
 void Compositor::mark_edges(EyeTargets& eye) {
-  if (!eye.cell_nearest_made || eye.cell_nearest_version != eye.opaque_version)
+  if (eye.cell_nearest_version != eye.opaque_version)
     find_cell_nearest_depths(eye);  // for compose_tiles.comp's front class
   const gpu::RenderTarget& edges = *eye.media_edges;
   glBindFramebuffer(GL_FRAMEBUFFER, edges.framebuffer());
@@ -173,8 +174,8 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
     if (media_bound_) {
       glUniform1f(loc("u_depth_tolerance"), media_.depth_tolerance);
       glUniform1i(loc("u_depth_cell"), ParticleDepthGrid::cell_pixels);
-      const float n = media_.near, f = media_.far;
-      glUniform2f(loc("u_inverse_depth"), 1.0f / n, (f - n) / (n * f));
+      const glm::vec2 terms = inverse_depth_terms(media_.near, media_.far);
+      glUniform2f(loc("u_inverse_depth"), terms.x, terms.y);
     }
   };
   // Layers at full size need no upsampling: every pixel reads its own texel.
@@ -193,8 +194,7 @@ void Compositor::draw_view(const glm::mat3& left_matrix, const glm::mat3& right_
   how.use_left = use_left;
   how.use_right = use_right;
   how.edges = all.depth_aware;
-  how.inverse_depth = {1.0f / media_.near, (media_.far - media_.near) / (media_.near * media_.far)};
-  how.depth_cell = ParticleDepthGrid::cell_pixels;
+  how.inverse_depth = inverse_depth_terms(media_.near, media_.far);
   how.fire = all.shimmer;
   {
     const gpu::GpuPassScope pass("tile classify");

@@ -45,12 +45,12 @@ GpuFrame make_gpu_frame(const RenderSettings& settings) {
                                                     layer_extent(s.height, s.layer_scale));
     f.eyes.push_back(std::move(t));
   }
-  const int output_width = two_views_wide(s.stereo_mode) ? 2 * s.width : s.width;
-  f.output = std::make_unique<gpu::RenderTarget>(output_width, s.height, GL_SRGB8_ALPHA8);
+  const int out_width = output_width(s.width, s.stereo_mode);
+  f.output = std::make_unique<gpu::RenderTarget>(out_width, s.height, GL_SRGB8_ALPHA8);
   if (settings.motion_blur > 0.0f)
     f.history = std::make_unique<gpu::RenderTarget>(f.output->width(), f.output->height(), GL_RGBA16F);
   if (settings.frame_scale < 1.0f) {
-    const int display_width = two_views_wide(s.stereo_mode) ? 2 * settings.width : settings.width;
+    const int display_width = output_width(settings.width, s.stereo_mode);
     f.display = std::make_unique<gpu::RenderTarget>(display_width, settings.height, GL_SRGB8_ALPHA8);
   }
   return f;

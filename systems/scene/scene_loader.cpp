@@ -120,11 +120,7 @@ std::string quoted_list(const std::vector<std::string_view>& items) {
 // What the user wrote, for "found ...": the value itself (shortened) and its JSON type.
 std::string describe(const json& v) {
   std::string text = v.dump(-1, ' ', false, json::error_handler_t::replace);
-  if (text.size() > 60) {
-    std::size_t cut = 57;
-    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // UTF-8
-    text = text.substr(0, cut) + "...";
-  }
+  if (text.size() > 60) text = std::string(utf8_head(text, 57)) + "...";
   switch (v.type()) {
     case json::value_t::null:
       return "null";

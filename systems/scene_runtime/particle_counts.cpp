@@ -1,5 +1,7 @@
 #include "systems/scene_runtime/particle_counts.h"
 
+#include <array>
+
 #include "components/draw_list.h"
 #include "components/emitter.h"
 #include "components/particle_medium.h"
@@ -23,13 +25,21 @@ ParticleCensus count_particles(ecs::World& world) {
     census.sources.push_back({name, set.pool.size(), set.pool.capacity()});
     census.live += set.pool.size();
     census.capacity += set.pool.capacity();
-    if (emitter)
-      for (size_t i = 0; i < set.pool.size(); ++i)
-        census.by_medium[std::string(name_of(static_cast<ParticleMedium>(set.pool.medium[i])))] += 1;
+    if (!emitter) return;
+    // Per medium byte first, then one name per medium present.
+    std::array<uint64_t, 256> by_byte{};
+    for (size_t i = 0; i < set.pool.size(); ++i) ++by_byte[set.pool.medium[i]];
+    for (size_t m = 0; m < by_byte.size(); ++m)
+      if (by_byte[m] > 0)
+        census.by_medium[std::string(name_of(static_cast<ParticleMedium>(m)))] += by_byte[m];
   });
   return census;
 }
 
-uint64_t live_particles(ecs::World& world) { return count_particles(world).live; }
+uint64_t live_particles(ecs::World& world) {
+  uint64_t live = 0;
+  world.each<ParticleSet>([&](ecs::Entity, ParticleSet& set) { live += set.pool.size(); });
+  return live;
+}
 
 }  // namespace pyro

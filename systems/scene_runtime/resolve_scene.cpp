@@ -56,7 +56,7 @@ ResolvedScene resolve_scene(const SceneDescription& scene, const RuntimeOptions&
   r.stereo = stereo_camera(r.scene.camera, options);
   r.clock.dt = 1.0f / r.scene.frames_per_second;
   r.views = is_stereo(r.settings.stereo_mode) ? 2 : 1;
-  r.output_width = two_views_wide(r.settings.stereo_mode) ? 2 * r.settings.width : r.settings.width;
+  r.output_width = output_width(r.settings.width, r.settings.stereo_mode);
   r.driver_max_texture = driver_max_texture;
   check_resolved_budget(r, 0);
   return r;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cstring>
 
 
 namespace pyro {
@@ -63,9 +62,9 @@ void radix_order_back_to_front(const std::vector<SortKey>& keys, RadixScratch& s
 
 void radix_sort_back_to_front(std::vector<SortKey>& keys, RadixScratch& s) {
   radix_order_back_to_front(keys, s);
-  s.keys.resize(keys.size());
-  for (size_t i = 0; i < keys.size(); ++i) s.keys[i] = keys[s.order[i]];
-  keys.swap(s.keys);
+  std::vector<SortKey> sorted(keys.size());
+  for (size_t i = 0; i < keys.size(); ++i) sorted[i] = keys[s.order[i]];
+  keys.swap(sorted);
 }
 
 }  // namespace pyro

@@ -18,7 +18,6 @@ uint32_t descending_depth_bits(float depth);
 struct RadixScratch {
   std::vector<uint64_t> pairs, swap;  // (descending depth bits << 32 | key index)
   std::vector<uint32_t> order;        // the result of radix_order_back_to_front
-  std::vector<SortKey> keys;          // radix_sort_back_to_front's sorted copy
 };
 
 // The indices of `keys` in back_to_front order, into scratch.order: three passes of 11, 11 and

@@ -1,6 +1,5 @@
 #include "systems/viewer/viewer.h"
 
-#include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -35,10 +34,6 @@ namespace pyro {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-int output_width(int view_width, StereoMode mode) {
-  return two_views_wide(mode) ? 2 * view_width : view_width;
-}
 
 CameraPose pose_of(const SceneDescription& s) {
   return {s.camera.position, s.camera.target, s.camera.up};

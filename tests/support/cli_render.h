@@ -1,20 +1,14 @@
 #pragma once
 // `pyro render` from the tests, and what an output folder then holds.
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "tests/support/file_bytes.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro::test {
-
-inline std::string read_bytes(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // Every entry of `dir` with its bytes (folders as "<dir>").
 inline std::map<std::string, std::string> contents(const std::filesystem::path& dir) {

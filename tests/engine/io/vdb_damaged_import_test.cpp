@@ -15,6 +15,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -57,10 +58,7 @@ TEST(VdbDamagedImport, LargestSaneDensityIsRead) {
   EXPECT_NO_THROW(read_vdb_grid(damaged_grid(dir, 1e6f)));
 }
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::read_bytes;
 
 // PYRO_DAMAGED_COPIES (default 4) copies of every shared VDB file with 16 bytes overwritten.
 TEST(VdbDamagedImport, DamagedSharedFilesImportLoadablyOrAreRefused) {

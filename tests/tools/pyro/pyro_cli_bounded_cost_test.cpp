@@ -17,6 +17,8 @@
 
 #include "tests/support/test_paths.h"
 
+#include "tests/support/file_bytes.h"
+#include "tests/support/spawn_pyro.h"
 #include "tests/support/under_asan.h"
 
 namespace pyro {
@@ -36,24 +38,13 @@ struct LimitedRun {
 // Runs pyro `args` in a child with RLIMIT_AS = `address_space` bytes and RLIMIT_CPU = `cpu_s`.
 LimitedRun run_limited(const std::vector<std::string>& args, rlim_t address_space, rlim_t cpu_s,
                        const fs::path& err_file) {
-  const pid_t pid = fork();
-  if (pid == 0) {
+  const int err = open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const pid_t pid = test::spawn_pyro(args, err, [&] {
     const rlimit as{address_space, address_space}, cpu{cpu_s, cpu_s};
     if (!kUnderAsan) setrlimit(RLIMIT_AS, &as);
     setrlimit(RLIMIT_CPU, &cpu);
-    const int err = open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int null = open("/dev/null", O_RDWR);
-    dup2(null, 0);
-    dup2(null, 1);
-    dup2(err, 2);
-    std::vector<char*> argv;
-    const std::string binary = test::pyro_binary();
-    argv.push_back(const_cast<char*>(binary.c_str()));
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(binary.c_str(), argv.data());
-    _exit(127);
-  }
+  });
+  close(err);
   LimitedRun r;
   int status = 0;
   rusage usage{};
@@ -62,8 +53,7 @@ LimitedRun run_limited(const std::vector<std::string>& args, rlim_t address_spac
   r.cpu_seconds = usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
                   1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
   r.peak_rss_kib = usage.ru_maxrss;
-  std::ifstream in(err_file, std::ios::binary);
-  r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  r.err = test::read_bytes(err_file);
   return r;
 }
 

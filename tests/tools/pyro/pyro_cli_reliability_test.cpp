@@ -8,6 +8,7 @@
 #include <iterator>
 #include <string>
 
+#include "tests/support/cli_render.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -15,10 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::read_bytes;
 
 std::string billion_particles() {
   std::string s = R"({"clouds": [)";
@@ -94,8 +92,7 @@ TEST(PyroCliFrames, BadRangesAreRefused) {
 // The explosion scene at 96 x 96 (the size does not change the simulation; it keeps the test
 // short under the sanitizers).
 test::CommandResult render_explosion(const fs::path& out, const std::string& frames) {
-  return test::run_pyro({"render", test::scene_path("explosion.json"), "--out", out.string(),
-                         "--width", "96", "--height", "96", "--frames", frames});
+  return test::render("explosion.json", out, frames, 96);
 }
 
 TEST(PyroCliDeterminism, TwoRendersOfTheExplosionAreIdentical) {
