@@ -1,5 +1,8 @@
 #include "systems/animation/drift_system.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 
 #include <glm/trigonometric.hpp>
@@ -14,6 +17,9 @@
 namespace pyro {
 
 namespace {
+// Particles per task when drifting is split across threads.
+constexpr size_t kParticlesPerTask = 16384;
+
 inline float wrap(float v, float lo, float extent) {
   // Periodic wrap into [lo, lo + extent).
   float t = (v - lo) / extent;
@@ -24,15 +30,18 @@ inline float wrap(float v, float lo, float extent) {
 
 void drift_particles(const CloudVolume& c, ParticleSet& set, float dt) {
   ParticlePool& p = set.pool;
-  const size_t n = p.size();
   const glm::vec3 extent = c.box_max - c.box_min;
-  // The arrays are distinct buffers; ivdep lets g++ vectorise (see particle_pool.h).
+  // Each particle moves alone, so the chunks may run on any threads with the same result.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.size(), kParticlesPerTask),
+                    [&](const tbb::blocked_range<size_t>& r) {
+    // The arrays are distinct buffers; ivdep lets g++ vectorise (see particle_pool.h).
 #pragma GCC ivdep
-  for (size_t i = 0; i < n; ++i) {
-    p.px[i] = wrap(p.px[i] + p.vx[i] * dt, c.box_min.x, extent.x);
-    p.py[i] = wrap(p.py[i] + p.vy[i] * dt, c.box_min.y, extent.y);
-    p.pz[i] = wrap(p.pz[i] + p.vz[i] * dt, c.box_min.z, extent.z);
-  }
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      p.px[i] = wrap(p.px[i] + p.vx[i] * dt, c.box_min.x, extent.x);
+      p.py[i] = wrap(p.py[i] + p.vy[i] * dt, c.box_min.y, extent.y);
+      p.pz[i] = wrap(p.pz[i] + p.vz[i] * dt, c.box_min.z, extent.z);
+    }
+  });
 }
 
 ecs::SystemDesc cloud_drift_system() {

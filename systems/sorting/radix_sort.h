@@ -22,7 +22,9 @@ struct RadixScratch {
 
 // The indices of `keys` in back_to_front order, into scratch.order: three passes of 11, 11 and
 // 10 bits over 8-byte pairs (a pass whose digit is the same for every key is skipped), then the
-// runs of equal depths ordered by (set, id). The keys themselves are not moved.
+// runs of equal depths ordered by (set, id). The keys themselves are not moved. Each pass is split
+// over the calling arena's threads (chunks of at least 65,536 pairs, each counted and scattered
+// by its own task); the order is the same for any number of threads.
 void radix_order_back_to_front(const std::vector<SortKey>& keys, RadixScratch& scratch);
 
 // Sorts `keys` with back_to_front (radix_order_back_to_front, then the keys gathered).

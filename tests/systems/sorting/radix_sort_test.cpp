@@ -5,6 +5,7 @@
 #include "systems/sorting/radix_sort.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -82,6 +83,26 @@ TEST(RadixSort, NearlySortedInputAndSmallInputs) {
   expect_as_std_sort(keys, "nearly sorted");
   expect_as_std_sort({{1.0f, 0, 0, 0}}, "one key");
   expect_as_std_sort({}, "no key");
+}
+
+TEST(RadixSort, TheOrderIsTheSameForAnyNumberOfThreads) {
+  // 300,000 keys split into as many chunks as the arena has threads (at least 65,536 each), with
+  // only 40 distinct depths, so runs of equal depths cross every chunk boundary.
+  std::mt19937 random(23);
+  const std::vector<SortKey> keys = keys_with(300000, random, [](std::mt19937& r) {
+    return static_cast<float>(std::uniform_int_distribution<int>(0, 39)(r)) * 0.25f;
+  });
+  std::vector<SortKey> expected = keys;
+  std::sort(expected.begin(), expected.end(), back_to_front);
+  for (const int threads : {1, 2, 3, 4}) {
+    tbb::task_arena arena(threads);
+    RadixScratch scratch;
+    arena.execute([&] { radix_order_back_to_front(keys, scratch); });
+    ASSERT_EQ(scratch.order.size(), keys.size());
+    size_t wrong = 0;
+    for (size_t i = 0; i < keys.size(); ++i) wrong += !same(keys[scratch.order[i]], expected[i]);
+    EXPECT_EQ(wrong, 0u) << threads << " threads";
+  }
 }
 
 TEST(RadixSort, DepthBitsOrderLikeTheFloatsDescending) {
