@@ -1,6 +1,6 @@
 #version 450 core
 // Instanced particle billboards (Johnson & McAllister 2005, 2.2.1 and section 3). One instance
-// per particle; the four corners come from gl_VertexID (triangle strip).
+// per particle, back to front; the four corners come from gl_VertexID (triangle strip).
 //  - facing the viewplane: every billboard of an eye shares the camera's right and up axes;
 //  - facing the viewpoint: each billboard turns to the eye. Its right axis is the camera's up
 //    crossed with the direction to the eye, u = up x (V - C) normalised (paper section 3.1),
@@ -8,8 +8,10 @@
 //    engine/math/billboard_alignment.h's viewpoint_facing_axes (reference up = the camera's up,
 //    fallback = the camera's right), tested there and, against this shader's images, in
 //    tests/render/billboard_alignment_render_test.cpp.
-layout(location = 0) in vec4 a_center_radius;  // world xyz, radius
-layout(location = 1) in vec4 a_color_density;  // linear rgb, density rho
+// Vertex pulling: instance k is the particle draw_order[k], whose record is two vec4s
+// (components/draw_list.h): world xyz and radius, then linear rgb and density rho.
+layout(std430, binding = 0) readonly buffer ParticleRecords { vec4 records[]; };
+layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
 
 uniform mat4 u_view_projection;
 uniform vec3 u_right;
@@ -24,6 +26,9 @@ out vec2 v_texcoord;
 flat out vec4 v_premultiplied;  // (rgb * rho, rho): one value per billboard, not interpolated
 
 void main() {
+  uint particle = draw_order[gl_InstanceID];
+  vec4 a_center_radius = records[2u * particle];
+  vec4 a_color_density = records[2u * particle + 1u];
   vec2 corner = vec2(float(gl_VertexID & 1), float((gl_VertexID >> 1) & 1)) * 2.0 - 1.0;
   vec3 center = a_center_radius.xyz;
   vec3 right = u_right;

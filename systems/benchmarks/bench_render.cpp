@@ -56,7 +56,8 @@ nlohmann::json bench_render(const RenderBenchOptions& o) {
 
   // The particle pass alone, over the last frame's opaque depth buffer.
   ecs::World& world = runtime.world();
-  const DrawList& list = world.resource<EyeDrawLists>().eyes.at(0);
+  const EyeDrawLists& lists = world.resource<EyeDrawLists>();
+  const DrawList& list = lists.eyes.at(0);
   const CameraFrame& frame = world.resource<View>().eyes.at(0);
   const gpu::RenderTarget& target = *world.resource<GpuFrame>().eyes.at(0).scene;
   BillboardRenderer& renderer = world.resource<BillboardRenderer>();
@@ -65,7 +66,7 @@ nlohmann::json bench_render(const RenderBenchOptions& o) {
     glFinish();
     const auto t0 = Clock::now();
     glBeginQuery(GL_SAMPLES_PASSED, query.get());
-    renderer.draw(list, frame, target, BillboardAlignment::viewplane, shading);
+    renderer.draw(list, lists.records, frame, target, BillboardAlignment::viewplane, shading);
     glEndQuery(GL_SAMPLES_PASSED);
     glFinish();
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();

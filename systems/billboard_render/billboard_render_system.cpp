@@ -16,16 +16,17 @@
 
 namespace pyro {
 
-void draw_particles_for_view(BillboardRenderer& renderer, const DrawList& list,
+void draw_particles_for_view(BillboardRenderer& renderer, const EyeDrawLists& lists, size_t eye,
                              const CameraFrame& frame, EyeTargets& targets,
                              BillboardAlignment alignment, BillboardShading shading) {
   const gpu::GpuPassScope pass("particle layer", true);  // profiling hook (no-op by default)
+  const DrawList& list = lists.eyes[eye];
   if (!targets.layer) {
-    renderer.draw(list, frame, *targets.scene, alignment, shading);
+    renderer.draw(list, lists.records, frame, *targets.scene, alignment, shading);
     return;
   }
   prepare_layer(targets);
-  renderer.draw(list, frame, *targets.layer, alignment, shading);
+  renderer.draw(list, lists.records, frame, *targets.layer, alignment, shading);
 }
 
 void prepare_layer(EyeTargets& targets) {
@@ -81,8 +82,9 @@ void draw_billboards(ecs::World& world) {
   const size_t views = std::min({view.eyes.size(), frame.eyes.size(), lists->eyes.size()});
   if (settings.particles == ParticleShape::gaussian) {
     BillboardRenderer& renderer = world.resource<BillboardRenderer>();
+    renderer.reset_cost();
     for (size_t v = 0; v < views; ++v)
-      draw_particles_for_view(renderer, lists->eyes[v], view.eyes[v], frame.eyes[v],
+      draw_particles_for_view(renderer, *lists, v, view.eyes[v], frame.eyes[v],
                               settings.alignment, BillboardShading::kernel);
     return;
   }

@@ -11,7 +11,9 @@
 
 namespace pyro {
 
-void draw_particles_for_view(BillboardRenderer& renderer, const DrawList& list,
+// The Gaussian splats of view `eye` (lists.eyes[eye], reading lists.records) into its layer or
+// scene target.
+void draw_particles_for_view(BillboardRenderer& renderer, const EyeDrawLists& lists, size_t eye,
                              const CameraFrame& frame, EyeTargets& targets,
                              BillboardAlignment alignment, BillboardShading shading);
 

@@ -1,8 +1,12 @@
 #include "systems/billboard_render/billboard_renderer.h"
 
+#include <algorithm>
+#include <chrono>
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include "engine/gpu/shader_program.h"
+#include "systems/billboard_render/parallel_copy.h"
 
 namespace pyro {
 
@@ -22,12 +26,54 @@ BillboardRenderer::BillboardRenderer(const FootprintTable& table)
   glTextureParameteri(kernel_texture_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void BillboardRenderer::draw(const DrawList& list, const CameraFrame& frame,
-                             const gpu::RenderTarget& target, BillboardAlignment alignment,
-                             BillboardShading shading) {
+namespace {
+
+// Offsets of SSBO bindings must be multiples of GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT (at
+// most 256 by the specification's minimum maximum).
+constexpr std::size_t kBindingAlignment = 256;
+
+std::size_t aligned(std::size_t bytes) {
+  return (bytes + kBindingAlignment - 1) / kBindingAlignment * kBindingAlignment;
+}
+
+}  // namespace
+
+void BillboardRenderer::upload(const std::vector<glm::vec4>& records,
+                               const std::vector<uint32_t>& order) {
+  const std::size_t record_bytes = records.size() * sizeof(glm::vec4);
+  const std::size_t order_bytes = order.size() * sizeof(uint32_t);
+  unsigned char* slot = ring_.next(aligned(record_bytes) + order_bytes);
+  const auto start = std::chrono::steady_clock::now();
+  parallel_copy(slot, records.data(), record_bytes);
+  parallel_copy(slot + aligned(record_bytes), order.data(), order_bytes);
+  copy_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  bytes_ += record_bytes + order_bytes;
+  const auto offset = static_cast<GLintptr>(ring_.offset());
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, ring_.buffer(), offset,
+                    static_cast<GLsizeiptr>(std::max<std::size_t>(record_bytes, 16)));
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, ring_.buffer(),
+                    offset + static_cast<GLintptr>(aligned(record_bytes)),
+                    static_cast<GLsizeiptr>(std::max<std::size_t>(order_bytes, 4)));
+}
+
+void BillboardRenderer::draw(const DrawList& list, const std::vector<glm::vec4>& records,
+                             const CameraFrame& frame, const gpu::RenderTarget& target,
+                             BillboardAlignment alignment, BillboardShading shading) {
   const size_t n = list.size();
   if (n == 0) return;
-  const GLuint vao = instances_.upload(list);
+  if (list.indexed()) {
+    upload(records, list.order);
+  } else {
+    // A gathered list: its own records, in order.
+    own_records_.resize(2 * n);
+    own_order_.resize(n);
+    for (size_t k = 0; k < n; ++k) {
+      own_records_[2 * k] = list.center_radius[k];
+      own_records_[2 * k + 1] = list.color_density[k];
+      own_order_[k] = static_cast<uint32_t>(k);
+    }
+    upload(own_records_, own_order_);
+  }
 
   target.bind();
   glEnable(GL_DEPTH_TEST);
@@ -50,8 +96,10 @@ void BillboardRenderer::draw(const DrawList& list, const CameraFrame& frame,
   const float t1 = static_cast<float>(footprint_texcoord(table_, table_.extent));
   glUniform2f(gpu::uniform_location(program, "u_texcoord_bias_scale"), t0, t1 - t0);
   glBindTextureUnit(0, kernel_texture_.get());
-  glBindVertexArray(vao);
+  glBindVertexArray(empty_vao_.get());  // no attributes: the shader pulls its instance
+  const auto start = std::chrono::steady_clock::now();
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n));
+  draw_call_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   glBindVertexArray(0);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);

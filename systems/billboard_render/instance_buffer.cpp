@@ -1,32 +1,48 @@
 #include "systems/billboard_render/instance_buffer.h"
 
 #include <algorithm>
+#include <chrono>
+
+#include "systems/billboard_render/parallel_copy.h"
 
 namespace pyro {
 
-InstanceBuffer::InstanceBuffer() : buffer_(gpu::make_buffer()), vao_(gpu::make_vertex_array()) {}
+InstanceBuffer::InstanceBuffer() : vao_(gpu::make_vertex_array()) {}
+
+std::size_t InstanceBuffer::region_offset(std::size_t region) const {
+  return ring_.offset() + region * capacity_ * sizeof(glm::vec4);
+}
+
+glm::vec4* InstanceBuffer::region(std::size_t region) const {
+  return reinterpret_cast<glm::vec4*>(slot_ + region * capacity_ * sizeof(glm::vec4));
+}
+
+void InstanceBuffer::copy(const std::vector<glm::vec4>& from, std::size_t region_index, std::size_t count) {
+  const auto start = std::chrono::steady_clock::now();
+  parallel_copy(region(region_index), from.data(), count * sizeof(glm::vec4));
+  copy_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  bytes_ += count * sizeof(glm::vec4);
+}
+
+UploadCost InstanceBuffer::cost() const { return {copy_ms_, ring_.wait_ms(), bytes_}; }
+
+void InstanceBuffer::reset_cost() {
+  copy_ms_ = 0.0;
+  bytes_ = 0;
+  ring_.reset_wait();
+}
 
 GLuint InstanceBuffer::upload(const DrawList& list, bool with_medium) {
-  const size_t n = list.size();
-  if (n > capacity_) {
-    buffer_ = gpu::make_buffer();
-    capacity_ = n + n / 2;
-    glNamedBufferStorage(buffer_.get(), static_cast<GLsizeiptr>(4 * capacity_ * sizeof(glm::vec4)),
-                         nullptr, GL_DYNAMIC_STORAGE_BIT);
-  }
-  const size_t bytes = n * sizeof(glm::vec4);
-  const size_t second = capacity_ * sizeof(glm::vec4);
-  glNamedBufferSubData(buffer_.get(), 0, static_cast<GLsizeiptr>(bytes), list.center_radius.data());
-  glNamedBufferSubData(buffer_.get(), static_cast<GLintptr>(second), static_cast<GLsizeiptr>(bytes),
-                       list.color_density.data());
-  if (with_medium)
-    glNamedBufferSubData(buffer_.get(), static_cast<GLintptr>(2 * second), static_cast<GLsizeiptr>(bytes),
-                         list.medium.data());
+  const std::size_t n = list.size();
+  slot_ = ring_.next(kRegions * std::max<std::size_t>(n, 1) * sizeof(glm::vec4));
+  capacity_ = ring_.slot_bytes() / (kRegions * sizeof(glm::vec4));
+  copy(list.center_radius, 0, n);
+  copy(list.color_density, 1, n);
+  if (with_medium) copy(list.medium, 2, n);
   const GLuint vao = vao_.get();
-  glVertexArrayVertexBuffer(vao, 0, buffer_.get(), 0, sizeof(glm::vec4));
-  glVertexArrayVertexBuffer(vao, 1, buffer_.get(), static_cast<GLintptr>(second), sizeof(glm::vec4));
-  glVertexArrayVertexBuffer(vao, 2, buffer_.get(), static_cast<GLintptr>(2 * second), sizeof(glm::vec4));
-  glVertexArrayVertexBuffer(vao, 3, buffer_.get(), static_cast<GLintptr>(3 * second), sizeof(glm::vec4));
+  for (std::size_t a = 0; a < kRegions; ++a)
+    glVertexArrayVertexBuffer(vao, static_cast<GLuint>(a), ring_.buffer(),
+                              static_cast<GLintptr>(region_offset(a)), sizeof(glm::vec4));
   const GLuint attributes = with_medium ? 3 : 2;
   if (!with_medium) glDisableVertexArrayAttrib(vao, 2);  // reads the default (0, 0, 0, 1)
   for (GLuint a = 0; a < attributes; ++a) {
@@ -39,11 +55,9 @@ GLuint InstanceBuffer::upload(const DrawList& list, bool with_medium) {
 }
 
 void InstanceBuffer::upload_sprites(const std::vector<glm::vec4>& sprites) {
-  if (sprites.empty()) return;
+  if (sprites.empty() || !slot_) return;
+  copy(sprites, 3, std::min(sprites.size(), capacity_));
   const GLuint vao = vao_.get();
-  glNamedBufferSubData(buffer_.get(), static_cast<GLintptr>(3 * capacity_ * sizeof(glm::vec4)),
-                       static_cast<GLsizeiptr>(std::min(sprites.size(), capacity_) * sizeof(glm::vec4)),
-                       sprites.data());
   glEnableVertexArrayAttrib(vao, 3);
   glVertexArrayAttribFormat(vao, 3, 4, GL_FLOAT, GL_FALSE, 0);
   glVertexArrayAttribBinding(vao, 3, 3);

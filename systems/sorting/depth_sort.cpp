@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <glm/geometric.hpp>
 
 #include "components/particle_set.h"
@@ -23,12 +24,18 @@ namespace {
 // Particles per task when key making or list filling is split across threads.
 constexpr std::size_t kParticlesPerTask = 4096;
 
-// Every set's keys, set after set: set k's particles from offsets[k] on. Each key depends on
-// its particle alone, so any split of the work gives the same keys.
-void make_keys(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind, SortScratch& s) {
+// Where each set's particles begin among all the sets' (the last entry: the total).
+std::vector<std::size_t> set_offsets(const SortScratch& s) {
   std::vector<std::size_t> offsets(s.sets.size() + 1, 0);
   for (size_t set = 0; set < s.sets.size(); ++set)
     offsets[set + 1] = offsets[set] + s.sets[set].second->size();
+  return offsets;
+}
+
+// Every set's keys, set after set: set k's particles from offsets[k] on. Each key depends on its
+// particle alone, so any split of the work gives the same keys.
+void make_keys(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind, SortScratch& s) {
+  const std::vector<std::size_t> offsets = set_offsets(s);
   s.keys.resize(offsets.back());
   for (size_t set = 0; set < s.sets.size(); ++set) {
     const ParticlePool& p = *s.sets[set].second;
@@ -48,40 +55,136 @@ void make_keys(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
   }
 }
 
-// Entries [begin, end) of the draw list, from the keys in draw order (s.radix.order).
-void fill_draw_list(const SortScratch& s, DrawList& list, size_t begin, size_t end) {
-  for (size_t k = begin; k < end; ++k) {
-    const SortKey& sorted = s.keys[s.radix.order[k]];
-    const ParticlePool& p = *s.sets[sorted.set].second;
-    const uint32_t i = sorted.particle;
-    list.center_radius[k] = {p.px[i], p.py[i], p.pz[i], p.radius[i]};
-    list.color_density[k] = {p.r[i], p.g[i], p.b[i], p.density[i]};
-    // The detail key: the golden-ratio fraction of the particle id (mixed with its set's entity
-    // index), so consecutive ids spread evenly over [0, 1) and stay put for a particle's life.
-    const uint32_t ident = p.id[i] + (s.sets[sorted.set].first << 20);
-    const float key = static_cast<float>((ident * 2654435769u) >> 8) * 0x1p-24f;
-    list.medium[k] = {p.temperature[i], p.opacity[i], static_cast<float>(p.medium[i]), key};
+// Each particle's instance data packed in key order (s.packed, `stride` vec4s a particle), so
+// that the gather in draw order reads one record per particle instead of eight arrays.
+void pack_particles(size_t stride, const SortScratch& s, std::vector<glm::vec4>& records) {
+  const std::vector<std::size_t> offsets = set_offsets(s);
+  records.resize(offsets.back() * stride);
+  for (size_t set = 0; set < s.sets.size(); ++set) {
+    const ParticlePool& p = *s.sets[set].second;
+    const uint32_t entity = s.sets[set].first;
+    glm::vec4* packed = records.data() + offsets[set] * stride;
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, p.size(), kParticlesPerTask),
+        [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t i = r.begin(); i < r.end(); ++i) {
+            glm::vec4* record = packed + i * stride;
+            record[0] = {p.px[i], p.py[i], p.pz[i], p.radius[i]};
+            record[1] = {p.r[i], p.g[i], p.b[i], p.density[i]};
+            if (stride < 3) continue;
+            // The detail key: the golden-ratio fraction of the particle id (mixed with its set's
+            // entity index), so consecutive ids spread evenly over [0, 1) and stay put for a
+            // particle's life.
+            const uint32_t ident = p.id[i] + (entity << 20);
+            const float key = static_cast<float>((ident * 2654435769u) >> 8) * 0x1p-24f;
+            record[2] = {p.temperature[i], p.opacity[i], static_cast<float>(p.medium[i]), key};
+          }
+        });
   }
+}
+
+// Entries [begin, end) of the draw list, from the packed records in draw order (s.radix.order
+// indexes the keys, which are laid out like the records). The records are read in a random
+// order: each is asked for a few entries ahead, so that the reads overlap.
+void fill_draw_list(const SortScratch& s, size_t stride, DrawList& list, size_t begin, size_t end) {
+  constexpr size_t kAhead = 16;
+  const uint32_t* order = s.radix.order.data();
+  const glm::vec4* packed = s.packed.data();
+  for (size_t k = begin; k < end; ++k) {
+    if (k + kAhead < end) __builtin_prefetch(packed + size_t(order[k + kAhead]) * stride);
+    const glm::vec4* record = packed + size_t(order[k]) * stride;
+    list.center_radius[k] = record[0];
+    list.color_density[k] = record[1];
+    if (stride > 2) list.medium[k] = record[2];
+  }
+}
+
+double ms_since(std::chrono::steady_clock::time_point& start) {
+  const auto now = std::chrono::steady_clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - start).count();
+  start = now;
+  return ms;
 }
 
 }  // namespace
 
-void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
-                     SortKeyKind kind, SortScratch& s, DrawList& list) {
+void collect_particle_sets(const ecs::World& world, SortScratch& s) {
   s.sets.clear();
   world.each<ParticleSet>(
       [&](ecs::Entity e, const ParticleSet& set) { s.sets.emplace_back(e.index, &set.pool); });
   // Sets in entity-index order, so the tie-break does not depend on the storage's history.
   std::sort(s.sets.begin(), s.sets.end());
+}
+
+void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
+                     SortKeyKind kind, SortScratch& s, DrawList& list, bool with_medium) {
+  collect_particle_sets(world, s);
+  auto start = std::chrono::steady_clock::now();
   make_keys(eye, forward, kind, s);
+  s.times.keys_ms += ms_since(start);
+  const size_t stride = with_medium ? 3 : 2;
+  pack_particles(stride, s, s.packed);
+  s.times.pack_ms += ms_since(start);
   radix_order_back_to_front(s.keys, s.radix);
+  s.times.order_ms += ms_since(start);
+  list.order.clear();
   list.center_radius.resize(s.keys.size());
   list.color_density.resize(s.keys.size());
-  list.medium.resize(s.keys.size());
+  list.medium.resize(with_medium ? s.keys.size() : 0);
   tbb::parallel_for(
       tbb::blocked_range<size_t>(0, s.keys.size(), kParticlesPerTask),
-      [&](const tbb::blocked_range<size_t>& r) { fill_draw_list(s, list, r.begin(), r.end()); });
+      [&](const tbb::blocked_range<size_t>& r) { fill_draw_list(s, stride, list, r.begin(), r.end()); });
+  s.times.gather_ms += ms_since(start);
 }
+
+void pack_particle_records(SortScratch& s, std::vector<glm::vec4>& records) {
+  const auto start = std::chrono::steady_clock::now();
+  pack_particles(2, s, records);
+  s.times.pack_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
+                     SortScratch& s, DrawList& list) {
+  auto start = std::chrono::steady_clock::now();
+  make_keys(eye, forward, kind, s);
+  s.times.keys_ms += ms_since(start);
+  radix_order_back_to_front(s.keys, s.radix);
+  list.center_radius.clear();
+  list.color_density.clear();
+  list.medium.clear();
+  list.order.swap(s.radix.order);  // the old order's storage goes back to the scratch
+  s.times.order_ms += ms_since(start);
+}
+
+namespace {
+
+// The sorting system's work for one frame: every view's list, indexed for the Gaussian splats
+// (their vertex shader reads the records) and gathered for the billboards that read arrays.
+void sort_views(const ecs::World& world, const View& view, const RenderSettings* settings,
+                SortScratch& scratch, EyeDrawLists& lists) {
+  const RenderSettings defaults;
+  const RenderSettings& rs = settings ? *settings : defaults;
+  const std::vector<CameraFrame>& eyes = view.eyes;
+  lists.eyes.resize(eyes.size());
+  // Parallel view axes: one view-depth order serves every eye.
+  const bool shared = rs.alignment == BillboardAlignment::viewplane;
+  const SortKeyKind kind = shared ? SortKeyKind::view_depth : SortKeyKind::eye_distance;
+  const size_t orders = shared ? 1 : eyes.size();
+  if (rs.particles == ParticleShape::gaussian) {
+    collect_particle_sets(world, scratch);
+    pack_particle_records(scratch, lists.records);
+    for (size_t v = 0; v < orders; ++v)
+      order_draw_list(eyes[v].eye, eyes[v].forward, kind, scratch, lists.eyes[v]);
+  } else {
+    lists.records.clear();
+    for (size_t v = 0; v < orders; ++v)
+      build_draw_list(world, eyes[v].eye, eyes[v].forward, kind, scratch, lists.eyes[v],
+                      rs.media_layers());
+  }
+  for (size_t v = orders; v < eyes.size(); ++v) lists.eyes[v] = lists.eyes[0];
+}
+
+}  // namespace
 
 ecs::SystemDesc sorting_system() {
   return {.name = "sorting",
@@ -92,23 +195,10 @@ ecs::SystemDesc sorting_system() {
               [](ecs::World& world) {
                 const View& view = world.resource<const View>();
                 if (view.eyes.empty()) return;
-                const RenderSettings* settings = world.try_resource<const RenderSettings>();
-                const BillboardAlignment alignment =
-                    settings ? settings->alignment : RenderSettings{}.alignment;
                 SortScratch& scratch = world.resource<SortScratch>();
-                EyeDrawLists& lists = world.resource<EyeDrawLists>();
-                const std::vector<CameraFrame>& eyes = view.eyes;
-                lists.eyes.resize(eyes.size());
-                if (alignment == BillboardAlignment::viewplane) {
-                  // Parallel view axes: one view-depth order serves every eye.
-                  build_draw_list(world, eyes[0].eye, eyes[0].forward, SortKeyKind::view_depth,
-                                  scratch, lists.eyes[0]);
-                  for (size_t v = 1; v < eyes.size(); ++v) lists.eyes[v] = lists.eyes[0];
-                } else {
-                  for (size_t v = 0; v < eyes.size(); ++v)
-                    build_draw_list(world, eyes[v].eye, eyes[v].forward, SortKeyKind::eye_distance,
-                                    scratch, lists.eyes[v]);
-                }
+                scratch.times = {};
+                sort_views(world, view, world.try_resource<const RenderSettings>(), scratch,
+                           world.resource<EyeDrawLists>());
               },
           .setup =
               [](ecs::World& world) {

@@ -1,7 +1,7 @@
 #pragma once
-// Sort phase, the `sorting` system: gathers every particle of every ParticleSet into one
-// DrawList per rendered view (the eye frames the stereo_camera system put in View), back to
-// front. Billboards facing the viewplane are ordered by view depth (the distance along
+// Sort phase, the `sorting` system: lists every particle of every ParticleSet in one DrawList
+// per rendered view (the eye frames the stereo_camera system put in View), back to front,
+// indexed for Gaussian splats and gathered for the other billboards (components/draw_list.h). Billboards facing the viewplane are ordered by view depth (the distance along
 // the view axis), which is the same for both eyes of a parallel-axis stereo pair, so the eyes
 // share one sort. Billboards facing the viewpoint are ordered by distance to each eye.
 // The order is a strict total order: key descending, then the set's entity index, then the
@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <utility>
 #include <vector>
+
+#include <glm/vec4.hpp>
 
 #include "components/draw_list.h"
 #include "engine/ecs/schedule.h"
@@ -28,20 +30,41 @@ enum class SortKeyKind { view_depth, eye_distance };
 
 class ParticlePool;
 
+// Milliseconds of the sorting system's stages in its last run, summed over the draw lists it
+// built: making the keys, packing the particles' instance data, ordering the keys, gathering the
+// records into the lists. pyro bench scale reads them.
+struct SortStageTimes {
+  double keys_ms = 0.0, pack_ms = 0.0, order_ms = 0.0, gather_ms = 0.0;
+};
+
 // Resource: the sort's working space, kept between frames so that sorting allocates nothing in
 // steady state (the sorting system's setup makes it).
 struct SortScratch {
   std::vector<SortKey> keys;
   RadixScratch radix;
   std::vector<std::pair<uint32_t, const ParticlePool*>> sets;  // (entity index, pool)
+  // The particles' instance data in key order, two or three vec4s each (depth_sort.cpp).
+  std::vector<glm::vec4> packed;
+  SortStageTimes times;
 };
 
-// Fills `list` from every ParticleSet in the world, sorted for an eye at `eye` looking along
-// `forward`.
+// Fills `list` in the gathered form from every ParticleSet in the world, sorted for an eye at
+// `eye` looking along `forward`. `with_medium`: also list.medium, which only the explosion media layers read (left
+// empty otherwise, a third less to gather).
 void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
-                     SortKeyKind kind, SortScratch& scratch, DrawList& list);
+                     SortKeyKind kind, SortScratch& scratch, DrawList& list,
+                     bool with_medium = true);
 
-// The `sorting` system: reads View (written by stereo_camera in the camera phase), never the
+// The indexed form (components/draw_list.h), in two steps: every ParticleSet's records packed
+// into `records` (collect_particle_sets first), then for each eye the order of those records
+// into list.order. The order is the same as build_draw_list's.
+void collect_particle_sets(const ecs::World& world, SortScratch& scratch);
+void pack_particle_records(SortScratch& scratch, std::vector<glm::vec4>& records);
+void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
+                     SortScratch& scratch, DrawList& list);
+
+// The `sorting` system: Gaussian splats get indexed lists, the other billboards gathered ones.
+// It reads View (written by stereo_camera in the camera phase), never the
 // camera itself.
 ecs::SystemDesc sorting_system();
 

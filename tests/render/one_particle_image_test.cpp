@@ -23,7 +23,7 @@ void check_against_closed_form(const glm::vec3& at, float radius, float density)
   SceneRuntime runtime(one_particle_scene(at, radius, density));
   runtime.step();
   const FrameImage& img = runtime.image();
-  const glm::vec4 p = runtime.world().resource<EyeDrawLists>().eyes.at(0).center_radius.at(0);
+  const glm::vec4 p = gathered_draw_list(runtime.world().resource<EyeDrawLists>(), 0).center_radius.at(0);
   // Viewplane-facing billboard at view depth -p.z: an affine map from pixels to the plane.
   const double depth = -p.z;
   const double focal = (img.height / 2.0) / std::tan(40.0 * M_PI / 360.0);  // pixels at depth 1

@@ -83,7 +83,7 @@ Built build_and_sort(unsigned seed, int sorts = 1) {
   schedule.add(sorting_system());
   schedule.setup(w);
   for (int k = 0; k < sorts; ++k) schedule.run_frame(w);
-  const DrawList& list = w.resource<EyeDrawLists>().eyes.at(0);
+  const DrawList list = gathered_draw_list(w.resource<EyeDrawLists>(), 0);
   for (size_t k = 0; k < list.size(); ++k) b.drawn.push_back(list.color_density[k].w);
   return b;
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "components/camera.h"
@@ -49,7 +50,7 @@ TEST(DepthSort, FarthestFirstAlongTheViewAxis) {
   std::uniform_real_distribution<float> u(-10, 10);
   for (int i = 0; i < 100; ++i) s.pool.spawn(at(u(rng), u(rng), u(rng) - 20, static_cast<float>(i)));
   run_sort(w);
-  const DrawList& list = w.resource<EyeDrawLists>().eyes.at(0);
+  const DrawList list = gathered_draw_list(w.resource<EyeDrawLists>(), 0);
   ASSERT_EQ(list.size(), 100u);
   for (size_t k = 1; k < list.size(); ++k)
     EXPECT_LE(list.center_radius[k - 1].z, list.center_radius[k].z);  // -z is forward: far = small z
@@ -65,7 +66,7 @@ TEST(DepthSort, DepthIsAlongTheViewAxisNotDistance) {
   s.pool.spawn(at(0, 0, -10, 1));   // distance 10, depth 10
   s.pool.spawn(at(30, 0, -9, 2));   // distance 31, depth 9: nearest in depth
   run_sort(w);
-  const DrawList& list = w.resource<EyeDrawLists>().eyes.at(0);
+  const DrawList list = gathered_draw_list(w.resource<EyeDrawLists>(), 0);
   EXPECT_EQ(list.color_density[0].w, 0.0f);  // equal depth: lower id first
   EXPECT_EQ(list.color_density[1].w, 1.0f);
   EXPECT_EQ(list.color_density[2].w, 2.0f);
@@ -97,7 +98,7 @@ TEST(DepthSort, EqualDepthsKeepOneOrderWhateverTheStorageOrder) {
       }
     }
     run_sort(w);
-    return w.resource<EyeDrawLists>().eyes.at(0).color_density;
+    return gathered_draw_list(w.resource<EyeDrawLists>(), 0).color_density;
   };
   const auto first = build(false);
   const auto second = build(true);
@@ -111,10 +112,10 @@ TEST(DepthSort, RepeatedFramesGiveTheSameOrder) {
   ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(200)});
   for (int i = 0; i < 200; ++i) s.pool.spawn(at(0, 0, -static_cast<float>(i % 3) - 1, static_cast<float>(i)));
   run_sort(w);
-  const auto first = w.resource<EyeDrawLists>().eyes.at(0).color_density;
+  const auto first = gathered_draw_list(w.resource<EyeDrawLists>(), 0).color_density;
   for (int f = 0; f < 5; ++f) {
     run_sort(w);
-    const auto& again = w.resource<EyeDrawLists>().eyes.at(0).color_density;
+    const auto again = gathered_draw_list(w.resource<EyeDrawLists>(), 0).color_density;
     for (size_t k = 0; k < first.size(); ++k) ASSERT_EQ(first[k].w, again[k].w);
   }
 }
@@ -130,7 +131,7 @@ TEST(DepthSort, SortsForTheEyesTheCameraSystemWroteIntoView) {
   run_sort(w);
   const auto order = [&] {
     std::vector<float> markers;
-    for (const glm::vec4& c : w.resource<EyeDrawLists>().eyes.at(0).color_density)
+    for (const glm::vec4& c : gathered_draw_list(w.resource<EyeDrawLists>(), 0).color_density)
       markers.push_back(c.w);
     return markers;
   };
@@ -146,6 +147,44 @@ TEST(DepthSort, SortsForTheEyesTheCameraSystemWroteIntoView) {
   EXPECT_EQ(order(), (std::vector<float>{0, 1, 2, 3, 4}));
   // The sort may not touch the camera at all: its declaration has no Camera.
   EXPECT_EQ(sorting_system().access.mode(ecs::type_id<Camera>()), ecs::AccessMode::none);
+}
+
+TEST(DepthSort, IndexedListsHoldTheGatheredOrderForEveryShapeAndAlignment) {
+  // Gaussian splats get indexed lists (records + order), the other shapes gathered ones; both
+  // must list the same particles in the same order, facing the viewplane (one shared order) and
+  // the viewpoint (one order per eye).
+  ecs::World w;
+  w.emplace<Camera>(w.create(), Camera{{0.5f, 1, 3}, {0, 0, -1}, {0, 1, 0}, 45, 0.1f, 100, 0});
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-4, 4);
+  for (int set = 0; set < 3; ++set) {
+    ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(400)});
+    for (int i = 0; i < 400; ++i)
+      s.pool.spawn(at(u(rng), u(rng), std::round(u(rng)) - 8, static_cast<float>(set * 1000 + i)));
+  }
+  for (const BillboardAlignment alignment : {BillboardAlignment::viewplane, BillboardAlignment::viewpoint}) {
+    RenderSettings settings;
+    settings.alignment = alignment;
+    settings.stereo_mode = StereoMode::side_by_side;
+    settings.particles = ParticleShape::gaussian;
+    w.set_resource<RenderSettings>(settings);
+    run_sort(w);
+    const EyeDrawLists indexed = w.resource<EyeDrawLists>();
+    settings.particles = ParticleShape::spherical;
+    w.set_resource<RenderSettings>(settings);
+    run_sort(w);
+    const EyeDrawLists& gathered = w.resource<EyeDrawLists>();
+    ASSERT_EQ(indexed.eyes.size(), 2u);
+    ASSERT_EQ(gathered.eyes.size(), 2u);
+    for (size_t eye = 0; eye < 2; ++eye) {
+      ASSERT_TRUE(indexed.eyes[eye].indexed());
+      ASSERT_FALSE(gathered.eyes[eye].indexed());
+      const DrawList from_records = gathered_draw_list(indexed, eye);
+      ASSERT_EQ(from_records.size(), 1200u);
+      EXPECT_TRUE(from_records.center_radius == gathered.eyes[eye].center_radius) << eye;
+      EXPECT_TRUE(from_records.color_density == gathered.eyes[eye].color_density) << eye;
+    }
+  }
 }
 
 }  // namespace
