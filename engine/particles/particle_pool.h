@@ -118,6 +118,13 @@ class ParticlePool {
   // Removes all particles. Ids keep counting and rejected() keeps its total.
   void clear() { size_ = 0; }
 
+  // Bytes one particle slot takes: the sum of the attribute arrays' elements.
+  static std::size_t bytes_per_slot() {
+    std::size_t bytes = 0;
+    ParticlePool().for_each_array([&](const auto& a) { bytes += sizeof(a[0]); });
+    return bytes;
+  }
+
   // Applies f to every attribute array (16 float arrays, medium, then id), e.g. to permute
   // after a sort or to check that nothing reallocated.
   template <class F>

@@ -3,9 +3,13 @@
 // each (chart_<name>.cpp). Each measures through the same code as the matching bench or analyze
 // command, so its points agree with their figures. Sizes are the charts' defaults; tests pass
 // smaller ones.
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "engine/core/progress_sink.h"
 #include "systems/charts/chart_table.h"
 
 namespace pyro {
@@ -60,7 +64,23 @@ struct ParticleBudgetChartOptions {
 };
 ChartTable chart_particle_budget(const ParticleBudgetChartOptions& options);
 
-// "footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators".
+// ms per frame against particles, log-log (`pyro bench scale`): not a time-against-error chart,
+// so it has its own CSV (particles, ms_per_frame, cpu_ms_per_frame and the stages; the fitted
+// slopes in comment lines), drawn by tools/plots/plot_scale.py.
+struct ScaleChartOptions {
+  std::string scene;  // empty: content/scenes/clouds.json
+  std::vector<uint64_t> counts{10000, 30000, 100000, 300000, 1000000, 2000000};
+  int frames = 3;
+  int width = 0, height = 0;  // 0: the scene's
+  ProgressSink* progress = nullptr;
+};
+struct ScaleChart {
+  std::string csv;
+  nlohmann::json bench;  // pyro bench scale's result
+};
+ScaleChart chart_scale(const ScaleChartOptions& options);
+
+// "footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators", "scale".
 std::vector<std::string> chart_names();
 
 }  // namespace pyro

@@ -103,11 +103,7 @@ void add_particles(nlohmann::json& report, ecs::World& world) {
 
 }  // namespace
 
-size_t bytes_per_particle_slot() {
-  size_t bytes = 0;
-  ParticlePool().for_each_array([&](const auto& a) { bytes += sizeof(a[0]); });
-  return bytes;
-}
+size_t bytes_per_particle_slot() { return ParticlePool::bytes_per_slot(); }
 
 nlohmann::json profile_report(SceneRuntime& runtime, uint64_t first_frame) {
   GroupedSpans g = group_spans(runtime.trace(), first_frame);

@@ -16,31 +16,17 @@ renamed when complete.
 Needs Debian's matplotlib (python3-matplotlib, tools/install-deps.sh): exit status 3 when it
 cannot be imported, 1 on any other failure.
 """
-import csv
 import math
 import os
 import sys
 
-from plot_setup import fail, load_matplotlib
+from plot_setup import fail, load_matplotlib, read_commented_csv, run_main, save_figure
 
 plt = load_matplotlib()
 
 
 def read_chart(path):
-    meta = {}
-    lines = []
-    with open(path, newline="") as f:
-        for line in f:
-            if line.startswith("#"):
-                key, _, value = line[1:].strip().partition(": ")
-                meta.setdefault(key, value)
-            else:
-                lines.append(line)
-    rows = list(csv.DictReader(lines))
-    for column in ("label", "group", "time", "error", "pareto"):
-        if rows and column not in rows[0]:
-            fail("%s: no column %r" % (path, column))
-    return meta, rows
+    return read_commented_csv(path, ("label", "group", "time", "error", "pareto"))
 
 
 def main():
@@ -113,19 +99,8 @@ def main():
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    tmp = png_path + ".tmp-%d.png" % os.getpid()
-    try:
-        fig.savefig(tmp)
-        os.replace(tmp, png_path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+    save_figure(fig, png_path)
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except SystemExit:
-        raise
-    except Exception as e:  # noqa: BLE001 - any failure is reported, exit 1
-        fail("%s: %s" % (type(e).__name__, e))
+    run_main(main)

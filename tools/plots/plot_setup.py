@@ -1,7 +1,9 @@
 """What every plotting script under tools/plots starts with: an error exit that names the script,
 and matplotlib (Debian's python3-matplotlib) loaded for drawing to files, or exit status 3 with
 how to install it. pyro's plot runner (tools/pyro/plot_script.cpp) reads status 3 as "no
-matplotlib" and says so."""
+matplotlib" and says so. Also what the chart scripts share: reading a chart CSV with its comment
+lines, saving a figure atomically, and reporting any failure with exit status 1."""
+import csv
 import os
 import sys
 
@@ -28,3 +30,42 @@ def load_matplotlib():
             EXIT_NO_MATPLOTLIB,
         )
     return plt
+
+
+def read_commented_csv(path, columns):
+    """A chart CSV: its comment lines ("# key: value", the first of each key kept) as a dict,
+    and its rows as dicts of strings; fails unless the header has every name in `columns`."""
+    meta, lines = {}, []
+    with open(path, newline="") as f:
+        for line in f:
+            if line.startswith("#"):
+                key, _, value = line[1:].strip().partition(": ")
+                meta.setdefault(key, value)
+            else:
+                lines.append(line)
+    rows = list(csv.DictReader(lines))
+    for column in columns:
+        if rows and column not in rows[0]:
+            fail("%s: no column %r" % (path, column))
+    return meta, rows
+
+
+def save_figure(fig, png_path):
+    """Writes the figure to a temporary name, then renames it: no half-written PNG is left."""
+    tmp = png_path + ".tmp-%d.png" % os.getpid()
+    try:
+        fig.savefig(tmp)
+        os.replace(tmp, png_path)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+
+
+def run_main(main):
+    """Runs a script's main(); any failure but an exit is reported with status 1."""
+    try:
+        main()
+    except SystemExit:
+        raise
+    except Exception as e:  # noqa: BLE001 - any failure is reported, exit 1
+        fail("%s: %s" % (type(e).__name__, e))

@@ -1,4 +1,4 @@
-// pyro bench ecs | sort | render | johnson | layers | table1 | soak | vdb | schedule ... [--json]
+// pyro bench ecs | sort | scale | render | johnson | layers | table1 | soak | vdb | schedule ... [--json]
 //
 // Each subcommand parses its options, runs the benchmark (systems/benchmarks; bench ecs:
 // tools/pyro/bench_ecs.h) and prints its result.
@@ -12,6 +12,7 @@
 #include "systems/benchmarks/bench_johnson.h"
 #include "systems/benchmarks/bench_layers.h"
 #include "systems/benchmarks/bench_render.h"
+#include "systems/benchmarks/bench_scale.h"
 #include "systems/benchmarks/bench_soak.h"
 #include "systems/benchmarks/bench_sort.h"
 #include "tools/pyro/commands.h"
@@ -52,6 +53,29 @@ void add_bench_sort(CLI::App* bench) {
       ->check(CLI::Range(1, 1000));
   cmd->add_flag("--json", sort->json, "Print one JSON object");
   cmd->callback([sort] { print(bench_sort(sort->count, sort->repeats), sort->json); });
+}
+
+void add_bench_scale(CLI::App* bench) {
+  struct ScaleArgs { ScaleBenchOptions options; bool json = false; };
+  auto scale = std::make_shared<ScaleArgs>();
+  CLI::App* cmd = bench->add_subcommand(
+      "scale", "CPU cost per frame as the clouds' particle count grows (radius scaled as count^(-1/3)), "
+               "against std::sort and memcpy of the same data");
+  cmd->add_option("scene", scale->options.scene, "Scene file with clouds (JSON)")->required();
+  cmd->add_option("--counts", scale->options.counts, "Particle counts (default 1e5 2e5 5e5 1e6 1.5e6 2e6)")
+      ->check(CLI::Range(uint64_t(1), uint64_t(10000000)))
+      ->expected(1, 32);
+  cmd->add_option("--frames", scale->options.frames, "Timed frames per count (after one warm-up)")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--width", scale->options.width, "Width (default: the scene's)")->check(CLI::Range(1, 8192));
+  cmd->add_option("--height", scale->options.height, "Height (default: the scene's)")->check(CLI::Range(1, 8192));
+  cmd->add_option("--threads", scale->options.threads, "Schedule threads (0: one per core)")
+      ->check(CLI::Range(0, 256));
+  cmd->add_flag("--json", scale->json, "Print one JSON object");
+  cmd->callback([scale] {
+    scale->options.progress = terminal_progress();
+    print(bench_scale(scale->options), scale->json);
+  });
 }
 
 void add_bench_render(CLI::App* bench) {
@@ -180,7 +204,7 @@ void add_bench_commands(CLI::App& app) {
   add_bench_vdb_command(*bench);
   add_bench_schedule_command(*bench);
 
-  for (const auto add : {add_bench_ecs, add_bench_sort, add_bench_render, add_bench_johnson, add_bench_layers,
+  for (const auto add : {add_bench_ecs, add_bench_sort, add_bench_scale, add_bench_render, add_bench_johnson, add_bench_layers,
                          add_bench_table1, add_bench_soak})
     add(bench);
 }

@@ -1,6 +1,7 @@
 // pyro chart NAME --out DIR [--width W] [--height H] [--frames N] [--csv-only] [--json]
 // One chart per command: time (x) against error (y), one point per setting, the Pareto front
-// marked. The data come from tools/pyro/chart_<name>.cpp (charts.h); DIR/NAME.csv is written
+// marked (the scale chart: ms against particles, log-log). The data come from
+// systems/charts/chart_<name>.cpp (charts.h); DIR/NAME.csv is written
 // atomically, then tools/plots/plot_pareto.py draws DIR/NAME.png from it.
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "systems/charts/charts.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/plot_script.h"
+#include "tools/pyro/progress.h"
 
 namespace pyro::cli {
 
@@ -72,14 +74,45 @@ ChartTable make_chart(const ChartArgs& a) {
                                           "particle-budget, integrators; found \"" + a.name + "\"");
 }
 
+void make_out_dir(const ChartArgs& a) {
+  std::error_code ec;
+  fs::create_directories(a.out, ec);
+  if (ec || !fs::is_directory(a.out))
+    throw UserError(a.out, "--out", "cannot create the folder: " + ec.message());
+}
+
+// The scale chart: its own CSV and plot (charts.h), the benchmark's slopes in the report.
+void run_scale_chart(const ChartArgs& a) {
+  ScaleChartOptions o;
+  override_size(o, a);
+  if (a.frames > 0) o.frames = a.frames;
+  o.progress = terminal_progress();
+  const ScaleChart chart = chart_scale(o);
+  make_out_dir(a);
+  const fs::path csv = fs::path(a.out) / "scale.csv", png = fs::path(a.out) / "scale.png";
+  write_text_file(csv.string(), chart.csv);
+  if (!a.csv_only)
+    run_plot_script("plot_scale.py", {csv.string(), png.string()}, "; the CSV file is written: " + csv.string());
+  nlohmann::json report = {{"chart", "scale"}, {"csv", csv.string()}, {"summary", chart.bench}};
+  if (!a.csv_only) report["png"] = png.string();
+  if (a.json) {
+    std::printf("%s\n", report.dump().c_str());
+    return;
+  }
+  std::printf("scale: cpu slope %s, frame slope %s\n  %s\n", chart.bench["cpu_slope"].dump().c_str(),
+              chart.bench["frame_slope"].dump().c_str(), csv.string().c_str());
+  if (!a.csv_only) std::printf("  %s\n", png.string().c_str());
+}
+
 void run_chart(const ChartArgs& a) {
+  if (a.name == "scale") {
+    run_scale_chart(a);
+    return;
+  }
   const fs::path out_dir(a.out);
   // Everything is measured (and every mistake found) before anything is written.
   const ChartTable table = make_chart(a);
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (ec || !fs::is_directory(out_dir))
-    throw UserError(a.out, "--out", "cannot create the folder: " + ec.message());
+  make_out_dir(a);
   const fs::path csv = out_dir / (table.name + ".csv");
   const fs::path png = out_dir / (table.name + ".png");
   write_text_file(csv.string(), chart_csv(table));
@@ -106,22 +139,22 @@ void run_chart(const ChartArgs& a) {
 }  // namespace
 
 std::vector<std::string> chart_names() {
-  return {"footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators"};
+  return {"footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators", "scale"};
 }
 
 void add_chart_command(CLI::App& app) {
   auto a = std::make_shared<ChartArgs>();
   CLI::App* cmd = app.add_subcommand(
       "chart", "Time against error, one point per setting, Pareto front marked: CSV and PNG");
-  cmd->add_option("name", a->name, "footprint, billboard-modes, layer-resolution, particle-budget or integrators")
+  cmd->add_option("name", a->name, "footprint, billboard-modes, layer-resolution, particle-budget, integrators or scale")
       ->required()
       ->check(CLI::IsMember(chart_names()));
   cmd->add_option("--out", a->out, "Folder for NAME.csv and NAME.png")->required();
-  cmd->add_option("--width", a->width, "Image width (billboard-modes, layer-resolution, particle-budget)")
+  cmd->add_option("--width", a->width, "Image width (billboard-modes, layer-resolution, particle-budget, scale)")
       ->check(CLI::Range(16, 4096));
-  cmd->add_option("--height", a->height, "Image height (billboard-modes, layer-resolution, particle-budget)")
+  cmd->add_option("--height", a->height, "Image height (billboard-modes, layer-resolution, particle-budget, scale)")
       ->check(CLI::Range(16, 4096));
-  cmd->add_option("--frames", a->frames, "Timed frames per point (billboard-modes, layer-resolution)")
+  cmd->add_option("--frames", a->frames, "Timed frames per point (billboard-modes, layer-resolution, scale)")
       ->check(CLI::Range(1, 10000));
   cmd->add_flag("--csv-only", a->csv_only, "Write the CSV only (no matplotlib needed)");
   cmd->add_flag("--json", a->json, "Print one JSON object");
