@@ -3,13 +3,16 @@
 // read by the billboard renderers and the tools. A list comes in one of two forms:
 //  - gathered: the attribute arrays, in draw order (the sphere and explosion billboards, and
 //    lists made by hand);
-//  - indexed: `order`, the draw order as indices into the frame's packed particle records
-//    (EyeDrawLists::records), which the Gaussian splats' vertex shader reads itself, so nothing
-//    is gathered on the CPU.
+//  - indexed: `order`, the draw order as indices into the particle pools themselves
+//    (EyeDrawLists::pools, one after another), whose attribute arrays the Gaussian splats' vertex
+//    shader reads itself, so nothing is gathered or packed on the CPU.
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/vec4.hpp>
+
+#include "engine/particles/particle_pool.h"
 
 namespace pyro {
 
@@ -20,8 +23,8 @@ struct DrawList {
   // (components/particle_medium.h, as a float), and a per-particle detail-window key in [0, 1).
   // Read only by the explosion shading; empty otherwise.
   std::vector<glm::vec4> medium;
-  // Indexed form: record k of the draw order is EyeDrawLists::records[2 order[k]] (centre and
-  // radius) and [2 order[k] + 1] (colour and density). Empty in the gathered form.
+  // Indexed form: entry k of the draw order is particle order[k] of EyeDrawLists::pools taken one
+  // after another. Empty in the gathered form.
   std::vector<uint32_t> order;
 
   bool indexed() const { return !order.empty(); }
@@ -29,25 +32,27 @@ struct DrawList {
 };
 
 // Resource: one DrawList per rendered view (billboards facing the viewpoint are ordered by
-// distance to each eye; facing the viewplane, every eye shares one order), and the records the
+// distance to each eye; facing the viewplane, every eye shares one order), and the pools the
 // indexed lists point into.
 struct EyeDrawLists {
   std::vector<DrawList> eyes;
-  // Two vec4s per particle (centre-radius, colour-density), every set's particles one set after
-  // another; the same for every eye.
-  std::vector<glm::vec4> records;
+  // Every ParticleSet's pool in entity-index order, as the sorting system saw them: valid until
+  // a pool changes (the next frame's spawn and simulate phases).
+  std::vector<const ParticlePool*> pools;
 };
 
-// Eye `eye`'s list in the gathered form (a copy; an indexed list is gathered from the records).
+// Eye `eye`'s list in the gathered form (a copy; an indexed list is gathered from the pools).
 inline DrawList gathered_draw_list(const EyeDrawLists& lists, size_t eye) {
   const DrawList& list = lists.eyes.at(eye);
   if (!list.indexed()) return list;
+  std::vector<std::pair<const ParticlePool*, size_t>> particles;  // (pool, index) by global index
+  for (const ParticlePool* pool : lists.pools)
+    for (size_t i = 0; i < pool->size(); ++i) particles.emplace_back(pool, i);
   DrawList out;
-  out.center_radius.resize(list.order.size());
-  out.color_density.resize(list.order.size());
-  for (size_t k = 0; k < list.order.size(); ++k) {
-    out.center_radius[k] = lists.records.at(2 * size_t(list.order[k]));
-    out.color_density[k] = lists.records.at(2 * size_t(list.order[k]) + 1);
+  for (const uint32_t k : list.order) {
+    const auto& [p, i] = particles.at(k);
+    out.center_radius.push_back({p->px[i], p->py[i], p->pz[i], p->radius[i]});
+    out.color_density.push_back({p->r[i], p->g[i], p->b[i], p->density[i]});
   }
   return out;
 }

@@ -9,7 +9,8 @@
 //    fallback = the camera's right), tested there and, against this shader's images, in
 //    tests/render/billboard_alignment_render_test.cpp.
 // Vertex pulling: instance k is the particle draw_order[k], whose record is two vec4s
-// (components/draw_list.h): world xyz and radius, then linear rgb and density rho.
+// (packed by systems/billboard_render/billboard_renderer.cpp): world xyz and radius, then
+// linear rgb and density rho.
 layout(std430, binding = 0) readonly buffer ParticleRecords { vec4 records[]; };
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
 

@@ -66,7 +66,7 @@ nlohmann::json bench_render(const RenderBenchOptions& o) {
     glFinish();
     const auto t0 = Clock::now();
     glBeginQuery(GL_SAMPLES_PASSED, query.get());
-    renderer.draw(list, lists.records, frame, target, BillboardAlignment::viewplane, shading);
+    renderer.draw(list, lists.pools, frame, target, BillboardAlignment::viewplane, shading);
     glEndQuery(GL_SAMPLES_PASSED);
     glFinish();
     const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();

@@ -145,7 +145,7 @@ nlohmann::json count_report(const ScaleRun& run, int frames) {
           {"stage_ms",
            {{"keys", run.sort.keys_ms / n}, {"pack", run.sort.pack_ms / n}, {"sort", sort},
             {"gather", run.sort.gather_ms / n},
-            {"instance_copy", copy}, {"instance_wait", wait}, {"draw_calls", draws},
+            {"instance_write", copy}, {"instance_wait", wait}, {"draw_calls", draws},
             {"submission", submission}}},
           {"bytes_per_particle",
            {{"pools", ParticlePool::bytes_per_slot()},

@@ -26,12 +26,18 @@ struct ScaleBenchOptions {
 };
 
 // {"scene", "width", "height", "frames", "counts": [per count: "particles", "ms_per_frame",
-// "cpu_ms_per_frame", "driver_ms_per_frame", "system_ms" {name: ms}, "stage_ms" {keys, sort,
-// gather, instance_copy, instance_wait, draw_calls, submission}, "bytes_per_particle" {pools,
-// sort_keys, draw_list, instances}, "sort_ms", "std_sort_ms", "sort_over_std_sort",
+// "cpu_ms_per_frame", "driver_ms_per_frame", "system_ms" {name: ms}, "stage_ms" {keys, pack,
+// sort, gather, instance_write, instance_wait, draw_calls, submission}, "bytes_per_particle"
+// {pools, sort_keys, draw_list, instances}, "sort_ms", "std_sort_ms", "sort_over_std_sort",
 // "instances_ms", "memcpy_instances_ms", "instances_over_memcpy"}], "cpu_slope",
 // "frame_slope" (log-log least squares over the counts from 1e5 to 2e6, null with fewer than two
 // such counts)}.
+// cpu_ms_per_frame: the spawn, simulate, camera and sort systems, writing the instances into the
+// GPU's memory, and the rest of billboard_render's own work (state, draw submission); not the
+// time inside the draw calls (on llvmpipe the driver runs the vertex stage there), the wait for
+// a free buffer slot, or the other GL systems: those make driver_ms_per_frame, the rest of the
+// frame. instances_ms: everything done to turn the pools into GPU instances (packing and
+// gathering for gathered lists, writing into the mapped buffer).
 // Throws UserError when the scene has no clouds to scale.
 nlohmann::json bench_scale(const ScaleBenchOptions& options);
 

@@ -22,11 +22,11 @@ void draw_particles_for_view(BillboardRenderer& renderer, const EyeDrawLists& li
   const gpu::GpuPassScope pass("particle layer", true);  // profiling hook (no-op by default)
   const DrawList& list = lists.eyes[eye];
   if (!targets.layer) {
-    renderer.draw(list, lists.records, frame, *targets.scene, alignment, shading);
+    renderer.draw(list, lists.pools, frame, *targets.scene, alignment, shading);
     return;
   }
   prepare_layer(targets);
-  renderer.draw(list, lists.records, frame, *targets.layer, alignment, shading);
+  renderer.draw(list, lists.pools, frame, *targets.layer, alignment, shading);
 }
 
 void prepare_layer(EyeTargets& targets) {

@@ -11,7 +11,7 @@
 
 namespace pyro {
 
-// The Gaussian splats of view `eye` (lists.eyes[eye], reading lists.records) into its layer or
+// The Gaussian splats of view `eye` (lists.eyes[eye], reading lists.pools) into its layer or
 // scene target.
 void draw_particles_for_view(BillboardRenderer& renderer, const EyeDrawLists& lists, size_t eye,
                              const CameraFrame& frame, EyeTargets& targets,

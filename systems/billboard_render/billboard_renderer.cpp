@@ -5,6 +5,9 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "engine/gpu/shader_program.h"
 #include "systems/billboard_render/parallel_copy.h"
 
@@ -38,43 +41,76 @@ std::size_t aligned(std::size_t bytes) {
 
 }  // namespace
 
-void BillboardRenderer::upload(const std::vector<glm::vec4>& records,
-                               const std::vector<uint32_t>& order) {
-  const std::size_t record_bytes = records.size() * sizeof(glm::vec4);
-  const std::size_t order_bytes = order.size() * sizeof(uint32_t);
-  unsigned char* slot = ring_.next(aligned(record_bytes) + order_bytes);
+namespace {
+
+constexpr std::size_t kParticlesPerTask = 16384;
+
+// Two vec4s per particle (centre and radius, colour and density), every pool after the one
+// before, packed in parallel straight into the mapped slot.
+void pack_records(const std::vector<const ParticlePool*>& pools, glm::vec4* records) {
+  std::size_t first = 0;
+  for (const ParticlePool* pool : pools) {
+    const ParticlePool& p = *pool;
+    glm::vec4* out = records + 2 * first;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), kParticlesPerTask),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                          out[2 * i] = {p.px[i], p.py[i], p.pz[i], p.radius[i]};
+                          out[2 * i + 1] = {p.r[i], p.g[i], p.b[i], p.density[i]};
+                        }
+                      });
+    first += p.size();
+  }
+}
+
+// A gathered list's records, in its order (the order written is then 0 .. n-1).
+void pack_records(const DrawList& list, glm::vec4* records, uint32_t* order) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, list.size(), kParticlesPerTask),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                        records[2 * k] = list.center_radius[k];
+                        records[2 * k + 1] = list.color_density[k];
+                        order[k] = static_cast<uint32_t>(k);
+                      }
+                    });
+}
+
+}  // namespace
+
+void BillboardRenderer::upload(const DrawList& list, const std::vector<const ParticlePool*>& pools) {
+  std::size_t particles = list.size();
+  if (list.indexed()) {
+    particles = 0;
+    for (const ParticlePool* p : pools) particles += p->size();
+  }
+  const std::size_t record_bytes = aligned(2 * particles * sizeof(glm::vec4));
+  const std::size_t order_bytes = list.size() * sizeof(uint32_t);
+  unsigned char* slot = ring_.next(record_bytes + order_bytes);
   const auto start = std::chrono::steady_clock::now();
-  parallel_copy(slot, records.data(), record_bytes);
-  parallel_copy(slot + aligned(record_bytes), order.data(), order_bytes);
+  auto* records = reinterpret_cast<glm::vec4*>(slot);
+  auto* order = reinterpret_cast<uint32_t*>(slot + record_bytes);
+  if (list.indexed()) {
+    pack_records(pools, records);
+    parallel_copy(order, list.order.data(), order_bytes);
+  } else {
+    pack_records(list, records, order);
+  }
   copy_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  bytes_ += record_bytes + order_bytes;
+  bytes_ += 2 * particles * sizeof(glm::vec4) + order_bytes;
   const auto offset = static_cast<GLintptr>(ring_.offset());
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, ring_.buffer(), offset,
-                    static_cast<GLsizeiptr>(std::max<std::size_t>(record_bytes, 16)));
-  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, ring_.buffer(),
-                    offset + static_cast<GLintptr>(aligned(record_bytes)),
+                    static_cast<GLsizeiptr>(std::max<std::size_t>(record_bytes, 32)));
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, ring_.buffer(), offset + static_cast<GLintptr>(record_bytes),
                     static_cast<GLsizeiptr>(std::max<std::size_t>(order_bytes, 4)));
 }
 
-void BillboardRenderer::draw(const DrawList& list, const std::vector<glm::vec4>& records,
+void BillboardRenderer::draw(const DrawList& list, const std::vector<const ParticlePool*>& pools,
                              const CameraFrame& frame, const gpu::RenderTarget& target,
                              BillboardAlignment alignment, BillboardShading shading) {
-  const size_t n = list.size();
-  if (n == 0) return;
-  if (list.indexed()) {
-    upload(records, list.order);
-  } else {
-    // A gathered list: its own records, in order.
-    own_records_.resize(2 * n);
-    own_order_.resize(n);
-    for (size_t k = 0; k < n; ++k) {
-      own_records_[2 * k] = list.center_radius[k];
-      own_records_[2 * k + 1] = list.color_density[k];
-      own_order_[k] = static_cast<uint32_t>(k);
-    }
-    upload(own_records_, own_order_);
-  }
-
+  if (list.size() == 0) return;
+  upload(list, pools);
+  const gpu::Program& program =
+      shading == BillboardShading::kernel ? kernel_program_ : trivial_program_;
   target.bind();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -82,8 +118,6 @@ void BillboardRenderer::draw(const DrawList& list, const std::vector<glm::vec4>&
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over", back to front
   glDisable(GL_CULL_FACE);
-  const gpu::Program& program =
-      shading == BillboardShading::kernel ? kernel_program_ : trivial_program_;
   glUseProgram(program.get());
   glUniformMatrix4fv(gpu::uniform_location(program, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(frame.view_projection));
@@ -98,7 +132,7 @@ void BillboardRenderer::draw(const DrawList& list, const std::vector<glm::vec4>&
   glBindTextureUnit(0, kernel_texture_.get());
   glBindVertexArray(empty_vao_.get());  // no attributes: the shader pulls its instance
   const auto start = std::chrono::steady_clock::now();
-  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n));
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(list.size()));
   draw_call_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   glBindVertexArray(0);
   glDepthMask(GL_TRUE);

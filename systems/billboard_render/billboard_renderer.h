@@ -2,6 +2,8 @@
 // GPU state of the particle pass: the kernel texture made from the footprint table, the
 // mapped buffer the particles are read from, and the programs (the real one and a trivial one used as a fill-rate
 // baseline by `pyro bench render`).
+#include <vector>
+
 #include "components/draw_list.h"
 #include "systems/scene/scene_description.h"
 #include "engine/gpu/gl_objects.h"
@@ -15,8 +17,8 @@ namespace pyro {
 
 enum class BillboardShading { kernel, trivial };
 
-// CPU time of the particle pass since the last reset_cost(): the records' and order's copy into
-// the GPU's memory and the wait for a free slot (engine/gpu/mapped_ring.h), and the time inside
+// CPU time of the particle pass since the last reset_cost(): packing the particles and copying
+// the order into the GPU's memory and the wait for a free slot (engine/gpu/mapped_ring.h), and the time inside
 // the draw calls (on llvmpipe the driver runs the vertex stage there, on the calling thread).
 struct ParticlePassCost {
   UploadCost upload;
@@ -27,12 +29,12 @@ class BillboardRenderer {
  public:
   explicit BillboardRenderer(const FootprintTable& table);
 
-  // Copies the particle records and the list's order into the next slot of a persistently
-  // mapped ring and blends the billboards over `target` (depth tested, not written), the vertex
-  // shader reading each instance's record through the order (vertex pulling). An indexed list
-  // (components/draw_list.h) points into `records`; a gathered one is drawn as it is.
-  void draw(const DrawList& list, const std::vector<glm::vec4>& records, const CameraFrame& frame,
-            const gpu::RenderTarget& target,
+  // Packs the particles and copies the list's order into the next slot of a persistently mapped
+  // ring and blends the billboards over `target` (depth tested, not written), the vertex shader
+  // reading each instance's record through the order (vertex pulling). An indexed
+  // list (components/draw_list.h) points into `pools`; a gathered one is drawn as it is.
+  void draw(const DrawList& list, const std::vector<const ParticlePool*>& pools,
+            const CameraFrame& frame, const gpu::RenderTarget& target,
             BillboardAlignment alignment = BillboardAlignment::viewplane,
             BillboardShading shading = BillboardShading::kernel);
 
@@ -48,13 +50,13 @@ class BillboardRenderer {
   FootprintTable table_;
   gpu::Program kernel_program_, trivial_program_;
   gpu::Texture kernel_texture_;
-  // Binds the records and the order (SSBO bindings 0 and 1) from the next slot of ring_.
-  void upload(const std::vector<glm::vec4>& records, const std::vector<uint32_t>& order);
+  // Packs the particles (the pools of an indexed list, or a gathered list's arrays) as two vec4s
+  // each and the list's order straight into the next slot of ring_, and binds them (SSBO
+  // bindings 0 and 1).
+  void upload(const DrawList& list, const std::vector<const ParticlePool*>& pools);
 
   gpu::MappedRing ring_;
   gpu::VertexArray empty_vao_ = gpu::make_vertex_array();
-  std::vector<glm::vec4> own_records_;  // a gathered list's records
-  std::vector<uint32_t> own_order_;     // and its order, 0 .. n-1
   double copy_ms_ = 0.0, draw_call_ms_ = 0.0;
   std::size_t bytes_ = 0;
 };

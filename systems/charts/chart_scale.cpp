@@ -44,13 +44,13 @@ ScaleChart chart_scale(const ScaleChartOptions& o) {
   csv += "# note: same numbers as: pyro bench scale SCENE --counts ... --frames " +
          std::to_string(o.frames) + " --json; cpu = simulation, camera, sorting, instance copy and "
          "draw submission; the frame adds the GL driver's work\n";
-  csv += "particles,ms_per_frame,cpu_ms_per_frame,keys_ms,sort_ms,pack_ms,instance_copy_ms,"
+  csv += "particles,ms_per_frame,cpu_ms_per_frame,keys_ms,sort_ms,pack_ms,instance_write_ms,"
          "draw_calls_ms,sort_over_std_sort,instances_over_memcpy\n";
   for (const nlohmann::json& c : r["counts"]) {
     const nlohmann::json& st = c["stage_ms"];
     csv += number(c["particles"].get<double>()) + "," + number(c["ms_per_frame"]) + "," +
            number(c["cpu_ms_per_frame"]) + "," + number(st["keys"]) + "," + number(st["sort"]) + "," +
-           number(st["pack"]) + "," + number(st["instance_copy"]) + "," + number(st["draw_calls"]) +
+           number(st["pack"]) + "," + number(st["instance_write"]) + "," + number(st["draw_calls"]) +
            "," + number(c["sort_over_std_sort"]) + "," + number(c["instances_over_memcpy"]) + "\n";
   }
   return {csv, r};

@@ -137,12 +137,6 @@ void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::v
   s.times.gather_ms += ms_since(start);
 }
 
-void pack_particle_records(SortScratch& s, std::vector<glm::vec4>& records) {
-  const auto start = std::chrono::steady_clock::now();
-  pack_particles(2, s, records);
-  s.times.pack_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
                      SortScratch& s, DrawList& list) {
   auto start = std::chrono::steady_clock::now();
@@ -159,7 +153,7 @@ void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind
 namespace {
 
 // The sorting system's work for one frame: every view's list, indexed for the Gaussian splats
-// (their vertex shader reads the records) and gathered for the billboards that read arrays.
+// (their vertex shader reads the pools) and gathered for the billboards that read arrays.
 void sort_views(const ecs::World& world, const View& view, const RenderSettings* settings,
                 SortScratch& scratch, EyeDrawLists& lists) {
   const RenderSettings defaults;
@@ -172,11 +166,12 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
   const size_t orders = shared ? 1 : eyes.size();
   if (rs.particles == ParticleShape::gaussian) {
     collect_particle_sets(world, scratch);
-    pack_particle_records(scratch, lists.records);
+    lists.pools.clear();
+    for (const auto& set : scratch.sets) lists.pools.push_back(set.second);
     for (size_t v = 0; v < orders; ++v)
       order_draw_list(eyes[v].eye, eyes[v].forward, kind, scratch, lists.eyes[v]);
   } else {
-    lists.records.clear();
+    lists.pools.clear();
     for (size_t v = 0; v < orders; ++v)
       build_draw_list(world, eyes[v].eye, eyes[v].forward, kind, scratch, lists.eyes[v],
                       rs.media_layers());

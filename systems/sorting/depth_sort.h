@@ -43,7 +43,7 @@ struct SortScratch {
   std::vector<SortKey> keys;
   RadixScratch radix;
   std::vector<std::pair<uint32_t, const ParticlePool*>> sets;  // (entity index, pool)
-  // The particles' instance data in key order, two or three vec4s each (depth_sort.cpp).
+  // The gathered form's particles packed in key order, two or three vec4s each (depth_sort.cpp).
   std::vector<glm::vec4> packed;
   SortStageTimes times;
 };
@@ -55,11 +55,10 @@ void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::v
                      SortKeyKind kind, SortScratch& scratch, DrawList& list,
                      bool with_medium = true);
 
-// The indexed form (components/draw_list.h), in two steps: every ParticleSet's records packed
-// into `records` (collect_particle_sets first), then for each eye the order of those records
-// into list.order. The order is the same as build_draw_list's.
+// The indexed form (components/draw_list.h): collect_particle_sets once (the pools in entity
+// order, into scratch.sets), then for each eye the order of those pools' particles, one pool after
+// another, into list.order. The order is the same as build_draw_list's.
 void collect_particle_sets(const ecs::World& world, SortScratch& scratch);
-void pack_particle_records(SortScratch& scratch, std::vector<glm::vec4>& records);
 void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
                      SortScratch& scratch, DrawList& list);
 

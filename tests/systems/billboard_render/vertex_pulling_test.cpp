@@ -1,6 +1,6 @@
 // The Gaussian splats' vertex shader reads each instance's record through the draw order
 // (vertex pulling). In every shipped scene of splats, the particles drawn from the sorting
-// system's indexed list and from the gathered copy of it (records in draw order, order 0..n-1)
+// system's indexed list and from the gathered copy of it (attributes in draw order, order 0..n-1)
 // must give the same bytes; and a list drawn in another order must not, so the order is really
 // what the shader follows.
 #include <gtest/gtest.h>
@@ -23,14 +23,14 @@ namespace pyro {
 namespace {
 
 std::vector<float> draw_into_fresh_target(BillboardRenderer& renderer, const DrawList& list,
-                                          const std::vector<glm::vec4>& records,
+                                          const std::vector<const ParticlePool*>& pools,
                                           const CameraFrame& frame) {
   gpu::RenderTarget target(96, 72);
   target.bind();
   glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  renderer.draw(list, records, frame, target);
+  renderer.draw(list, pools, frame, target);
   return target.read_rgba();
 }
 
@@ -64,7 +64,7 @@ TEST(VertexPulling, IndexedAndGatheredListsDrawTheSameBytesInEveryShippedScene) 
     const CameraFrame frame = world.resource<View>().eyes.at(0);
     BillboardRenderer& renderer = world.resource<BillboardRenderer>();
 
-    const std::vector<float> indexed = draw_into_fresh_target(renderer, lists.eyes[0], lists.records, frame);
+    const std::vector<float> indexed = draw_into_fresh_target(renderer, lists.eyes[0], lists.pools, frame);
     const DrawList gathered = gathered_draw_list(lists, 0);
     ASSERT_FALSE(gathered.indexed());
     ASSERT_EQ(gathered.size(), lists.eyes[0].size()) << name;
@@ -73,7 +73,7 @@ TEST(VertexPulling, IndexedAndGatheredListsDrawTheSameBytesInEveryShippedScene) 
     // Front to back instead: "over" blending does not commute, so the bytes change.
     DrawList reversed = lists.eyes[0];
     std::reverse(reversed.order.begin(), reversed.order.end());
-    EXPECT_FALSE(indexed == draw_into_fresh_target(renderer, reversed, lists.records, frame)) << name;
+    EXPECT_FALSE(indexed == draw_into_fresh_target(renderer, reversed, lists.pools, frame)) << name;
     size_t lit = 0;
     for (size_t i = 3; i < indexed.size(); i += 4) lit += indexed[i] > 0.01f;
     EXPECT_GT(lit, indexed.size() / 4 / 20) << name;  // the particles cover part of the view
