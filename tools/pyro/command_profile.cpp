@@ -1,23 +1,27 @@
 // pyro profile SCENE [--frames N] [--warmup K] [--width W] [--height H] [--sync-timing] [--json]
-//                    [render options]
+//                    [--trace FILE] [render options]
 //
 // A profiling run (SceneRuntime with RuntimeOptions::profile): K warm-up frames (shader
 // compilation, first allocations; not counted), then N frames, every system timed on the CPU
 // and every GL pass on the GPU (timer queries). Prints per system the mean, median, 95th
 // percentile and maximum milliseconds, per GPU pass the same plus the fragments it drew
 // (GL_SAMPLES_PASSED: fragments that passed the depth test), the live particles per source
-// and per medium, and the particle pools' memory. With --json the last line is one object.
+// and per medium, and the particle pools' memory. With --json the last line is one object;
+// --trace writes the run (warm-up included) as Chrome trace-event JSON.
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/trace_events.h"
+#include "engine/io/text_file.h"
 #include "systems/profiling/profile_report.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/render_options.h"
+#include "tools/pyro/trace_path.h"
 
 namespace pyro::cli {
 
@@ -29,6 +33,7 @@ struct ProfileArgs {
   int warmup = 1;
   int width = 0, height = 0;
   bool json = false;
+  std::string trace;  // --trace FILE
   RuntimeOptions runtime;
 };
 
@@ -65,6 +70,7 @@ void print_report(const nlohmann::json& r) {
 }
 
 void run_profile(const ProfileArgs& a) {
+  if (!a.trace.empty()) check_trace_path(a.trace, "--trace");
   const SceneDescription scene = load_scene(a.scene);
   RuntimeOptions options = a.runtime;
   options.readback = false;
@@ -83,6 +89,10 @@ void run_profile(const ProfileArgs& a) {
   std::printf("%s: %d frames (after %d warm-up) at %dx%d, frame %.2f ms mean, %.2f ms p95\n",
               scene.file.c_str(), a.frames, a.warmup, rs.width, rs.height,
               summary["frame_mean_ms"].get<double>(), summary["frame_p95_ms"].get<double>());
+  if (!a.trace.empty()) {
+    write_text_file(a.trace, chrome_trace_json(runtime.trace(), "pyro profile " + scene.file));
+    summary["trace"] = a.trace;
+  }
   print_report(summary);
   if (a.json) std::printf("%s\n", summary.dump().c_str());
 }
@@ -106,6 +116,9 @@ void add_profile_command(CLI::App& app) {
                 "Finish the GPU's work after every system, so each system's CPU span includes the "
                 "GPU work it issued (removes CPU/GPU overlap)");
   cmd->add_flag("--json", args->json, "Print a JSON summary as the last line");
+  cmd->add_option("--trace", args->trace,
+                  "Write a Chrome trace-event JSON file (opens in Perfetto): one span per system "
+                  "per frame, one track per worker thread, the GPU passes on their own track");
   add_render_options(cmd, args->runtime);
   cmd->callback([args] { run_profile(*args); });
 }

@@ -1,4 +1,4 @@
-// Profiling runs end to end: `pyro render --trace` writes Chrome trace
+// Profiling runs end to end: `pyro render --trace` (and `pyro profile --trace`) writes Chrome trace
 // events with one span per system per frame nested in its frame, GPU passes on their own track
 // with the explosion's three layers inside billboard_render; `pyro profile --json` has every
 // system with consistent statistics and the explosion's known particle counts.
@@ -159,6 +159,31 @@ TEST(PyroCliProfile, TraceIntoAMissingFolderIsRefusedBeforeRendering) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--trace"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(PyroCliProfile, ProfileTraceNamesTheSameSystemsAsItsReport) {
+  const auto dir = test::scratch_dir("profile_command_trace");
+  const std::string trace_file = (dir / "profile.trace.json").string();
+  const auto r = test::run_pyro({"profile", test::scene_path("explosion.json"), "--frames", "2",
+                                 "--width", "64", "--height", "64", "--trace", trace_file, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json summary = test::last_json_line(r.out);
+  EXPECT_EQ(summary["trace"], trace_file);
+  std::set<std::string> reported, traced;
+  for (const json& s : summary["systems"]) reported.insert(s["name"]);
+  std::ifstream in(trace_file);
+  ASSERT_TRUE(in) << trace_file;
+  const json trace = json::parse(in);
+  for (const json& e : trace["traceEvents"])
+    if (e["ph"] == "X" && e["cat"] != "frame" && e["cat"] != "gpu") traced.insert(e["name"]);
+  EXPECT_EQ(traced, reported);
+  EXPECT_TRUE(reported.count("sorting") && reported.count("stereo_camera") &&
+              reported.count("billboard_render"));
+
+  const auto bad = test::run_pyro({"profile", test::scene_path("explosion.json"), "--frames", "1",
+                                   "--trace", (dir / "no_such_folder" / "t.json").string()});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--trace"), std::string::npos) << bad.err;
 }
 
 }  // namespace
