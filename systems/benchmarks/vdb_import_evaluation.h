@@ -3,6 +3,9 @@
 // particles for an image error target, and the image RMSE of the splatted particles (the real GL
 // pipeline, offscreen) against the CPU reference render of the grid (systems/reference) from
 // the camera framing the grid. The reference is rendered once per grid and reused across targets.
+#include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/particles/gaussian_particle.h"
@@ -19,11 +22,20 @@ struct VdbImportReference {
   CameraDescription camera;  // framing_camera(grid)
   int width = 0, height = 0;
   RgbImage image;            // the CPU reference render (empty for an empty grid)
-  double seconds = 0.0;      // light sweep + reference render
+  double seconds = 0.0;      // light sweep + reference render(s)
+  // With every view (grid_framing.h: views_around, the framing camera first, then every side;
+  // and view_inside when the camera fits): each view's camera and reference image; empty
+  // otherwise.
+  std::vector<CameraDescription> view_cameras;
+  std::vector<RgbImage> view_images;
+  std::optional<CameraDescription> inside_camera;
+  RgbImage inside_image;
 };
 
-// Renders the reference of `grid` at width x height.
-VdbImportReference make_vdb_import_reference(const DenseGrid& grid, int width, int height);
+// Renders the reference of `grid` at width x height, from the framing camera alone or from
+// every view around it (`every_view`).
+VdbImportReference make_vdb_import_reference(const DenseGrid& grid, int width, int height,
+                                             bool every_view = false);
 
 struct VdbImportResult {
   std::vector<GaussianParticle> particles;
@@ -32,10 +44,33 @@ struct VdbImportResult {
   double import_seconds = 0.0;
   double rmse = 0.0;            // splats against the reference (0 for an empty grid)
   double render_seconds = 0.0;  // one splat frame (sort + draw + readback), best of `repeats`
+  // With every view: each view around the volume's RMSE (the reference's order), their mean and
+  // maximum, and the RMSE from inside (NaN without that view). The inside view is kept apart:
+  // billboards that reach the camera are where splatting is known to fail (the camera inside a
+  // particle sees its flat billboard, not its density), so no import can meet a target there.
+  std::vector<double> view_rmse;
+  double rmse_views_mean = 0.0, rmse_views_max = 0.0;
+  double rmse_inside = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Imports `grid` for the image error target `error` (tau_tolerance_for_error) and measures it.
 VdbImportResult import_and_measure(const DenseGrid& grid, double error, const VdbImportReference& reference,
                                    int render_repeats = 1);
+// The same with the import's octree tolerance given (import-vdb's refinement tightens it).
+VdbImportResult import_and_measure_at(const DenseGrid& grid, double tau_tolerance,
+                                      const VdbImportReference& reference, int render_repeats = 1);
+
+// An import refined until its error from every side meets the target: the octree's tolerance
+// starts at tau_tolerance_for_error(error) and halves while rmse_views_max is above `error`, until
+// it is met, the particle count stops growing (the octree has reached its finest particles), or
+// `max_refinements` halvings were tried. The reference needs every view.
+struct FittedImport {
+  VdbImportResult best;  // the lowest rmse_views_max reached (the first that meets the target)
+  bool target_met = false;
+  int refinements = 0;  // halvings tried
+  std::string reason;   // why the target was not met (empty when it was)
+};
+FittedImport import_to_target(const DenseGrid& grid, double error, const VdbImportReference& reference,
+                              int max_refinements = 6);
 
 }  // namespace pyro

@@ -1,5 +1,6 @@
 #include "systems/cloud_import/grid_framing.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -25,6 +26,35 @@ CameraDescription framing_camera(const DenseGrid& grid) {
   c.near = float(std::max(1e-3 * distance, distance - 1.05 * radius));
   c.far = float(distance + 1.05 * radius);
   return c;
+}
+
+std::vector<CameraDescription> views_around(const DenseGrid& grid) {
+  std::vector<CameraDescription> views = {framing_camera(grid)};
+  if (grid.empty()) return views;
+  const CameraDescription first = views[0];  // a copy: views grows below
+  const glm::vec3 centre = first.target;
+  const float distance = glm::length(first.position - centre);
+  const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const glm::vec3& axis : axes) {
+    CameraDescription c = first;
+    c.position = centre + distance * axis;
+    c.up = axis.y != 0.0f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);  // never along the view
+    views.push_back(c);
+  }
+  return views;
+}
+
+std::optional<CameraDescription> view_inside(const DenseGrid& grid) {
+  if (grid.empty() || std::min({grid.dims[0], grid.dims[1], grid.dims[2]}) < 8) return std::nullopt;
+  glm::dvec3 lo, hi;
+  grid_world_bounds(grid, lo, hi);
+  CameraDescription inside = framing_camera(grid);
+  inside.position = inside.target;
+  inside.target = inside.position + glm::vec3(1, 0, 0);
+  inside.fov_y_deg = 90.0f;
+  inside.near = float(1e-4 * glm::length(hi - lo));
+  inside.far = float(glm::length(hi - lo));
+  return inside;
 }
 
 CameraFrame camera_frame(const CameraDescription& c, int width, int height) {

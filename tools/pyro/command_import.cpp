@@ -64,8 +64,8 @@ void run_import(const ImportArgs& a) {
   if (a.out.empty()) throw UserError("command line", "--out", "the particle file to write (.pyrop)");
   if (!(a.error > 0.0 && a.error <= 1.0))
     throw UserError("", "--error", "a number in (0, 1], found " + std::to_string(a.error));
-  // Stages: read, import, light, reference image, splat image.
-  Progress progress("import-vdb " + std::filesystem::path(a.file).filename().string(), 5);
+  // Stages: read, reference views, import and measure (refined until the target is met).
+  Progress progress("import-vdb " + std::filesystem::path(a.file).filename().string(), 3);
   progress.stage(0, "read");
   const auto t0 = std::chrono::steady_clock::now();
   std::string note;
@@ -79,10 +79,16 @@ void run_import(const ImportArgs& a) {
     std::fprintf(stderr, "pyro import-vdb: %s: grid \"%s\" has no active voxels; writing 0 particles\n",
                  a.file.c_str(), grid.name.c_str());
 
-  // The image error of what the engine draws against the ground truth.
-  progress.stage(1, "import and measure");
-  const VdbImportReference reference = make_vdb_import_reference(grid, a.width, a.height);
-  const VdbImportResult imported = import_and_measure(grid, a.error, reference);
+  // The image error of what the engine draws against the ground truth, from every side.
+  progress.stage(1, "reference views");
+  const VdbImportReference reference = make_vdb_import_reference(grid, a.width, a.height, true);
+  progress.stage(2, "import and measure");
+  const FittedImport fit = import_to_target(grid, a.error, reference);
+  const VdbImportResult& imported = fit.best;
+  if (!fit.target_met)
+    std::fprintf(stderr, "pyro import-vdb: %s: --error %g not met: rmse_views_max %.4f at best (%llu particles, %d refinement(s)); %s\n",
+                 a.file.c_str(), a.error, imported.rmse_views_max,
+                 (unsigned long long)imported.report.particles, fit.refinements, fit.reason.c_str());
   const CloudImportReport& rep = imported.report;
   const double import_seconds = imported.import_seconds;
   const double rmse = imported.rmse;
@@ -90,11 +96,12 @@ void run_import(const ImportArgs& a) {
   if (!std::isfinite(rmse))
     throw UserError(a.file, "grid \"" + grid.name + "\"",
                     "a grid whose import can be measured, found a non-finite image error");
-  progress.update(5);
+  progress.update(3);
   progress.finish();
   nlohmann::json meta = {{"source", a.file},      {"grid", grid.name},
                          {"grid_index", grid.file_index}, {"error_target", a.error},
                          {"extinction", reference.medium.extinction}, {"rmse", rmse},
+                         {"rmse_views_max", imported.rmse_views_max}, {"target_met", fit.target_met},
                          {"active_voxels", rep.active_voxels}};
   ParticleFile pf;
   pf.metadata_json = meta.dump();
@@ -113,13 +120,26 @@ void run_import(const ImportArgs& a) {
                             {"grid", grid.name},
                             {"extinction", reference.medium.extinction},
                             {"tau_tolerance", imported.tau_tolerance},
+                            {"error_target", a.error},
+                            {"rmse_views_mean", imported.rmse_views_mean},
+                            {"rmse_views_max", imported.rmse_views_max},
+                            {"view_rmse", imported.view_rmse},
+                            {"rmse_inside", std::isfinite(imported.rmse_inside) ? nlohmann::json(imported.rmse_inside)
+                                                                               : nlohmann::json(nullptr)},
+                            {"views", reference.view_cameras.size()},
+                            {"target_met", fit.target_met},
+                            {"refinements", fit.refinements},
                             {"out", a.out}};
+  if (!fit.target_met) summary["reason"] = fit.reason;
   if (a.json)
     std::printf("%s\n", summary.dump().c_str());
   else
-    std::printf("%s: %llu active voxels -> %llu particles, image RMSE %.4f, %.3f s; wrote %s\n",
+    std::printf("%s: %llu active voxels -> %llu particles, image RMSE over %zu views mean %.4f, max %.4f "
+                "(target %g %s), %.3f s; wrote %s\n",
                 a.file.c_str(), (unsigned long long)rep.active_voxels,
-                (unsigned long long)rep.particles, rmse, read_seconds + import_seconds, a.out.c_str());
+                (unsigned long long)rep.particles, reference.view_cameras.size(), imported.rmse_views_mean,
+                imported.rmse_views_max, a.error, fit.target_met ? "met" : "not met",
+                read_seconds + import_seconds, a.out.c_str());
 }
 
 }  // namespace

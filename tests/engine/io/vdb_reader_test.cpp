@@ -170,6 +170,22 @@ TEST(ImportVdbCli, SmallVolumeImportsAndTheParticleFileReadsBack) {
   EXPECT_EQ(j["particles"].get<size_t>(), f.particles.size());
   EXPECT_GT(f.particles.size(), 0u);
   EXPECT_LE(j["rmse"].get<double>(), 0.03);
+  // The error from every side, and whether the target was met.
+  EXPECT_EQ(j["views"], 7);
+  EXPECT_EQ(j["view_rmse"].size(), 7u);
+  EXPECT_EQ(j["error_target"], 0.03);
+  EXPECT_EQ(j["target_met"].get<bool>(), j["rmse_views_max"].get<double>() <= 0.03);
+  EXPECT_GE(j["rmse_views_max"].get<double>(), j["rmse_views_mean"].get<double>());
+  // A target it cannot reach is said on stderr and in the JSON, and the file is still written.
+  const fs::path strict_out = dir / "strict.pyrop";
+  const auto strict = test::run_pyro({"import-vdb", path, "--out", strict_out.string(), "--json", "--width",
+                                      "48", "--height", "48", "--error", "0.00001"});
+  ASSERT_EQ(strict.exit_code, 0) << strict.err;
+  const auto s = nlohmann::json::parse(strict.out);
+  EXPECT_FALSE(s["target_met"].get<bool>());
+  EXPECT_FALSE(s["reason"].get<std::string>().empty());
+  EXPECT_NE(strict.err.find("not met"), std::string::npos) << strict.err;
+  EXPECT_TRUE(fs::exists(strict_out));
   // A truncated particle file is refused.
   fs::resize_file(out, fs::file_size(out) - 4);
   EXPECT_FALSE(expect_user_error([&] { read_particle_file(out.string()); }).empty());
