@@ -148,6 +148,9 @@ std::string tail_of(const std::string& text) {
     ::sigaction(sig, &sa, nullptr);
   }
   ::dup2(stderr_fd, STDERR_FILENO);
+  // The third-party library's own messages (OpenVDB logs warnings to stdout) are captured with
+  // its stderr: the program's stdout keeps only what the program prints (one JSON object).
+  ::dup2(stderr_fd, STDOUT_FILENO);
   struct rlimit cap;
   cap.rlim_cur = cap.rlim_max = current_address_space() + memory_bytes;
   ::setrlimit(RLIMIT_AS, &cap);

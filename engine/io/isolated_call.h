@@ -6,8 +6,8 @@
 // found 10 KB files that make it allocate and touch 17 GB, read bytes other than 0/1 into a
 // bool, and stop on signals; no check we can make before it reads catches all of that without
 // re-implementing its decoder. The child process is the boundary instead: it is forked, its
-// address space is capped (setrlimit RLIMIT_AS), it has a deadline, its stderr is captured,
-// and it hands back either a result (bytes) or the UserError it threw. Anything else — a
+// address space is capped (setrlimit RLIMIT_AS), it has a deadline, its stderr and stdout are
+// captured, and it hands back either a result (bytes) or the UserError it threw. Anything else — a
 // signal, a sanitizer report, an allocation over the cap, the deadline — becomes a UserError
 // naming the file, so the engine refuses the file (exit 2) and goes on.
 //

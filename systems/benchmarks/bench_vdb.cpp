@@ -48,18 +48,61 @@ std::string vdb_render_command(const VdbBenchOptions& a, const DenseGrid& grid,
          vec(glm::dvec3(cam.position)) + " -lookat " + vec(glm::dvec3(cam.target)) + " -up " +
          vec(glm::dvec3(cam.up)) + " -fov " + std::to_string(glm::degrees(fov_x)) + " -absorb " +
          vec(glm::dvec3(absorb)) + " -scatter " + vec(glm::dvec3(scatter)) + " -light " +
-         vec(to_light) + "," + vec(medium.light_color) + " -gain 0 -step 0.5 -shadowstep 1" +
+         vec(to_light) + "," + vec(medium.light_color) + " -gain 0 -step " + std::to_string(a.vdb_render_step) +
+         " -shadowstep " + std::to_string(a.vdb_render_shadow_step) +
          " -cpus 0 > /dev/null 2>&1";
 }
 
 // Runs `cmd`; its wall time in seconds, or a negative number when it failed.
-double time_vdb_render(const std::string& cmd, const std::filesystem::path& image) {
+double time_vdb_render(const std::string& cmd) {
   const auto t = std::chrono::steady_clock::now();
   const int status = std::system(cmd.c_str());
   const double seconds = seconds_since(t);
-  std::error_code ec;
-  std::filesystem::remove(image, ec);
   return status == 0 ? seconds : -1.0 - status;
+}
+
+// vdb_render's binary PPM (P6, 8 bits): its film's linear values, each truncated to 8 bits
+// (RayTracer.h's Film::convertToBitBuffer), so (byte + 0.5) / 255 undoes the truncation's
+// half-step bias. Rows top first, as our images. Empty when the file is not such a PPM of the
+// size asked for.
+RgbImage read_vdb_render_ppm(const std::filesystem::path& path, int width, int height) {
+  RgbImage img;
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return img;
+  int w = 0, h = 0, max = 0;
+  const bool header = std::fscanf(f, "P6 %d %d %d", &w, &h, &max) == 3 && std::fgetc(f) != EOF;
+  std::vector<unsigned char> bytes(size_t(3) * std::max(0, w) * std::max(0, h));
+  const bool ok = header && w == width && h == height && max == 255 &&
+                  std::fread(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  std::fclose(f);
+  if (!ok) return img;
+  img.width = w;
+  img.height = h;
+  img.rgb.resize(bytes.size());
+  for (size_t i = 0; i < bytes.size(); ++i) img.rgb[i] = (float(bytes[i]) + 0.5f) / 255.0f;
+  return img;
+}
+
+// The scene both renderers can model: vdb_render has no ambient light and a black background.
+VolumeMedium without_ambient(VolumeMedium m) {
+  m.ambient = glm::dvec3(0.0);
+  m.background = glm::dvec3(0.0);
+  return m;
+}
+
+// The splats and the CPU reference of the ambient-free medium against vdb_render's image.
+nlohmann::json score_against_vdb_render(const DenseGrid& grid, double tau_tolerance,
+                                        const CameraDescription& cam, const std::vector<float>& light,
+                                        const VolumeMedium& medium, const RgbImage& vdb) {
+  CloudImportOptions opt;
+  opt.medium = without_ambient(medium);
+  opt.tau_tolerance = tau_tolerance;
+  const std::vector<GaussianParticle> particles = import_cloud(grid, opt);
+  const RgbImage splat = render_particle_snapshot(particles, cam, vdb.width, vdb.height, glm::vec3(0.0f));
+  const RgbImage ref = render_volume_reference(grid, light, camera_frame(cam, vdb.width, vdb.height), opt.medium);
+  return {{"splats", image_rmse(splat, vdb)},
+          {"reference", image_rmse(ref, vdb)},
+          {"splats_vs_reference", image_rmse(splat, ref)}};
 }
 
 }  // namespace
@@ -95,12 +138,20 @@ nlohmann::json bench_vdb(const VdbBenchOptions& a) {
       std::filesystem::temp_directory_path() / ("pyro_bench_vdb_" + std::to_string(::getpid()) + ".ppm");
   const std::string cmd = vdb_render_command(a, grid, cam, opt.medium, image.string());
   progress.stage(4, "vdb_render");
-  const double vdb_render_seconds = time_vdb_render(cmd, image);
-  progress.update(5);
-  progress.finish();
+  const double vdb_render_seconds = time_vdb_render(cmd);
   const bool vdb_ok = vdb_render_seconds >= 0.0;
   if (!vdb_ok && a.on_note)
     a.on_note("vdb_render failed (status " + std::to_string(int(-1.0 - vdb_render_seconds)) + "): " + cmd);
+  nlohmann::json scores = nullptr;
+  if (vdb_ok) {
+    const RgbImage vdb = read_vdb_render_ppm(image, a.width, a.height);
+    if (vdb.rgb.empty() && a.on_note) a.on_note("vdb_render's image could not be read: " + image.string());
+    if (!vdb.rgb.empty()) scores = score_against_vdb_render(grid, opt.tau_tolerance, cam, light, opt.medium, vdb);
+  }
+  std::error_code ec;
+  std::filesystem::remove(image, ec);
+  progress.update(5);
+  progress.finish();
   return {{"file", a.file},
           {"width", a.width},
           {"height", a.height},
@@ -113,6 +164,9 @@ nlohmann::json bench_vdb(const VdbBenchOptions& a) {
           {"speedup_vs_vdb_render", vdb_ok ? vdb_render_seconds / timing.render_seconds : 0.0},
           {"speedup_vs_reference", reference_seconds / timing.render_seconds},
           {"rmse_vs_reference", image_rmse(ref, splat)},
+          // Without ambient light, black behind (what vdb_render models): {splats, reference,
+          // splats_vs_reference}; null when vdb_render failed.
+          {"rmse_vs_vdb_render", scores},
           {"vdb_render_command", cmd}};
 }
 

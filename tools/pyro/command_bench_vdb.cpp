@@ -31,6 +31,9 @@ void run_bench_vdb(VdbBenchOptions options, bool json) {
               "RMSE %.4f\n",
               splat, j["reference_ms"].get<double>(), vdb, vdb / splat,
               j["rmse_vs_reference"].get<double>());
+  if (const nlohmann::json& v = j["rmse_vs_vdb_render"]; !v.is_null())
+    std::printf("against vdb_render (no ambient, black behind): RMSE splats %.4f, CPU reference %.4f\n",
+                v["splats"].get<double>(), v["reference"].get<double>());
 }
 
 }  // namespace
@@ -50,6 +53,11 @@ void add_bench_vdb_command(CLI::App& bench) {
   cmd->add_option("--width", o.width, "Image width (default 512)")->check(CLI::Range(1, 8192));
   cmd->add_option("--height", o.height, "Image height (default 512)")->check(CLI::Range(1, 8192));
   cmd->add_option("--vdb-render", o.vdb_render, "The vdb_render program (default: from PATH)");
+  cmd->add_option("--vdb-step", o.vdb_render_step, "vdb_render's step along the view ray, in voxels (default 0.5)")
+      ->check(CLI::Range(0.01, 16.0));
+  cmd->add_option("--vdb-shadow-step", o.vdb_render_shadow_step,
+                  "vdb_render's step towards the light, in voxels (default 1)")
+      ->check(CLI::Range(0.01, 16.0));
   cmd->add_flag("--json", args->json, "Print a JSON summary");
   cmd->callback([args] { run_bench_vdb(args->options, args->json); });
 }
