@@ -1,4 +1,4 @@
-// pyro bench ecs | sort | scale | render | johnson | layers | table1 | soak | vdb | schedule ... [--json]
+// pyro bench ecs | sort | scale | import-cases | render | johnson | layers | table1 | soak | vdb | schedule ... [--json]
 //
 // Each subcommand parses its options, runs the benchmark (systems/benchmarks; bench ecs:
 // tools/pyro/bench_ecs.h) and prints its result.
@@ -11,6 +11,7 @@
 #include "tools/pyro/bench_ecs.h"
 #include "systems/benchmarks/bench_johnson.h"
 #include "systems/benchmarks/bench_layers.h"
+#include "systems/benchmarks/import_cases.h"
 #include "systems/benchmarks/bench_render.h"
 #include "systems/benchmarks/bench_scale.h"
 #include "systems/benchmarks/bench_soak.h"
@@ -75,6 +76,24 @@ void add_bench_scale(CLI::App* bench) {
   cmd->callback([scale] {
     scale->options.progress = terminal_progress();
     print(bench_scale(scale->options), scale->json);
+  });
+}
+
+void add_bench_import_cases(CLI::App* bench) {
+  struct CasesArgs { ImportCasesOptions options; bool json = false; };
+  auto cases = std::make_shared<CasesArgs>();
+  CLI::App* cmd = bench->add_subcommand(
+      "import-cases", "The import's hard cases (box, torus shell, sphere, noise cloud, sheet) at each "
+                      "error target, from every side");
+  cmd->add_option("--errors", cases->options.error_targets, "Error targets (default 0.03 0.01)")
+      ->check(CLI::Range(1e-6, 1.0))
+      ->expected(1, 16);
+  cmd->add_option("--width", cases->options.width, "Width of each view (default 128)")->check(CLI::Range(16, 4096));
+  cmd->add_option("--height", cases->options.height, "Height of each view (default 128)")->check(CLI::Range(16, 4096));
+  cmd->add_flag("--json", cases->json, "Print one JSON object");
+  cmd->callback([cases] {
+    cases->options.progress = terminal_progress();
+    print(bench_import_cases(cases->options), cases->json);
   });
 }
 
@@ -204,7 +223,7 @@ void add_bench_commands(CLI::App& app) {
   add_bench_vdb_command(*bench);
   add_bench_schedule_command(*bench);
 
-  for (const auto add : {add_bench_ecs, add_bench_sort, add_bench_scale, add_bench_render, add_bench_johnson, add_bench_layers,
+  for (const auto add : {add_bench_ecs, add_bench_sort, add_bench_scale, add_bench_import_cases, add_bench_render, add_bench_johnson, add_bench_layers,
                          add_bench_table1, add_bench_soak})
     add(bench);
 }
