@@ -17,10 +17,9 @@ Needs Debian's matplotlib (python3-matplotlib, tools/install-deps.sh): exit stat
 cannot be imported, 1 on any other failure.
 """
 import math
-import os
 import sys
 
-from plot_setup import fail, load_matplotlib, read_commented_csv, run_main, save_figure
+from plot_setup import fail, load_matplotlib, label_and_save, read_commented_csv, run_main
 
 plt = load_matplotlib()
 
@@ -93,14 +92,7 @@ def main():
     times = [r["time"] for r in rows if r["time"] > 0]
     if times and max(times) / min(times) > 30:
         ax.set_xscale("log")
-    ax.set_xlabel(meta.get("x", "time"))
-    ax.set_ylabel(meta.get("y", "error"))
-    ax.set_title(meta.get("title", os.path.basename(csv_path)), fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    save_figure(fig, png_path)
-
+    label_and_save(fig, ax, meta, csv_path, png_path, "time", "error", 10)
 
 if __name__ == "__main__":
     run_main(main)

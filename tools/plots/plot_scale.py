@@ -11,10 +11,9 @@ The PNG is written to a temporary name and renamed when complete. Exit status 3 
 matplotlib, 1 on any other failure.
 """
 import math
-import os
 import sys
 
-from plot_setup import fail, load_matplotlib, read_commented_csv, run_main, save_figure
+from plot_setup import fail, load_matplotlib, label_and_save, read_commented_csv, run_main
 
 plt = load_matplotlib()
 
@@ -64,14 +63,7 @@ def main():
                     label="%s fit, slope %s" % (name, meta.get(slope_key, "%.3f" % slope)[:5]))
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel(meta.get("x", "particles"))
-    ax.set_ylabel(meta.get("y", "ms per frame"))
-    ax.set_title(meta.get("title", os.path.basename(csv_path)), fontsize=9)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    save_figure(fig, png_path)
-
+    label_and_save(fig, ax, meta, csv_path, png_path, "particles", "ms per frame", 9)
 
 if __name__ == "__main__":
     run_main(main)

@@ -50,6 +50,18 @@ def read_commented_csv(path, columns):
     return meta, rows
 
 
+def label_and_save(fig, ax, meta, csv_path, png_path, x_label, y_label, title_size):
+    """Axis labels and title from the CSV's comment lines (these defaults otherwise), a grid, the
+    legend, then the figure saved atomically."""
+    ax.set_xlabel(meta.get("x", x_label))
+    ax.set_ylabel(meta.get("y", y_label))
+    ax.set_title(meta.get("title", os.path.basename(csv_path)), fontsize=title_size)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    save_figure(fig, png_path)
+
+
 def save_figure(fig, png_path):
     """Writes the figure to a temporary name, then renames it: no half-written PNG is left."""
     tmp = png_path + ".tmp-%d.png" % os.getpid()
