@@ -8,10 +8,16 @@
 
 namespace pyro {
 
-uint64_t particle_bytes_estimate(int views) {
-  const uint64_t pool = 17 * sizeof(float) + sizeof(uint8_t) + sizeof(uint32_t);
-  const uint64_t per_view = 2 * 3 * 4 * sizeof(float);
-  return pool + per_view * static_cast<uint64_t>(std::max(views, 1));
+uint64_t particle_bytes_estimate(int views, ParticleShape shape) {
+  const uint64_t pool = 16 * sizeof(float) + sizeof(uint8_t) + sizeof(uint32_t);
+  const uint64_t sort = 16 + 2 * sizeof(uint64_t) + sizeof(uint32_t);
+  constexpr uint64_t kRingSlots = 2, vec4 = 4 * sizeof(float);
+  const bool splats = shape == ParticleShape::gaussian;
+  const uint64_t once = pool + sort + (splats ? 0 : 3 * vec4);
+  // The ring's slots grow by half again: 3/2 of each slot's bytes.
+  const uint64_t gpu = kRingSlots * (splats ? 2 * vec4 + sizeof(uint32_t) : 4 * vec4) * 3 / 2;
+  const uint64_t per_view = (splats ? sizeof(uint32_t) : 3 * vec4) + gpu;
+  return once + per_view * static_cast<uint64_t>(std::max(views, 1));
 }
 
 SceneCost estimate_scene_cost(const SceneDescription& scene, int width, int height, int views,
@@ -21,7 +27,7 @@ SceneCost estimate_scene_cost(const SceneDescription& scene, int width, int heig
   for (const CloudDescription& c : scene.clouds) cost.particles += c.count;
   for (const EmitterDescription& e : scene.emitters) cost.particles += e.emitter.budget;
   const uint64_t pixels = static_cast<uint64_t>(width) * static_cast<uint64_t>(height);
-  cost.memory_bytes = cost.particles * particle_bytes_estimate(views) +
+  cost.memory_bytes = cost.particles * particle_bytes_estimate(views, scene.render.particles) +
                       pixels * static_cast<uint64_t>(std::max(views, 1)) * kTargetBytesPerPixelPerView;
   cost.texture_size = std::max({width, height, output_width});
   return cost;

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string>
 
+#include "components/render_modes.h"
+
 namespace pyro {
 
 struct SceneDescription;
@@ -18,10 +20,13 @@ struct SceneBudget {
   int texture_size = 0;                   // largest target side; 0: the driver's maximum
 };
 
-// Estimated bytes per particle: the structure-of-arrays pool (17 floats, a byte, a 32-bit id:
-// engine/particles/particle_pool.h) plus, per view, three vec4s in the sorted draw list and
-// the same again in the GPU instance buffer.
-uint64_t particle_bytes_estimate(int views);
+// Estimated bytes per particle: the structure-of-arrays pool (16 floats, a byte, a 32-bit id:
+// engine/particles/particle_pool.h), the sort's working space (a 16-byte key, its 8-byte pair
+// and swap pair, a 32-bit index), and per view the draw list and the GPU's copy in a ring of two
+// slots that grow by half again (systems/billboard_render): for Gaussian splats an index in the
+// list and 32 bytes of particle and the index on the GPU; for the other shapes the particles
+// packed once (48 bytes) and per view three vec4s in the list and four on the GPU.
+uint64_t particle_bytes_estimate(int views, ParticleShape shape = ParticleShape::gaussian);
 // Estimated render-target bytes per pixel and view: four RGBA16F colour + 32-bit depth targets
 // (opaque scene, particle layer, media layers, composition).
 inline constexpr uint64_t kTargetBytesPerPixelPerView = 4 * (8 + 4);

@@ -2,6 +2,8 @@
 // scene over any limit is refused with its numbers and the place of the limit.
 #include <gtest/gtest.h>
 
+#include "engine/particles/particle_pool.h"
+
 #include <string>
 
 #include "engine/core/user_error.h"
@@ -66,9 +68,12 @@ TEST(SceneBudget, CostCountsCloudsEmittersAndVolumes) {
   EXPECT_EQ(bigger.memory_bytes - mono.memory_bytes, 100u * 50u * kTargetBytesPerPixelPerView);
   const SceneCost more = estimate_scene_cost(s, 100, 50, 1, 100, 8);
   EXPECT_EQ(more.memory_bytes - mono.memory_bytes, particle_bytes_estimate(1));
-  // The pool alone holds 17 floats, a medium byte and a 32-bit id per particle.
-  EXPECT_GE(particle_bytes_estimate(1), 17u * 4u + 1u + 4u);
+  // The pool alone holds 16 floats, a medium byte and a 32-bit id per particle.
+  EXPECT_EQ(ParticlePool::bytes_per_slot(), 16u * 4u + 1u + 4u);
+  EXPECT_GE(particle_bytes_estimate(1), ParticlePool::bytes_per_slot());
   EXPECT_GT(particle_bytes_estimate(2), particle_bytes_estimate(1));
+  // Billboards other than splats keep the particles gathered per view: more bytes.
+  EXPECT_GT(particle_bytes_estimate(1, ParticleShape::spherical), particle_bytes_estimate(1));
   EXPECT_GT(estimate_scene_cost(s, 100, 50, 2, 200, 7).memory_bytes, mono.memory_bytes);
 }
 
