@@ -56,6 +56,21 @@ void add_bench_sort(CLI::App* bench) {
   cmd->callback([sort] { print(bench_sort(sort->count, sort->repeats), sort->json); });
 }
 
+// One line per count, then the slopes.
+void print_scale(const nlohmann::json& r) {
+  std::printf("%s at %dx%d, %d frames per count\n", r["scene"].get<std::string>().c_str(),
+              r["width"].get<int>(), r["height"].get<int>(), r["frames"].get<int>());
+  std::printf("%12s %12s %12s %14s %18s\n", "particles", "ms/frame", "cpu ms", "sort/std::sort",
+              "instances/memcpy");
+  for (const nlohmann::json& c : r["counts"])
+    std::printf("%12llu %12.1f %12.2f %14.3f %18.2f\n", c["particles"].get<unsigned long long>(),
+                c["ms_per_frame"].get<double>(), c["cpu_ms_per_frame"].get<double>(),
+                c["sort_over_std_sort"].get<double>(), c["instances_over_memcpy"].get<double>());
+  for (const char* slope : {"cpu_slope", "frame_slope"})
+    std::printf("%s (log-log, 1e5 to 2e6): %s\n", slope,
+                r[slope].is_null() ? "none (fewer than two counts there)" : r[slope].dump().c_str());
+}
+
 void add_bench_scale(CLI::App* bench) {
   struct ScaleArgs { ScaleBenchOptions options; bool json = false; };
   auto scale = std::make_shared<ScaleArgs>();
@@ -75,7 +90,11 @@ void add_bench_scale(CLI::App* bench) {
   cmd->add_flag("--json", scale->json, "Print one JSON object");
   cmd->callback([scale] {
     scale->options.progress = terminal_progress();
-    print(bench_scale(scale->options), scale->json);
+    const nlohmann::json r = bench_scale(scale->options);
+    if (scale->json)
+      std::printf("%s\n", r.dump().c_str());
+    else
+      print_scale(r);
   });
 }
 
