@@ -6,8 +6,8 @@
 //  - indexed: `order`, the draw order as indices into the particle pools themselves
 //    (EyeDrawLists::pools, one after another), whose attribute arrays the Gaussian splats' vertex
 //    shader reads itself, so nothing is gathered or packed on the CPU.
+#include <algorithm>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -45,14 +45,15 @@ struct EyeDrawLists {
 inline DrawList gathered_draw_list(const EyeDrawLists& lists, size_t eye) {
   const DrawList& list = lists.eyes.at(eye);
   if (!list.indexed()) return list;
-  std::vector<std::pair<const ParticlePool*, size_t>> particles;  // (pool, index) by global index
-  for (const ParticlePool* pool : lists.pools)
-    for (size_t i = 0; i < pool->size(); ++i) particles.emplace_back(pool, i);
+  std::vector<size_t> ends;  // where each pool's particles end among all of them
+  for (const ParticlePool* pool : lists.pools) ends.push_back((ends.empty() ? 0 : ends.back()) + pool->size());
   DrawList out;
   for (const uint32_t k : list.order) {
-    const auto& [p, i] = particles.at(k);
-    out.center_radius.push_back({p->px[i], p->py[i], p->pz[i], p->radius[i]});
-    out.color_density.push_back({p->r[i], p->g[i], p->b[i], p->density[i]});
+    const size_t j = size_t(std::upper_bound(ends.begin(), ends.end(), size_t(k)) - ends.begin());
+    const ParticlePool& p = *lists.pools.at(j);
+    const size_t i = k - (j == 0 ? 0 : ends[j - 1]);
+    out.center_radius.push_back({p.px.at(i), p.py[i], p.pz[i], p.radius[i]});
+    out.color_density.push_back({p.r[i], p.g[i], p.b[i], p.density[i]});
   }
   return out;
 }

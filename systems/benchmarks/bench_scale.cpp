@@ -149,7 +149,7 @@ nlohmann::json count_report(const ScaleRun& run, int frames) {
             {"submission", submission}}},
           {"bytes_per_particle",
            {{"pools", ParticlePool::bytes_per_slot()},
-            {"sort_keys", sizeof(SortKey) + 2 * sizeof(uint64_t) + sizeof(uint32_t)},
+            {"sort_keys", kSortBytesPerKey},
             {"draw_list", 2 * sizeof(glm::vec4)},
             {"instances", double(instance_bytes) * per}}},
           {"sort_ms", sort},

@@ -72,8 +72,7 @@ nlohmann::json bench_sort(std::size_t count, int repeats) {
           {"parallel_sort_ms", parallel},
           {"radix_over_std_sort", standard > 0.0 ? radix / standard : 0.0},
           {"radix_over_parallel_sort", parallel > 0.0 ? radix / parallel : 0.0},
-          // The key, its 8-byte (depth bits, index) pair, that pair's swap buffer, the order.
-          {"bytes_per_key", sizeof(SortKey) + 2 * sizeof(uint64_t) + sizeof(uint32_t)},
+          {"bytes_per_key", kSortBytesPerKey},
           {"same_order", same(by_radix, by_std) && same(by_parallel, by_std)}};
 }
 

@@ -92,7 +92,7 @@ void add_particles(nlohmann::json& report, ecs::World& world) {
     sources.push_back({{"name", s.name}, {"live", s.live}, {"capacity", s.capacity}});
   nlohmann::json particles = {{"live", census.live}, {"capacity", census.capacity}, {"sources", sources}};
   if (!census.by_medium.empty()) particles["by_medium"] = census.by_medium;
-  const size_t slot_bytes = bytes_per_particle_slot();
+  const size_t slot_bytes = ParticlePool::bytes_per_slot();
   const uint64_t pool_bytes = census.capacity * slot_bytes;
   report["particles"] = particles;
   report["memory"] = {
@@ -103,7 +103,6 @@ void add_particles(nlohmann::json& report, ecs::World& world) {
 
 }  // namespace
 
-size_t bytes_per_particle_slot() { return ParticlePool::bytes_per_slot(); }
 
 nlohmann::json profile_report(SceneRuntime& runtime, uint64_t first_frame) {
   GroupedSpans g = group_spans(runtime.trace(), first_frame);

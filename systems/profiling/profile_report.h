@@ -20,7 +20,4 @@ namespace pyro {
 // pool_bytes, pool_bytes_per_live_particle}.
 nlohmann::json profile_report(SceneRuntime& runtime, uint64_t first_frame);
 
-// Bytes one particle slot takes in a ParticlePool: the sum of its attribute arrays' elements.
-size_t bytes_per_particle_slot();
-
 }  // namespace pyro

@@ -4,6 +4,7 @@
 // depths by (set, id). The depth's float bits are mapped to an unsigned integer that orders like
 // the float, descending (-0 taken as +0, which compares equal to it), so the order is exactly
 // back_to_front's, ties and all: the result equals std::sort's with that comparator.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +20,10 @@ struct RadixScratch {
   std::vector<uint64_t> pairs, swap;  // (descending depth bits << 32 | key index)
   std::vector<uint32_t> order;        // the result of radix_order_back_to_front
 };
+
+// Bytes the draw order's sort holds per key: the key, its pair and the pair's swap buffer, the
+// order's index.
+inline constexpr std::size_t kSortBytesPerKey = sizeof(SortKey) + 2 * sizeof(uint64_t) + sizeof(uint32_t);
 
 // The indices of `keys` in back_to_front order, into scratch.order: three passes of 11, 11 and
 // 10 bits over 8-byte pairs (a pass whose digit is the same for every key is skipped), then the

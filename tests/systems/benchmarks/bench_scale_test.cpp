@@ -51,8 +51,6 @@ TEST(BenchScale, ReportsEachCountWithItsBaselines) {
     EXPECT_LT(cpu, frame);
     EXPECT_GT(c["std_sort_ms"].get<double>(), 0.0);
     EXPECT_GT(c["memcpy_instances_ms"].get<double>(), 0.0);
-    EXPECT_DOUBLE_EQ(c["sort_over_std_sort"].get<double>(),
-                     c["sort_ms"].get<double>() / c["std_sort_ms"].get<double>());
     // The splats upload two vec4s per particle and a 32-bit index in the draw order.
     EXPECT_DOUBLE_EQ(c["bytes_per_particle"]["instances"].get<double>(), 36.0);
     EXPECT_TRUE(c["system_ms"].contains("sorting"));
