@@ -13,6 +13,7 @@
 #include "engine/particles/particle_pool.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/scene/scene_loader.h"
+#include "systems/scene_runtime/particle_counts.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "systems/sorting/depth_sort.h"
 
@@ -62,6 +63,7 @@ bool cpu_phase(const std::string& phase) {
 // The per-frame means of one count's run.
 struct ScaleRun {
   uint64_t particles = 0;
+  uint64_t drawn = 0;  // summed over the timed frames: the particles the view's list kept
   double frame_ms = 0.0;
   std::map<std::string, double> system_ms;
   std::map<std::string, std::string> phase;
@@ -77,6 +79,7 @@ void add_frame(SceneRuntime& runtime, double frame_ms, ScaleRun& run) {
     run.phase[st.name] = phase_name(st.phase);
   }
   ecs::World& world = runtime.world();
+  run.drawn += drawn_particles(world);
   if (const SortScratch* s = world.try_resource<const SortScratch>()) {
     run.sort.keys_ms += s->times.keys_ms;
     run.sort.pack_ms += s->times.pack_ms;
@@ -138,6 +141,7 @@ nlohmann::json count_report(const ScaleRun& run, int frames) {
   const double baseline = memcpy_ms(instance_bytes);
   const double per = run.particles > 0 ? 1.0 / double(run.particles) : 0.0;
   return {{"particles", run.particles},
+          {"drawn_particles", double(run.drawn) / n},
           {"ms_per_frame", frame},
           {"cpu_ms_per_frame", cpu},
           {"driver_ms_per_frame", std::max(0.0, frame - cpu)},

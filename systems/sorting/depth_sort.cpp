@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <glm/geometric.hpp>
 
 #include "components/particle_set.h"
@@ -32,27 +33,62 @@ std::vector<std::size_t> set_offsets(const SortScratch& s) {
   return offsets;
 }
 
-// Every set's keys, set after set: set k's particles from offsets[k] on. Each key depends on its
-// particle alone, so any split of the work gives the same keys.
-void make_keys(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind, SortScratch& s) {
+// A particle's bounding sphere for culling, in radii: the Gaussian splat's quad reaches sqrt(2)
+// radii from its centre, a spherical billboard's sphere one; twice the radius holds both.
+constexpr float kCullRadii = 2.0f;
+
+// The keys of every set's particles that can reach a view (sphere_in_any), set after set, each
+// set's in particle order: s.keys. Each chunk of kParticlesPerTask particles writes its own at
+// its chunk's place, then the chunks close up in order, so any split of the work gives the
+// same keys. Returns whether every particle was kept (then key k is particle k of the sets
+// taken one after another).
+bool make_keys(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
+               std::span<const ViewFrustum> views, SortScratch& s) {
   const std::vector<std::size_t> offsets = set_offsets(s);
   s.keys.resize(offsets.back());
+  size_t kept = 0;
   for (size_t set = 0; set < s.sets.size(); ++set) {
     const ParticlePool& p = *s.sets[set].second;
-    SortKey* out = s.keys.data() + offsets[set];
-    tbb::parallel_for(
-        tbb::blocked_range<size_t>(0, p.size(), kParticlesPerTask),
-        [&](const tbb::blocked_range<size_t>& r) {
-          for (size_t i = r.begin(); i < r.end(); ++i) {
-            const float dx = p.px[i] - eye.x, dy = p.py[i] - eye.y, dz = p.pz[i] - eye.z;
-            // Squared distance orders like distance and needs no square root.
-            const float depth = kind == SortKeyKind::view_depth
-                                    ? dx * forward.x + dy * forward.y + dz * forward.z
-                                    : dx * dx + dy * dy + dz * dz;
-            out[i] = {depth, static_cast<uint32_t>(set), p.id[i], static_cast<uint32_t>(i)};
-          }
-        });
+    SortKey* out = s.keys.data() + kept;  // kept <= offsets[set]: earlier sets' keys stay put
+    const size_t chunks = (p.size() + kParticlesPerTask - 1) / kParticlesPerTask;
+    s.chunk_kept.assign(chunks, 0);
+    tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+      const size_t begin = c * kParticlesPerTask, end = std::min(p.size(), begin + kParticlesPerTask);
+      size_t n = 0;
+      for (size_t i = begin; i < end; ++i) {
+        if (!sphere_in_any(views, {p.px[i], p.py[i], p.pz[i]}, kCullRadii * p.radius[i])) continue;
+        const float dx = p.px[i] - eye.x, dy = p.py[i] - eye.y, dz = p.pz[i] - eye.z;
+        // Squared distance orders like distance and needs no square root.
+        const float depth = kind == SortKeyKind::view_depth
+                                ? dx * forward.x + dy * forward.y + dz * forward.z
+                                : dx * dx + dy * dy + dz * dz;
+        out[begin + n++] = {depth, static_cast<uint32_t>(set), p.id[i], static_cast<uint32_t>(i)};
+      }
+      s.chunk_kept[c] = n;
+    });
+    size_t at = 0;  // each chunk moves towards the front, so moving them in order is safe
+    for (size_t c = 0; c < chunks; ++c) {
+      if (at != c * kParticlesPerTask && s.chunk_kept[c] > 0)
+        std::memmove(out + at, out + c * kParticlesPerTask, s.chunk_kept[c] * sizeof(SortKey));
+      at += s.chunk_kept[c];
+    }
+    kept += at;
   }
+  s.keys.resize(kept);
+  return kept == offsets.back();
+}
+
+// After culling, the order indexes the kept keys: turn it into the particles' places among all
+// the sets' (what the indexed list and the packed records are laid out by).
+void order_to_particles(const SortScratch& s, std::vector<uint32_t>& order) {
+  const std::vector<std::size_t> offsets = set_offsets(s);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), kParticlesPerTask),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      for (size_t k = r.begin(); k < r.end(); ++k) {
+                        const SortKey& key = s.keys[order[k]];
+                        order[k] = static_cast<uint32_t>(offsets[key.set] + key.particle);
+                      }
+                    });
 }
 
 // Each particle's instance data packed in key order (s.packed, `stride` vec4s a particle), so
@@ -117,15 +153,17 @@ void collect_particle_sets(const ecs::World& world, SortScratch& s) {
 }
 
 void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
-                     SortKeyKind kind, SortScratch& s, DrawList& list, bool with_medium) {
+                     SortKeyKind kind, SortScratch& s, DrawList& list, bool with_medium,
+                     std::span<const ViewFrustum> views) {
   collect_particle_sets(world, s);
   auto start = std::chrono::steady_clock::now();
-  make_keys(eye, forward, kind, s);
+  const bool all_kept = make_keys(eye, forward, kind, views, s);
   s.times.keys_ms += ms_since(start);
   const size_t stride = with_medium ? 3 : 2;
   pack_particles(stride, s, s.packed);
   s.times.pack_ms += ms_since(start);
   radix_order_back_to_front(s.keys, s.radix);
+  if (!all_kept) order_to_particles(s, s.radix.order);
   s.times.order_ms += ms_since(start);
   list.order.clear();
   list.center_radius.resize(s.keys.size());
@@ -138,11 +176,12 @@ void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::v
 }
 
 void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
-                     SortScratch& s, DrawList& list) {
+                     SortScratch& s, DrawList& list, std::span<const ViewFrustum> views) {
   auto start = std::chrono::steady_clock::now();
-  make_keys(eye, forward, kind, s);
+  const bool all_kept = make_keys(eye, forward, kind, views, s);
   s.times.keys_ms += ms_since(start);
   radix_order_back_to_front(s.keys, s.radix);
+  if (!all_kept) order_to_particles(s, s.radix.order);
   list.center_radius.clear();
   list.color_density.clear();
   list.medium.clear();
@@ -164,17 +203,23 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
   const bool shared = rs.alignment == BillboardAlignment::viewplane;
   const SortKeyKind kind = shared ? SortKeyKind::view_depth : SortKeyKind::eye_distance;
   const size_t orders = shared ? 1 : eyes.size();
+  std::vector<ViewFrustum> frusta;
+  for (const CameraFrame& e : eyes) frusta.push_back(view_frustum(e));
+  // The views order v's list is drawn into: every eye when they share it, else eye v.
+  auto views_of = [&](size_t v) {
+    return shared ? std::span<const ViewFrustum>(frusta) : std::span<const ViewFrustum>(&frusta[v], 1);
+  };
   if (rs.particles == ParticleShape::gaussian) {
     collect_particle_sets(world, scratch);
     lists.pools.clear();
     for (const auto& set : scratch.sets) lists.pools.push_back(set.second);
     for (size_t v = 0; v < orders; ++v)
-      order_draw_list(eyes[v].eye, eyes[v].forward, kind, scratch, lists.eyes[v]);
+      order_draw_list(eyes[v].eye, eyes[v].forward, kind, scratch, lists.eyes[v], views_of(v));
   } else {
     lists.pools.clear();
     for (size_t v = 0; v < orders; ++v)
       build_draw_list(world, eyes[v].eye, eyes[v].forward, kind, scratch, lists.eyes[v],
-                      rs.media_layers());
+                      rs.media_layers(), views_of(v));
   }
   for (size_t v = orders; v < eyes.size(); ++v) lists.eyes[v] = lists.eyes[0];
 }

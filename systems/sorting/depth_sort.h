@@ -8,6 +8,7 @@
 // particle's id, so equal keys never swap between frames or runs. It is found by a radix sort
 // of the depths (radix_sort.h) into the order of the keys' indices; the keys are not moved.
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
 #include "engine/math/camera_math.h"
+#include "engine/math/view_frustum.h"
 #include "systems/sorting/radix_sort.h"
 #include "systems/sorting/sort_key.h"
 
@@ -45,24 +47,29 @@ struct SortScratch {
   std::vector<std::pair<uint32_t, const ParticlePool*>> sets;  // (entity index, pool)
   // The gathered form's particles packed in key order, two or three vec4s each (depth_sort.cpp).
   std::vector<glm::vec4> packed;
+  std::vector<size_t> chunk_kept;  // culling: the keys each chunk of a set kept
   SortStageTimes times;
 };
 
 // Fills `list` in the gathered form from every ParticleSet in the world, sorted for an eye at
-// `eye` looking along `forward`. `with_medium`: also list.medium, which only the explosion media layers read (left
-// empty otherwise, a third less to gather).
+// `eye` looking along `forward`. `with_medium`: also list.medium, which only the explosion media
+// layers read (left empty otherwise, a third less to gather). Culling: a particle whose bounding
+// sphere (two radii) lies outside every frustum of `views` is left out, before the sort; an empty
+// `views` keeps every particle. Leaving out a particle no view can show changes no image.
 void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
                      SortKeyKind kind, SortScratch& scratch, DrawList& list,
-                     bool with_medium = true);
+                     bool with_medium = true, std::span<const ViewFrustum> views = {});
 
 // The indexed form (components/draw_list.h): collect_particle_sets once (the pools in entity
 // order, into scratch.sets), then for each eye the order of those pools' particles, one pool after
 // another, into list.order. The order is the same as build_draw_list's.
 void collect_particle_sets(const ecs::World& world, SortScratch& scratch);
 void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
-                     SortScratch& scratch, DrawList& list);
+                     SortScratch& scratch, DrawList& list, std::span<const ViewFrustum> views = {});
 
 // The `sorting` system: Gaussian splats get indexed lists, the other billboards gathered ones.
+// Each list leaves out the particles its views cannot show (a shared list: those outside every
+// eye's frustum).
 // It reads View (written by stereo_camera in the camera phase), never the
 // camera itself.
 ecs::SystemDesc sorting_system();

@@ -12,6 +12,7 @@
 #include "components/draw_list.h"
 #include "components/particle_set.h"
 #include "components/render_settings.h"
+#include "components/stereo_camera.h"
 #include "components/view.h"
 #include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
@@ -47,8 +48,8 @@ TEST(DepthSort, FarthestFirstAlongTheViewAxis) {
   const ecs::Entity e = w.create();
   ParticleSet& s = w.emplace<ParticleSet>(e, ParticleSet{ParticlePool(100)});
   std::mt19937 rng(3);
-  std::uniform_real_distribution<float> u(-10, 10);
-  for (int i = 0; i < 100; ++i) s.pool.spawn(at(u(rng), u(rng), u(rng) - 20, static_cast<float>(i)));
+  std::uniform_real_distribution<float> u(-3, 3), depth(10, 30);  // all inside the 45-degree view
+  for (int i = 0; i < 100; ++i) s.pool.spawn(at(u(rng), u(rng), -depth(rng), static_cast<float>(i)));
   run_sort(w);
   const DrawList list = gathered_draw_list(w.resource<EyeDrawLists>(), 0);
   ASSERT_EQ(list.size(), 100u);
@@ -60,13 +61,15 @@ TEST(DepthSort, DepthIsAlongTheViewAxisNotDistance) {
   // Two particles at the same view depth but different distances keep the tie-break order;
   // a particle off-axis but nearer in view depth comes later.
   ecs::World w;
-  w.emplace<Camera>(w.create(), Camera{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45, 0.1f, 100, 0});
+  // A 120-degree view, so that the off-axis particle is still in it.
+  w.emplace<Camera>(w.create(), Camera{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 120, 0.1f, 100, 0});
   ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(3)});
   s.pool.spawn(at(8, 0, -10, 0));   // distance 12.8, depth 10
   s.pool.spawn(at(0, 0, -10, 1));   // distance 10, depth 10
-  s.pool.spawn(at(30, 0, -9, 2));   // distance 31, depth 9: nearest in depth
+  s.pool.spawn(at(10, 0, -9, 2));   // distance 13.5, depth 9: nearest in depth
   run_sort(w);
   const DrawList list = gathered_draw_list(w.resource<EyeDrawLists>(), 0);
+  ASSERT_EQ(list.size(), 3u);
   EXPECT_EQ(list.color_density[0].w, 0.0f);  // equal depth: lower id first
   EXPECT_EQ(list.color_density[1].w, 1.0f);
   EXPECT_EQ(list.color_density[2].w, 2.0f);
@@ -180,9 +183,88 @@ TEST(DepthSort, IndexedListsHoldTheGatheredOrderForEveryShapeAndAlignment) {
       ASSERT_TRUE(indexed.eyes[eye].indexed());
       ASSERT_FALSE(gathered.eyes[eye].indexed());
       const DrawList from_records = gathered_draw_list(indexed, eye);
-      ASSERT_EQ(from_records.size(), 1200u);
+      // Some particles lie outside the views and are left out, alike in both forms.
+      ASSERT_EQ(from_records.size(), gathered.eyes[eye].size());
+      EXPECT_GT(from_records.size(), 600u);
+      EXPECT_LT(from_records.size(), 1200u);
       EXPECT_TRUE(from_records.center_radius == gathered.eyes[eye].center_radius) << eye;
       EXPECT_TRUE(from_records.color_density == gathered.eyes[eye].color_density) << eye;
+    }
+  }
+}
+
+// Culling: particles whose bounding sphere (two radii) lies outside the view are left out
+// before the sort; those whose sphere reaches into it stay, in their order.
+TEST(DepthSort, LeavesOutWhatNoViewCanShow) {
+  ecs::World w;
+  // 90 degrees, square: the view holds |x| <= depth and |y| <= depth.
+  Camera camera{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 90, 0.1f, 100, 0};
+  w.emplace<Camera>(w.create(), camera);
+  RenderSettings settings;
+  settings.width = settings.height = 64;
+  settings.particles = ParticleShape::gaussian;
+  w.set_resource<RenderSettings>(settings);
+  ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(8)});
+  s.pool.spawn(at(0, 0, -10, 0));       // in front: kept
+  s.pool.spawn(at(0, 0, 10, 1));        // behind the eye: out
+  s.pool.spawn(at(12, 0, -10, 2));      // 2 / sqrt(2) = 1.41 right of the view's side: out
+  s.pool.spawn(at(10.6f, 0, -10, 3));   // 0.42 outside, within two radii (1.0): kept
+  s.pool.spawn(at(0, 0, -102, 4));      // beyond the far plane by 2 (> 1.0): out
+  s.pool.spawn(at(0, 0, -100.5f, 5));   // beyond it by 0.5: kept
+  s.pool.spawn(at(0, 0, 0.8f, 6));      // behind the eye by 0.8, within 1.0: kept
+  s.pool.spawn(at(0, -30, -10, 7));     // below: out
+  run_sort(w);
+  const DrawList list = gathered_draw_list(w.resource<EyeDrawLists>(), 0);
+  std::vector<float> kept;
+  for (const glm::vec4& c : list.color_density) kept.push_back(c.w);
+  EXPECT_EQ(kept, (std::vector<float>{5, 0, 3, 6}));  // far to near
+  // The gathered form (spherical billboards) keeps the same ones.
+  settings.particles = ParticleShape::spherical;
+  w.set_resource<RenderSettings>(settings);
+  run_sort(w);
+  std::vector<float> gathered;
+  for (const glm::vec4& c : w.resource<EyeDrawLists>().eyes.at(0).color_density) gathered.push_back(c.w);
+  EXPECT_EQ(gathered, kept);
+}
+
+TEST(DepthSort, AStereoPairSharesTheParticlesEitherEyeSees) {
+  // Facing the viewplane the eyes share one list: a particle only one eye sees stays in it.
+  // Facing the viewpoint each eye has its own list and keeps only what it sees.
+  ecs::World w;
+  const ecs::Entity cam = w.create();
+  w.emplace<Camera>(cam, Camera{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 40, 0.1f, 100, 0});
+  w.emplace<StereoCamera>(cam, StereoCamera{{8.0f, 10.0f}});  // eyes at x = -4 and +4
+  ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(3)});
+  s.pool.spawn(at(0, 0, -10, 0));
+  for (const BillboardAlignment alignment : {BillboardAlignment::viewplane, BillboardAlignment::viewpoint}) {
+    RenderSettings settings;
+    settings.width = 200;
+    settings.height = 100;
+    settings.alignment = alignment;
+    settings.stereo_mode = StereoMode::side_by_side;
+    settings.particles = ParticleShape::gaussian;
+    w.set_resource<RenderSettings>(settings);
+    run_sort(w);
+    const View& view = w.resource<View>();
+    ASSERT_EQ(view.eyes.size(), 2u);
+    // A particle the right eye sees and the left does not: found from the frusta themselves.
+    const ViewFrustum left = view_frustum(view.eyes[0]), right = view_frustum(view.eyes[1]);
+    glm::vec3 only_right{-40, 0, -30};  // beyond the zero-parallax plane, where the frusta part
+    for (float x = -40; x < 40 && !(sphere_outside(left, only_right, 1.0f) && !sphere_outside(right, only_right, 1.0f)); x += 0.05f)
+      only_right.x = x;
+    ASSERT_TRUE(sphere_outside(left, only_right, 1.0f));
+    ASSERT_FALSE(sphere_outside(right, only_right, 1.0f));
+    if (s.pool.size() == 1) s.pool.spawn(at(only_right.x, only_right.y, only_right.z, 1));
+    s.pool.px[1] = only_right.x;
+    run_sort(w);
+    const EyeDrawLists& lists = w.resource<EyeDrawLists>();
+    const size_t left_count = lists.eyes.at(0).size(), right_count = lists.eyes.at(1).size();
+    if (alignment == BillboardAlignment::viewplane) {
+      EXPECT_EQ(left_count, 2u);
+      EXPECT_EQ(right_count, 2u);
+    } else {
+      EXPECT_EQ(left_count, 1u);
+      EXPECT_EQ(right_count, 2u);
     }
   }
 }
