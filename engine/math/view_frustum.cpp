@@ -27,4 +27,23 @@ ViewFrustum view_frustum(const CameraFrame& frame) {
   return f;
 }
 
+size_t mark_spheres_in_any(std::span<const ViewFrustum> views, const float* __restrict x,
+                           const float* __restrict y, const float* __restrict z,
+                           const float* __restrict r, float radii, size_t n,
+                           uint8_t* __restrict seen) {
+  for (size_t i = 0; i < n; ++i) seen[i] = views.empty();
+  for (const ViewFrustum& view : views) {
+    const std::array<glm::vec4, 6> p = view.planes;
+    for (size_t i = 0; i < n; ++i) {
+      const float reach = -radii * r[i];
+      bool inside = true;
+      for (const glm::vec4& q : p) inside &= q.x * x[i] + q.y * y[i] + q.z * z[i] + q.w >= reach;
+      seen[i] |= inside;
+    }
+  }
+  size_t count = 0;
+  for (size_t i = 0; i < n; ++i) count += seen[i];
+  return count;
+}
+
 }  // namespace pyro

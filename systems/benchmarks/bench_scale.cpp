@@ -153,7 +153,7 @@ nlohmann::json count_report(const ScaleRun& run, int frames) {
             {"submission", submission}}},
           {"bytes_per_particle",
            {{"pools", ParticlePool::bytes_per_slot()},
-            {"sort_keys", kSortBytesPerKey},
+            {"sort_keys", kSortBytesPerKey + sizeof(uint32_t)},  // and the kept list's places
             {"draw_list", 2 * sizeof(glm::vec4)},
             {"instances", double(instance_bytes) * per}}},
           {"sort_ms", sort},

@@ -10,7 +10,9 @@ namespace pyro {
 
 uint64_t particle_bytes_estimate(int views, ParticleShape shape) {
   const uint64_t pool = 16 * sizeof(float) + sizeof(uint8_t) + sizeof(uint32_t);
-  const uint64_t sort = 36;  // systems/sorting/radix_sort.h, kSortBytesPerKey
+  // systems/sorting/radix_sort.h, kSortBytesPerKey, and the culled list's place per key
+  // (depth_sort.h, SortScratch::kept_places).
+  const uint64_t sort = 36 + 4;
   constexpr uint64_t kRingSlots = 2, vec4 = 4 * sizeof(float);
   const bool splats = shape == ParticleShape::gaussian;
   const uint64_t once = pool + sort + (splats ? 0 : 3 * vec4);

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 #include <glm/geometric.hpp>
 
 #include "components/particle_set.h"
@@ -37,57 +36,73 @@ std::vector<std::size_t> set_offsets(const SortScratch& s) {
 // radii from its centre, a spherical billboard's sphere one; twice the radius holds both.
 constexpr float kCullRadii = 2.0f;
 
-// The keys of every set's particles that can reach a view (sphere_in_any), set after set, each
-// set's in particle order: s.keys. Each chunk of kParticlesPerTask particles writes its own at
-// its chunk's place, then the chunks close up in order, so any split of the work gives the
-// same keys. Returns whether every particle was kept (then key k is particle k of the sets
-// taken one after another).
+// Marks the particles [begin, end) of `p` that can reach a view in `seen`; returns how many.
+size_t mark_seen(const ParticlePool& p, std::span<const ViewFrustum> views, size_t begin,
+                 size_t end, uint8_t* seen) {
+  return mark_spheres_in_any(views, p.px.data() + begin, p.py.data() + begin, p.pz.data() + begin,
+                             p.radius.data() + begin, kCullRadii, end - begin, seen + begin);
+}
+
+// The keys of every set's particles that can reach a view, set after set, each set's in particle
+// order: s.keys. Two passes over chunks of kParticlesPerTask particles: the first marks and counts
+// what each chunk keeps, the second writes each chunk's keys from its place in the total, so any
+// split of the work gives the same keys. Returns whether every particle was kept: then key k is
+// particle k of the sets taken one after another; else s.kept_places says which one it is.
 bool make_keys(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
                std::span<const ViewFrustum> views, SortScratch& s) {
   const std::vector<std::size_t> offsets = set_offsets(s);
-  s.keys.resize(offsets.back());
-  size_t kept = 0;
+  s.seen.resize(offsets.back());
+  std::vector<size_t> chunk_start;  // per set and chunk, where its kept keys begin
   for (size_t set = 0; set < s.sets.size(); ++set) {
     const ParticlePool& p = *s.sets[set].second;
-    SortKey* out = s.keys.data() + kept;  // kept <= offsets[set]: earlier sets' keys stay put
+    const size_t first = chunk_start.size();
+    chunk_start.resize(first + (p.size() + kParticlesPerTask - 1) / kParticlesPerTask);
+    uint8_t* seen = s.seen.data() + offsets[set];
+    tbb::parallel_for(first, chunk_start.size(), [&](size_t c) {
+      const size_t begin = (c - first) * kParticlesPerTask;
+      chunk_start[c] = mark_seen(p, views, begin, std::min(p.size(), begin + kParticlesPerTask), seen);
+    });
+  }
+  size_t kept = 0;
+  for (size_t& c : chunk_start) kept += std::exchange(c, kept);
+  const bool all_kept = kept == offsets.back();
+  // Room for every particle, so that a frame that keeps more than the last does not reallocate.
+  s.keys.reserve(offsets.back());
+  s.keys.resize(kept);
+  s.kept_places.reserve(all_kept ? 0 : offsets.back());
+  s.kept_places.resize(all_kept ? 0 : kept);
+  size_t first = 0;
+  for (size_t set = 0; set < s.sets.size(); ++set) {
+    const ParticlePool& p = *s.sets[set].second;
+    const uint8_t* seen = s.seen.data() + offsets[set];
     const size_t chunks = (p.size() + kParticlesPerTask - 1) / kParticlesPerTask;
-    s.chunk_kept.assign(chunks, 0);
     tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
       const size_t begin = c * kParticlesPerTask, end = std::min(p.size(), begin + kParticlesPerTask);
-      size_t n = 0;
+      size_t at = chunk_start[first + c];
       for (size_t i = begin; i < end; ++i) {
-        if (!sphere_in_any(views, {p.px[i], p.py[i], p.pz[i]}, kCullRadii * p.radius[i])) continue;
+        if (!seen[i]) continue;
         const float dx = p.px[i] - eye.x, dy = p.py[i] - eye.y, dz = p.pz[i] - eye.z;
         // Squared distance orders like distance and needs no square root.
         const float depth = kind == SortKeyKind::view_depth
                                 ? dx * forward.x + dy * forward.y + dz * forward.z
                                 : dx * dx + dy * dy + dz * dz;
-        out[begin + n++] = {depth, static_cast<uint32_t>(set), p.id[i], static_cast<uint32_t>(i)};
+        if (!all_kept) s.kept_places[at] = static_cast<uint32_t>(offsets[set] + i);
+        s.keys[at++] = {depth, static_cast<uint32_t>(set), p.id[i], static_cast<uint32_t>(i)};
       }
-      s.chunk_kept[c] = n;
     });
-    size_t at = 0;  // each chunk moves towards the front, so moving them in order is safe
-    for (size_t c = 0; c < chunks; ++c) {
-      if (at != c * kParticlesPerTask && s.chunk_kept[c] > 0)
-        std::memmove(out + at, out + c * kParticlesPerTask, s.chunk_kept[c] * sizeof(SortKey));
-      at += s.chunk_kept[c];
-    }
-    kept += at;
+    first += chunks;
   }
-  s.keys.resize(kept);
-  return kept == offsets.back();
+  return all_kept;
 }
 
 // After culling, the order indexes the kept keys: turn it into the particles' places among all
-// the sets' (what the indexed list and the packed records are laid out by).
+// the sets' (what the indexed list and the packed records are laid out by), through the 4-byte
+// places make_keys wrote beside the keys rather than the 16-byte keys themselves.
 void order_to_particles(const SortScratch& s, std::vector<uint32_t>& order) {
-  const std::vector<std::size_t> offsets = set_offsets(s);
+  const uint32_t* places = s.kept_places.data();
   tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), kParticlesPerTask),
                     [&](const tbb::blocked_range<size_t>& r) {
-                      for (size_t k = r.begin(); k < r.end(); ++k) {
-                        const SortKey& key = s.keys[order[k]];
-                        order[k] = static_cast<uint32_t>(offsets[key.set] + key.particle);
-                      }
+                      for (size_t k = r.begin(); k < r.end(); ++k) order[k] = places[order[k]];
                     });
 }
 

@@ -47,7 +47,8 @@ struct SortScratch {
   std::vector<std::pair<uint32_t, const ParticlePool*>> sets;  // (entity index, pool)
   // The gathered form's particles packed in key order, two or three vec4s each (depth_sort.cpp).
   std::vector<glm::vec4> packed;
-  std::vector<size_t> chunk_kept;  // culling: the keys each chunk of a set kept
+  std::vector<uint8_t> seen;          // culling: 1 for a particle some view can show,
+  std::vector<uint32_t> kept_places;  // and each kept key's particle among all the sets' ones
   SortStageTimes times;
 };
 
