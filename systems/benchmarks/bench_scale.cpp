@@ -114,7 +114,14 @@ ScaleRun run_count(const SceneDescription& scene, const ScaleBenchOptions& o, Pr
     add_frame(runtime, ms_since(start), run);
     progress.update(++done);
   }
-  if (const SortScratch* s = runtime.world().try_resource<const SortScratch>()) run.last_keys = s->keys;
+  // The last frame's sorted keys: those the view kept.
+  if (const SortScratch* s = runtime.world().try_resource<const SortScratch>()) {
+    if (s->kept_places.empty() && s->radix.order.size() == s->keys.size()) {
+      run.last_keys = s->keys;
+    } else {
+      for (const uint32_t k : s->kept_places) run.last_keys.push_back(s->keys[k]);
+    }
+  }
   return run;
 }
 

@@ -43,67 +43,70 @@ size_t mark_seen(const ParticlePool& p, std::span<const ViewFrustum> views, size
                              p.radius.data() + begin, kCullRadii, end - begin, seen + begin);
 }
 
-// The keys of every set's particles that can reach a view, set after set, each set's in particle
-// order: s.keys. Two passes over chunks of kParticlesPerTask particles: the first marks and counts
-// what each chunk keeps, the second writes each chunk's keys from its place in the total, so any
-// split of the work gives the same keys. Returns whether every particle was kept: then key k is
-// particle k of the sets taken one after another; else s.kept_places says which one it is.
+// The keys of particles [begin, end) of set `set` (pool p), at their places in `out`.
+void write_keys(const ParticlePool& p, size_t set, const glm::vec3& eye, const glm::vec3& forward,
+                SortKeyKind kind, size_t begin, size_t end, SortKey* __restrict out) {
+  const float* __restrict x = p.px.data();
+  const float* __restrict y = p.py.data();
+  const float* __restrict z = p.pz.data();
+  const uint32_t* __restrict id = p.id.data();
+  for (size_t i = begin; i < end; ++i) {
+    const float dx = x[i] - eye.x, dy = y[i] - eye.y, dz = z[i] - eye.z;
+    // Squared distance orders like distance and needs no square root.
+    const float depth = kind == SortKeyKind::view_depth
+                            ? dx * forward.x + dy * forward.y + dz * forward.z
+                            : dx * dx + dy * dy + dz * dz;
+    out[i] = {depth, static_cast<uint32_t>(set), id[i], static_cast<uint32_t>(i)};
+  }
+}
+
+// Every set's keys, set after set (set k's particles from offsets[k] on), and which of them can
+// reach a view: s.kept_places, in increasing order. Each chunk of kParticlesPerTask particles
+// writes its keys and marks and counts what it keeps; then, where some were left out, each chunk
+// lists its kept places from its start in the total, so any split of the work gives the same
+// result. Returns whether every particle was kept (then s.kept_places is left empty: all are).
 bool make_keys(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
                std::span<const ViewFrustum> views, SortScratch& s) {
   const std::vector<std::size_t> offsets = set_offsets(s);
+  s.keys.resize(offsets.back());
   s.seen.resize(offsets.back());
-  std::vector<size_t> chunk_start;  // per set and chunk, where its kept keys begin
+  // Per chunk of every set: its particles among all the sets', and where its kept places begin.
+  std::vector<std::pair<size_t, size_t>> chunk_range;
+  std::vector<size_t> chunk_start;
   for (size_t set = 0; set < s.sets.size(); ++set) {
     const ParticlePool& p = *s.sets[set].second;
-    const size_t first = chunk_start.size();
-    chunk_start.resize(first + (p.size() + kParticlesPerTask - 1) / kParticlesPerTask);
+    const size_t first = chunk_range.size();
+    for (size_t begin = 0; begin < p.size(); begin += kParticlesPerTask)
+      chunk_range.emplace_back(offsets[set] + begin, offsets[set] + std::min(p.size(), begin + kParticlesPerTask));
+    chunk_start.resize(chunk_range.size());
     uint8_t* seen = s.seen.data() + offsets[set];
-    tbb::parallel_for(first, chunk_start.size(), [&](size_t c) {
-      const size_t begin = (c - first) * kParticlesPerTask;
-      chunk_start[c] = mark_seen(p, views, begin, std::min(p.size(), begin + kParticlesPerTask), seen);
+    SortKey* out = s.keys.data() + offsets[set];
+    tbb::parallel_for(first, chunk_range.size(), [&](size_t c) {
+      const size_t begin = chunk_range[c].first - offsets[set], end = chunk_range[c].second - offsets[set];
+      write_keys(p, set, eye, forward, kind, begin, end, out);  // a culled key is just not listed
+      chunk_start[c] = mark_seen(p, views, begin, end, seen);
     });
   }
   size_t kept = 0;
   for (size_t& c : chunk_start) kept += std::exchange(c, kept);
   const bool all_kept = kept == offsets.back();
-  // Room for every particle, so that a frame that keeps more than the last does not reallocate.
-  s.keys.reserve(offsets.back());
-  s.keys.resize(kept);
-  s.kept_places.reserve(all_kept ? 0 : offsets.back());
   s.kept_places.resize(all_kept ? 0 : kept);
-  size_t first = 0;
-  for (size_t set = 0; set < s.sets.size(); ++set) {
-    const ParticlePool& p = *s.sets[set].second;
-    const uint8_t* seen = s.seen.data() + offsets[set];
-    const size_t chunks = (p.size() + kParticlesPerTask - 1) / kParticlesPerTask;
-    tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
-      const size_t begin = c * kParticlesPerTask, end = std::min(p.size(), begin + kParticlesPerTask);
-      size_t at = chunk_start[first + c];
-      for (size_t i = begin; i < end; ++i) {
-        if (!seen[i]) continue;
-        const float dx = p.px[i] - eye.x, dy = p.py[i] - eye.y, dz = p.pz[i] - eye.z;
-        // Squared distance orders like distance and needs no square root.
-        const float depth = kind == SortKeyKind::view_depth
-                                ? dx * forward.x + dy * forward.y + dz * forward.z
-                                : dx * dx + dy * dy + dz * dz;
-        if (!all_kept) s.kept_places[at] = static_cast<uint32_t>(offsets[set] + i);
-        s.keys[at++] = {depth, static_cast<uint32_t>(set), p.id[i], static_cast<uint32_t>(i)};
-      }
-    });
-    first += chunks;
-  }
-  return all_kept;
+  if (all_kept) return true;
+  uint32_t* places = s.kept_places.data();
+  tbb::parallel_for(size_t(0), chunk_range.size(), [&](size_t c) {
+    size_t at = chunk_start[c];
+    for (size_t i = chunk_range[c].first; i < chunk_range[c].second; ++i)
+      if (s.seen[i]) places[at++] = static_cast<uint32_t>(i);
+  });
+  return false;
 }
 
-// After culling, the order indexes the kept keys: turn it into the particles' places among all
-// the sets' (what the indexed list and the packed records are laid out by), through the 4-byte
-// places make_keys wrote beside the keys rather than the 16-byte keys themselves.
-void order_to_particles(const SortScratch& s, std::vector<uint32_t>& order) {
-  const uint32_t* places = s.kept_places.data();
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), kParticlesPerTask),
-                    [&](const tbb::blocked_range<size_t>& r) {
-                      for (size_t k = r.begin(); k < r.end(); ++k) order[k] = places[order[k]];
-                    });
+// The kept keys' indices in draw order (the particles' places among all the sets'): s.radix.order.
+void order_kept(bool all_kept, SortScratch& s) {
+  if (all_kept)
+    radix_order_back_to_front(s.keys, s.radix);
+  else
+    radix_order_back_to_front(s.keys, s.kept_places, s.radix);
 }
 
 // Each particle's instance data packed in key order (s.packed, `stride` vec4s a particle), so
@@ -177,15 +180,15 @@ void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::v
   const size_t stride = with_medium ? 3 : 2;
   pack_particles(stride, s, s.packed);
   s.times.pack_ms += ms_since(start);
-  radix_order_back_to_front(s.keys, s.radix);
-  if (!all_kept) order_to_particles(s, s.radix.order);
+  order_kept(all_kept, s);
   s.times.order_ms += ms_since(start);
+  const size_t n = s.radix.order.size();
   list.order.clear();
-  list.center_radius.resize(s.keys.size());
-  list.color_density.resize(s.keys.size());
-  list.medium.resize(with_medium ? s.keys.size() : 0);
+  list.center_radius.resize(n);
+  list.color_density.resize(n);
+  list.medium.resize(with_medium ? n : 0);
   tbb::parallel_for(
-      tbb::blocked_range<size_t>(0, s.keys.size(), kParticlesPerTask),
+      tbb::blocked_range<size_t>(0, n, kParticlesPerTask),
       [&](const tbb::blocked_range<size_t>& r) { fill_draw_list(s, stride, list, r.begin(), r.end()); });
   s.times.gather_ms += ms_since(start);
 }
@@ -195,8 +198,7 @@ void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind
   auto start = std::chrono::steady_clock::now();
   const bool all_kept = make_keys(eye, forward, kind, views, s);
   s.times.keys_ms += ms_since(start);
-  radix_order_back_to_front(s.keys, s.radix);
-  if (!all_kept) order_to_particles(s, s.radix.order);
+  order_kept(all_kept, s);
   list.center_radius.clear();
   list.color_density.clear();
   list.medium.clear();

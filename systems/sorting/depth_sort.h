@@ -42,13 +42,13 @@ struct SortStageTimes {
 // Resource: the sort's working space, kept between frames so that sorting allocates nothing in
 // steady state (the sorting system's setup makes it).
 struct SortScratch {
-  std::vector<SortKey> keys;
+  std::vector<SortKey> keys;  // every particle's place, those culled left stale
   RadixScratch radix;
   std::vector<std::pair<uint32_t, const ParticlePool*>> sets;  // (entity index, pool)
   // The gathered form's particles packed in key order, two or three vec4s each (depth_sort.cpp).
   std::vector<glm::vec4> packed;
   std::vector<uint8_t> seen;          // culling: 1 for a particle some view can show,
-  std::vector<uint32_t> kept_places;  // and each kept key's particle among all the sets' ones
+  std::vector<uint32_t> kept_places;  // and the keys kept, when some were not (else empty)
   SortStageTimes times;
 };
 

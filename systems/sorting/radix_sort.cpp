@@ -84,18 +84,24 @@ void order_ties(const std::vector<SortKey>& keys, RadixScratch& s, size_t begin,
   }
 }
 
-}  // namespace
-
-void radix_order_back_to_front(const std::vector<SortKey>& keys, RadixScratch& s) {
-  const size_t n = keys.size();
-  s.pairs.resize(n);
-  s.swap.resize(n);
+// The order of keys[selected[0..n)], or of every key when `selected` is null.
+void order_selected(const std::vector<SortKey>& keys, const uint32_t* selected, size_t n,
+                    RadixScratch& s) {
+  const bool all = selected == nullptr;
+  // Room for every key: a frame that selects more than the last does not reallocate.
+  for (std::vector<uint64_t>* v : {&s.pairs, &s.swap}) {
+    v->reserve(keys.size());
+    v->resize(n);
+  }
+  s.order.reserve(keys.size());
   s.order.resize(n);
   const std::vector<std::pair<size_t, size_t>> chunks = chunks_of(n);
   std::vector<Histogram> counts(chunks.size());
   tbb::parallel_for(size_t(0), chunks.size(), [&](size_t c) {
-    for (size_t i = chunks[c].first; i < chunks[c].second; ++i)
-      s.pairs[i] = uint64_t(descending_depth_bits(keys[i].depth)) << 32 | uint32_t(i);
+    for (size_t i = chunks[c].first; i < chunks[c].second; ++i) {
+      const uint32_t k = all ? uint32_t(i) : selected[i];
+      s.pairs[i] = uint64_t(descending_depth_bits(keys[k].depth)) << 32 | k;
+    }
   });
   constexpr std::array<std::pair<int, uint32_t>, 3> digits = {
       {{0, 0x7ffu}, {11, 0x7ffu}, {22, 0x3ffu}}};
@@ -108,6 +114,17 @@ void radix_order_back_to_front(const std::vector<SortKey>& keys, RadixScratch& s
   tbb::parallel_for(size_t(0), chunks.size(), [&](size_t c) {
     order_ties(keys, s, chunks[c].first, chunks[c].second);
   });
+}
+
+}  // namespace
+
+void radix_order_back_to_front(const std::vector<SortKey>& keys, RadixScratch& s) {
+  order_selected(keys, nullptr, keys.size(), s);
+}
+
+void radix_order_back_to_front(const std::vector<SortKey>& keys, std::span<const uint32_t> selected,
+                               RadixScratch& s) {
+  order_selected(keys, selected.data(), selected.size(), s);
 }
 
 void radix_sort_back_to_front(std::vector<SortKey>& keys, RadixScratch& s) {

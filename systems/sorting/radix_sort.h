@@ -6,6 +6,7 @@
 // back_to_front's, ties and all: the result equals std::sort's with that comparator.
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "systems/sorting/sort_key.h"
@@ -31,6 +32,11 @@ inline constexpr std::size_t kSortBytesPerKey = sizeof(SortKey) + 2 * sizeof(uin
 // over the calling arena's threads (chunks of at least 65,536 pairs, each counted and scattered
 // by its own task); the order is the same for any number of threads.
 void radix_order_back_to_front(const std::vector<SortKey>& keys, RadixScratch& scratch);
+
+// The same for the keys at `selected` alone (indices into `keys`; none when empty):
+// scratch.order holds those indices in back_to_front order.
+void radix_order_back_to_front(const std::vector<SortKey>& keys, std::span<const uint32_t> selected,
+                               RadixScratch& scratch);
 
 // Sorts `keys` with back_to_front (radix_order_back_to_front, then the keys gathered).
 void radix_sort_back_to_front(std::vector<SortKey>& keys, RadixScratch& scratch);
