@@ -105,6 +105,29 @@ TEST(RadixSort, TheOrderIsTheSameForAnyNumberOfThreads) {
   }
 }
 
+TEST(RadixSort, ASelectionIsOrderedAsItsKeysAlone) {
+  // The culled draw list sorts the keys some view can show: the order holds their indices into
+  // the whole array, in the order std::sort gives those keys, with runs of equal depths.
+  std::mt19937 random(11);
+  std::vector<SortKey> keys = keys_with(200000, random, [](std::mt19937& r) {
+    return float(std::uniform_int_distribution<int>(0, 5000)(r)) * 0.25f;
+  });
+  for (const int keep_one_in : {1, 3, 50}) {
+    std::vector<uint32_t> selected;
+    for (uint32_t i = 0; i < keys.size(); ++i)
+      if (random() % keep_one_in == 0) selected.push_back(i);
+    std::vector<uint32_t> expected = selected;
+    std::sort(expected.begin(), expected.end(),
+              [&](uint32_t a, uint32_t b) { return back_to_front(keys[a], keys[b]); });
+    RadixScratch scratch;
+    radix_order_back_to_front(keys, selected, scratch);
+    EXPECT_EQ(scratch.order, expected) << "one in " << keep_one_in;
+  }
+  RadixScratch scratch;
+  radix_order_back_to_front(keys, std::span<const uint32_t>(), scratch);
+  EXPECT_TRUE(scratch.order.empty());  // an empty selection orders nothing
+}
+
 TEST(RadixSort, DepthBitsOrderLikeTheFloatsDescending) {
   const float values[] = {-std::numeric_limits<float>::infinity(), -1e30f, -2.0f, -1.0f,
                           -std::numeric_limits<float>::denorm_min(), 0.0f,
