@@ -93,22 +93,25 @@ DepthEdgeError depth_edge_error(const DepthEdgeInputs& in, const DepthEdgeErrorO
   const std::vector<int> to_far = chessboard_distance(in.width, in.height, edges.far_side);
   // Where the reference shows particle light, and which of those pixels lie on a far side, at
   // most halo_bound from its edge.
-  std::vector<uint8_t> unlit(n), lit_far(n);
+  std::vector<uint8_t> unlit(n), lit_far(n), lit_near(n);
   for (size_t i = 0; i < n; ++i) {
     bool alone = true;
     for (size_t c = 0; c < 3 && alone; ++c)
       alone = same_byte(in.reference[4 * i + c], in.scene[4 * i + c]);
     unlit[i] = alone;
     lit_far[i] = !alone && to_far[i] < to_near[i] && to_far[i] <= o.halo_bound;
+    lit_near[i] = !alone && to_near[i] < to_far[i];
   }
   const std::vector<int> to_lit_far = chessboard_distance(in.width, in.height, lit_far);
+  const std::vector<int> to_lit_near = chessboard_distance(in.width, in.height, lit_near);
   DepthEdgeError r;
   double edge_sum = 0.0, halo_sum = 0.0;
   for (size_t i = 0; i < n; ++i) {
     const bool near_edge = to_edge[i] <= o.edge_radius;
     const bool hides = in.particle_far.empty() || in.particle_far[i] > in.view_depth[i];
     const bool halo_pixel = unlit[i] && hides && to_near[i] < to_far[i] &&
-                            to_far[i] > o.halo_bound && to_lit_far[i] <= o.halo_reach;
+                            to_far[i] > o.halo_bound && to_lit_far[i] <= o.halo_reach &&
+                            to_lit_far[i] < to_lit_near[i];
     if (!near_edge && !halo_pixel) continue;
     r.edge_pixels += near_edge;
     r.halo_pixels += halo_pixel;

@@ -58,10 +58,12 @@ struct DepthEdgeError {
   // near-side edge pixel than a far-side one) farther than halo_bound from the far side, where
   // the reference shows the scene alone (the same 8-bit sRGB value in every channel: a GPU's
   // decoding of an sRGB texture may be a fraction of a step off the exact curve) while within
-  // halo_reach it shows particle light on a far side, at most halo_bound from its edge, and
-  // particles may lie behind the pixel's surface (particle_far; where given), the
-  // largest |measured - reference| over RGB (clamped), and its RMS over those pixels and
-  // channels. A particle's own outline blurred by upsampling, away from such an edge, is no halo.
+  // halo_reach it shows particle light on a far side, at most halo_bound from its edge, nearer
+  // than any particle light on a near side, and particles may lie behind the pixel's surface
+  // (particle_far; where given), the largest |measured - reference| over RGB (clamped), and its
+  // RMS over those pixels and channels. A particle's own outline blurred by upsampling is no
+  // halo: away from such an edge, or on the near surface nearer its own light than the far
+  // side's (particles in front of the near surface, whose blur the upsampling spreads over it).
   double halo = 0.0;
   double halo_rms = 0.0;
   size_t halo_pixels = 0;

@@ -116,6 +116,27 @@ TEST(DepthEdgeError, HaloIsLightOnTheNearSideBeyondTwoPixels) {
   EXPECT_EQ(e.halo, 0.0);
 }
 
+TEST(DepthEdgeError, AnOutlineOnTheNearSideIsNoHalo) {
+  // Particles in front of the near surface light its columns 0..5 in the reference; others behind
+  // it light the far side next to the edge. Light the upsampling spreads from the near side's
+  // own particles (nearer them than the far side's light) is their outline blurred, not a halo.
+  Images im;
+  for (int y = 0; y < 12; ++y) {
+    add(im.reference, step_column + 1, y, 0.4f);
+    for (int x = 0; x <= 5; ++x) add(im.reference, x, y, 0.3f);
+  }
+  im.measured = im.reference;
+  add(im.measured, 7, 3, 0.25f);                // 2 from the near light, 13 from the far: outline
+  add(im.measured, step_column - 3, 4, 0.125f);  // 4 from the far light, 13 from the near: halo
+  const DepthEdgeError e = depth_edge_error(im.inputs());
+  EXPECT_DOUBLE_EQ(e.halo, 0.125);
+  // Near-side pixels beyond 2 from the far side (x <= step_column - 2 = 17) and nearer the far
+  // light (column 20, rows 0..11) than the near one (columns 0..5, rows 0..11). Below row 11
+  // both distances share d = y - 11: max(20 - x, d) < max(x - 5, d) holds for x >= 13 and
+  // d < x - 5, so column x counts rows 0 .. x + 5: 19 + 20 + 21 + 22 + 23 for x = 13..17.
+  EXPECT_EQ(e.halo_pixels, size_t(19 + 20 + 21 + 22 + 23));
+}
+
 TEST(DepthEdgeError, MismatchedImagesAreRefused) {
   Images im;
   im.measured.pop_back();
