@@ -4,48 +4,23 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "components/draw_list.h"
 #include "components/view.h"
-#include "engine/core/content_path.h"
-#include "engine/gpu/render_target.h"
 #include "engine/math/view_frustum.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "systems/sorting/depth_sort.h"
+#include "tests/support/splat_drawing.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
 namespace {
 
 constexpr int kWidth = 96, kHeight = 72;
-
-std::vector<float> draw(BillboardRenderer& renderer, const DrawList& list,
-                        const std::vector<const ParticlePool*>& pools, const CameraFrame& frame) {
-  gpu::RenderTarget target(kWidth, kHeight);
-  target.bind();
-  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  renderer.draw(list, pools, frame, target);
-  return target.read_rgba();
-}
-
-std::vector<std::string> gaussian_scenes() {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(content_path("scenes"))) {
-    if (entry.path().extension() != ".json") continue;
-    const SceneDescription scene = load_scene(entry.path().string());
-    if (scene.render.particles == ParticleShape::gaussian && (!scene.clouds.empty() || !scene.volumes.empty()))
-      names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
 // The particles' mean position: a camera there stands among them.
 glm::vec3 centre_of(const std::vector<const ParticlePool*>& pools) {
@@ -57,7 +32,7 @@ glm::vec3 centre_of(const std::vector<const ParticlePool*>& pools) {
 }
 
 TEST(CullingRender, TheCulledListDrawsTheSameBytesAsTheWholeOne) {
-  const std::vector<std::string> scenes = gaussian_scenes();
+  const std::vector<std::string> scenes = test::gaussian_scenes();
   ASSERT_GE(scenes.size(), 4u);
   size_t views = 0, views_that_cull = 0;
   for (const std::string& name : scenes) {
@@ -89,8 +64,9 @@ TEST(CullingRender, TheCulledListDrawsTheSameBytesAsTheWholeOne) {
       ASSERT_LE(culled.size(), whole.size()) << name;
       ++views;
       views_that_cull += culled.size() < whole.size();
-      const std::vector<float> expected = draw(renderer, whole, pools, camera);
-      EXPECT_TRUE(expected == draw(renderer, culled, pools, camera)) << name << ", camera at "
+      const std::vector<float> expected =
+          test::draw_into_fresh_target(renderer, whole, pools, camera, kWidth, kHeight);
+      EXPECT_TRUE(expected == test::draw_into_fresh_target(renderer, culled, pools, camera, kWidth, kHeight)) << name << ", camera at "
           << camera.eye.x << " " << camera.eye.y << " " << camera.eye.z;
     }
   }
