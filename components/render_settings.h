@@ -59,6 +59,9 @@ struct RenderSettings {
   // Spherical and planar billboards as point sprites where they fit, else quads
   // (systems/billboard_render/sphere_billboard_programs.h); off: quads throughout, to compare.
   bool billboard_sprites = true;
+  // Leave out of the draw lists the particles no view can show, before sorting them
+  // (systems/sorting/depth_sort.h); off: every particle is sorted and drawn, to compare.
+  bool cull_particles = true;
   // explosion: dust, smoke and fire each in its own layer at layer_scale (components/gpu_frame.h).
   ParticleShading shading = ParticleShading::color;
   bool media_layers() const {

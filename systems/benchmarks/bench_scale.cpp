@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 
+#include "components/render_settings.h"
 #include "engine/core/user_error.h"
 #include "engine/particles/particle_pool.h"
 #include "systems/billboard_render/billboard_renderer.h"
@@ -103,6 +104,7 @@ ScaleRun run_count(const SceneDescription& scene, const ScaleBenchOptions& o, Pr
   options.height_override = o.height;
   options.threads = o.threads;
   SceneRuntime runtime(scene, options);
+  runtime.world().resource<RenderSettings>().cull_particles = o.cull;
   runtime.step();  // warm-up: shaders, tables, first allocations
   glFinish();
   ScaleRun run;
@@ -233,7 +235,7 @@ nlohmann::json bench_scale(const ScaleBenchOptions& o) {
   }
   return {{"scene", o.scene},          {"width", width},
           {"height", height},          {"frames", o.frames},
-          {"counts", counts},          {"cpu_slope", slope_over(counts, "cpu_ms_per_frame")},
+          {"cull", o.cull},            {"counts", counts},          {"cpu_slope", slope_over(counts, "cpu_ms_per_frame")},
           {"frame_slope", slope_over(counts, "ms_per_frame")}};
 }
 

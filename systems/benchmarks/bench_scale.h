@@ -22,10 +22,12 @@ struct ScaleBenchOptions {
   int frames = 5;   // timed frames per count, after one warm-up frame
   int width = 0, height = 0;  // 0: the scene's size
   int threads = 0;  // the schedule's threads (0: one per core)
+  bool cull = true;  // false: every particle sorted and drawn (RenderSettings::cull_particles)
   ProgressSink* progress = nullptr;
 };
 
-// {"scene", "width", "height", "frames", "counts": [per count: "particles", "ms_per_frame",
+// {"scene", "width", "height", "frames", "cull", "counts": [per count: "particles",
+// "drawn_particles" (the mean the view's list kept), "ms_per_frame",
 // "cpu_ms_per_frame", "driver_ms_per_frame", "system_ms" {name: ms}, "stage_ms" {keys, pack,
 // sort, gather, instance_write, instance_wait, draw_calls, submission}, "bytes_per_particle"
 // {pools, sort_keys, draw_list, instances}, "sort_ms", "std_sort_ms", "sort_over_std_sort",

@@ -222,8 +222,10 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
   const size_t orders = shared ? 1 : eyes.size();
   std::vector<ViewFrustum> frusta;
   for (const CameraFrame& e : eyes) frusta.push_back(view_frustum(e));
-  // The views order v's list is drawn into: every eye when they share it, else eye v.
+  // The views order v's list is drawn into: every eye when they share it, else eye v (none:
+  // nothing is culled).
   auto views_of = [&](size_t v) {
+    if (!rs.cull_particles) return std::span<const ViewFrustum>();
     return shared ? std::span<const ViewFrustum>(frusta) : std::span<const ViewFrustum>(&frusta[v], 1);
   };
   if (rs.particles == ParticleShape::gaussian) {

@@ -87,6 +87,8 @@ void add_bench_scale(CLI::App* bench) {
   cmd->add_option("--height", scale->options.height, "Height (default: the scene's)")->check(CLI::Range(1, 8192));
   cmd->add_option("--threads", scale->options.threads, "Schedule threads (0: one per core)")
       ->check(CLI::Range(0, 256));
+  cmd->add_flag("--no-cull", [scale](std::int64_t) { scale->options.cull = false; },
+                "Sort and draw every particle, also those the view cannot show (to compare)");
   cmd->add_flag("--json", scale->json, "Print one JSON object");
   cmd->callback([scale] {
     scale->options.progress = terminal_progress();

@@ -62,6 +62,13 @@ TEST(BenchScale, ReportsEachCountWithItsBaselines) {
     EXPECT_TRUE(c["system_ms"].contains("billboard_render"));
   }
   EXPECT_TRUE(r["cpu_slope"].is_null());  // no count from 1e5 to 2e6
+  // Without culling every particle is drawn: an index for each.
+  o.cull = false;
+  o.counts = {o.counts[0]};
+  const nlohmann::json all = bench_scale(o);
+  EXPECT_EQ(all["cull"], false);
+  EXPECT_EQ(all["counts"][0]["drawn_particles"].get<double>(), double(o.counts[0]));
+  EXPECT_DOUBLE_EQ(all["counts"][0]["bytes_per_particle"]["instances"].get<double>(), 36.0);
 }
 
 TEST(BenchScale, ASceneWithoutCloudsIsRefused) {
