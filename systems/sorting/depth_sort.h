@@ -44,7 +44,7 @@ struct SortStageTimes {
 // Resource: the sort's working space, kept between frames so that sorting allocates nothing in
 // steady state (the sorting system's setup makes it).
 struct SortScratch {
-  std::vector<SortKey> keys;  // every particle's place, those culled left stale
+  std::vector<SortKey> keys;  // every particle's, the culled ones too (the sort reads those kept)
   RadixScratch radix;
   std::vector<std::pair<uint32_t, const ParticlePool*>> sets;  // (entity index, pool)
   // The gathered form's particles packed in key order, two or three vec4s each (depth_sort.cpp).
