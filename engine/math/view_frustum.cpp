@@ -33,11 +33,12 @@ size_t mark_spheres_in_any(std::span<const ViewFrustum> views, const float* __re
                            uint8_t* __restrict seen) {
   for (size_t i = 0; i < n; ++i) seen[i] = views.empty();
   for (const ViewFrustum& view : views) {
-    const std::array<glm::vec4, 6> p = view.planes;
+    const std::array<glm::vec4, 6> p = view.planes;  // a local copy: stores to `seen` cannot alias it
+    // sphere_outside without its early exit, so that the loop vectorises.
     for (size_t i = 0; i < n; ++i) {
       const float reach = -radii * r[i];
       bool inside = true;
-      for (const glm::vec4& q : p) inside &= q.x * x[i] + q.y * y[i] + q.z * z[i] + q.w >= reach;
+      for (const glm::vec4& q : p) inside &= signed_distance(q, x[i], y[i], z[i]) >= reach;
       seen[i] |= inside;
     }
   }

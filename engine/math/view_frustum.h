@@ -31,25 +31,21 @@ struct ViewFrustum {
 
 ViewFrustum view_frustum(const CameraFrame& frame);
 
+// The signed distance of (x, y, z) from a plane of a ViewFrustum (positive inside).
+inline float signed_distance(const glm::vec4& plane, float x, float y, float z) {
+  return plane.x * x + plane.y * y + plane.z * z + plane.w;
+}
+
 // Whether the sphere at `center` of radius `radius` lies wholly outside one of the planes.
 inline bool sphere_outside(const ViewFrustum& f, const glm::vec3& center, float radius) {
   for (const glm::vec4& p : f.planes)
-    if (p.x * center.x + p.y * center.y + p.z * center.z + p.w < -radius) return true;
+    if (signed_distance(p, center.x, center.y, center.z) < -radius) return true;
   return false;
 }
 
-// Whether the sphere can reach any of the views (true when `views` is empty: nothing culls).
-inline bool sphere_in_any(std::span<const ViewFrustum> views, const glm::vec3& center,
-                          float radius) {
-  if (views.empty()) return true;
-  for (const ViewFrustum& f : views)
-    if (!sphere_outside(f, center, radius)) return true;
-  return false;
-}
-
-// The same test over arrays, the form the sort uses: seen[i] = 1 where the sphere at (x[i], y[i],
-// z[i]) of radius radii * r[i] can reach one of `views` (every one when `views` is empty), else
-// 0; returns how many are seen. Written without branches, so that it vectorises.
+// sphere_outside over arrays, the form the sort uses: seen[i] = 1 where the sphere at (x[i],
+// y[i], z[i]) of radius radii * r[i] is not outside one of `views` (every one when `views` is
+// empty), else 0; returns how many are seen.
 size_t mark_spheres_in_any(std::span<const ViewFrustum> views, const float* x, const float* y,
                            const float* z, const float* r, float radii, size_t n, uint8_t* seen);
 

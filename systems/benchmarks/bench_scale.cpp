@@ -116,13 +116,11 @@ ScaleRun run_count(const SceneDescription& scene, const ScaleBenchOptions& o, Pr
     add_frame(runtime, ms_since(start), run);
     progress.update(++done);
   }
-  // The last frame's sorted keys: those the view kept.
+  // The last frame's sorted keys: every one, or those the view kept.
   if (const SortScratch* s = runtime.world().try_resource<const SortScratch>()) {
-    if (s->kept_places.empty() && s->radix.order.size() == s->keys.size()) {
-      run.last_keys = s->keys;
-    } else {
+    if (s->radix.order.size() == s->keys.size()) run.last_keys = s->keys;
+    else
       for (const uint32_t k : s->kept_places) run.last_keys.push_back(s->keys[k]);
-    }
   }
   return run;
 }
@@ -233,9 +231,13 @@ nlohmann::json bench_scale(const ScaleBenchOptions& o) {
     width = o.width > 0 ? o.width : scene.width;
     height = o.height > 0 ? o.height : scene.height;
   }
-  return {{"scene", o.scene},          {"width", width},
-          {"height", height},          {"frames", o.frames},
-          {"cull", o.cull},            {"counts", counts},          {"cpu_slope", slope_over(counts, "cpu_ms_per_frame")},
+  return {{"scene", o.scene},
+          {"width", width},
+          {"height", height},
+          {"frames", o.frames},
+          {"cull", o.cull},
+          {"counts", counts},
+          {"cpu_slope", slope_over(counts, "cpu_ms_per_frame")},
           {"frame_slope", slope_over(counts, "ms_per_frame")}};
 }
 

@@ -2,8 +2,9 @@
 // Sort phase, the `sorting` system: lists the particles of every ParticleSet in one DrawList
 // per rendered view (the eye frames the stereo_camera system put in View), back to front,
 // indexed for Gaussian splats and gathered for the other billboards (components/draw_list.h).
-// Billboards facing the viewplane are ordered by view depth (the distance along the view axis), which is the same for both eyes of a parallel-axis stereo pair, so the eyes
-// share one sort. Billboards facing the viewpoint are ordered by distance to each eye.
+// Billboards facing the viewplane are ordered by view depth (the distance along the view axis),
+// which is the same for both eyes of a parallel-axis stereo pair, so the eyes share one sort.
+// Billboards facing the viewpoint are ordered by distance to each eye.
 // The order is a strict total order: key descending, then the set's entity index, then the
 // particle's id, so equal keys never swap between frames or runs. It is found by a radix sort
 // of the depths (radix_sort.h) into the order of the keys' indices; the keys are not moved.

@@ -84,7 +84,7 @@ void order_ties(const std::vector<SortKey>& keys, RadixScratch& s, size_t begin,
   }
 }
 
-// The order of keys[selected[0..n)], or of every key when `selected` is null.
+// The order of keys[selected[i]] for i < n, or of keys[0 .. n) when `selected` is null.
 void order_selected(const std::vector<SortKey>& keys, const uint32_t* selected, size_t n,
                     RadixScratch& s) {
   const bool all = selected == nullptr;
