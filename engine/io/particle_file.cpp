@@ -14,9 +14,40 @@ namespace pyro {
 
 namespace {
 constexpr char kMagic[8] = {'P', 'Y', 'R', 'O', 'P', 'T', 'C', 'L'};
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kIsotropicVersion = 1, kAnisotropicVersion = 2;
 constexpr size_t kHeader = 28;
 static_assert(std::endian::native == std::endian::little, "particle files are little-endian");
+
+// A version 2 record, in the file's order.
+using AnisotropicRecord = float[14];
+
+void to_record(const AnisotropicGaussian& g, float* r) {
+  const float v[14] = {g.centre.x,   g.centre.y,   g.centre.z,   g.rotation.w, g.rotation.x,
+                       g.rotation.y, g.rotation.z, g.scale.x,    g.scale.y,    g.scale.z,
+                       g.extinction, g.color.x,    g.color.y,    g.color.z};
+  std::memcpy(r, v, sizeof v);
+}
+
+AnisotropicGaussian from_record(const float* r) {
+  AnisotropicGaussian g;
+  g.centre = {r[0], r[1], r[2]};
+  g.rotation = glm::quat(r[3], r[4], r[5], r[6]);
+  g.scale = {r[7], r[8], r[9]};
+  g.extinction = r[10];
+  g.color = {r[11], r[12], r[13]};
+  return g;
+}
+
+uint32_t version_to_write(const std::string& path, const ParticleFile& file) {
+  if (!file.particles.empty() && !file.anisotropic.empty())
+    throw UserError(path, "", "particles of one kind (isotropic or anisotropic), found both");
+  if (file.version == 0) return file.anisotropic.empty() ? kIsotropicVersion : kAnisotropicVersion;
+  if (file.version == kIsotropicVersion && file.anisotropic.empty()) return kIsotropicVersion;
+  if (file.version == kAnisotropicVersion && file.particles.empty()) return kAnisotropicVersion;
+  throw UserError(path, "", "version 1 for isotropic particles or 2 for anisotropic ones, asked for " +
+                                std::to_string(file.version) + " with the other kind");
+}
+
 }  // namespace
 
 void check_particles(const std::string& path, const std::vector<GaussianParticle>& particles) {
@@ -31,11 +62,30 @@ void check_particles(const std::string& path, const std::vector<GaussianParticle
   }
 }
 
+void check_particles(const std::string& path, const std::vector<AnisotropicGaussian>& particles) {
+  for (size_t i = 0; i < particles.size(); ++i) {
+    const AnisotropicGaussian& g = particles[i];
+    float v[14];
+    to_record(g, v);
+    bool ok = g.scale.x > 0.0f && g.scale.y > 0.0f && g.scale.z > 0.0f && g.extinction >= 0.0f;
+    for (float x : v) ok = ok && std::isfinite(x);
+    // In double, so that no finite non-zero float quaternion underflows to length 0.
+    const double q2 = double(g.rotation.w) * g.rotation.w + double(g.rotation.x) * g.rotation.x +
+                      double(g.rotation.y) * g.rotation.y + double(g.rotation.z) * g.rotation.z;
+    if (!ok || !(q2 > 0.0))
+      throw UserError(path, "particle " + std::to_string(i),
+                      "finite values, scales > 0, extinction >= 0 and a non-zero rotation quaternion");
+  }
+}
+
 void write_particle_file(const std::string& path, const ParticleFile& file) {
+  const uint32_t version = version_to_write(path, file);
   check_particles(path, file.particles);  // never a file that read_particle_file refuses
+  check_particles(path, file.anisotropic);
+  const bool aniso = version == kAnisotropicVersion;
   DurableFile out(path);
-  const uint32_t version = kVersion, record = sizeof(GaussianParticle);
-  const uint64_t count = file.particles.size();
+  const uint32_t record = aniso ? kAnisotropicRecordBytes : uint32_t(sizeof(GaussianParticle));
+  const uint64_t count = aniso ? file.anisotropic.size() : file.particles.size();
   const uint32_t meta = static_cast<uint32_t>(file.metadata_json.size());
   out.write(kMagic, 8);
   out.write(&version, 4);
@@ -43,42 +93,71 @@ void write_particle_file(const std::string& path, const ParticleFile& file) {
   out.write(&count, 8);
   out.write(&meta, 4);
   out.write(file.metadata_json);
-  out.write(file.particles.data(), count * sizeof(GaussianParticle));
+  if (!aniso) {
+    out.write(file.particles.data(), count * sizeof(GaussianParticle));
+  } else {
+    std::vector<float> records(14 * count);
+    for (size_t i = 0; i < count; ++i) to_record(file.anisotropic[i], &records[14 * i]);
+    out.write(records.data(), records.size() * sizeof(float));
+  }
   out.commit();
 }
+
+namespace {
+
+struct Header {
+  uint32_t version, record, meta;
+  uint64_t count;
+};
+
+Header read_header(const std::string& path, std::ifstream& in, uint64_t size) {
+  char head[kHeader];
+  if (size < kHeader || !in.read(head, kHeader))
+    throw UserError(path, "", "a particle file (.pyrop), found a file shorter than its 28-byte header");
+  if (std::memcmp(head, kMagic, 8) != 0)
+    throw UserError(path, "", "a particle file starting with \"PYROPTCL\", found other bytes");
+  Header h;
+  std::memcpy(&h.version, head + 8, 4);
+  std::memcpy(&h.record, head + 12, 4);
+  std::memcpy(&h.count, head + 16, 8);
+  std::memcpy(&h.meta, head + 24, 4);
+  if (h.version != kIsotropicVersion && h.version != kAnisotropicVersion)
+    throw UserError(path, "", "particle file version 1 or 2, found " + std::to_string(h.version));
+  const uint32_t want = h.version == kIsotropicVersion ? 32 : kAnisotropicRecordBytes;
+  if (h.record != want)
+    throw UserError(path, "", std::to_string(want) + " bytes per particle in version " +
+                                  std::to_string(h.version) + ", found " + std::to_string(h.record));
+  if (h.count > (size - kHeader) / want || kHeader + uint64_t(h.meta) + h.count * want != size)
+    throw UserError(path, "", "a file of " + std::to_string(kHeader + uint64_t(h.meta) + h.count * want) +
+                                  " bytes for its " + std::to_string(h.count) +
+                                  " particles, found " + std::to_string(size) + " (truncated?)");
+  return h;
+}
+
+}  // namespace
 
 ParticleFile read_particle_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw UserError(path, "", "cannot open particle file: No such file or directory");
   const uint64_t size = static_cast<uint64_t>(in.tellg());
   in.seekg(0);
-  char head[kHeader];
-  if (size < kHeader || !in.read(head, kHeader))
-    throw UserError(path, "", "a particle file (.pyrop), found a file shorter than its 28-byte header");
-  if (std::memcmp(head, kMagic, 8) != 0)
-    throw UserError(path, "", "a particle file starting with \"PYROPTCL\", found other bytes");
-  uint32_t version, record, meta;
-  uint64_t count;
-  std::memcpy(&version, head + 8, 4);
-  std::memcpy(&record, head + 12, 4);
-  std::memcpy(&count, head + 16, 8);
-  std::memcpy(&meta, head + 24, 4);
-  if (version != kVersion)
-    throw UserError(path, "", "particle file version 1, found " + std::to_string(version));
-  if (record != sizeof(GaussianParticle))
-    throw UserError(path, "", "32 bytes per particle, found " + std::to_string(record));
-  if (count > (size - kHeader) / sizeof(GaussianParticle) ||
-      kHeader + uint64_t(meta) + count * sizeof(GaussianParticle) != size)
-    throw UserError(path, "", "a file of " + std::to_string(kHeader + uint64_t(meta) + count * 32) +
-                                  " bytes for its " + std::to_string(count) +
-                                  " particles, found " + std::to_string(size) + " (truncated?)");
+  const Header h = read_header(path, in, size);
   ParticleFile f;
-  f.metadata_json.resize(meta);
-  f.particles.resize(count);
-  in.read(f.metadata_json.data(), meta);
-  in.read(reinterpret_cast<char*>(f.particles.data()), static_cast<std::streamsize>(count * 32));
+  f.version = h.version;
+  f.metadata_json.resize(h.meta);
+  in.read(f.metadata_json.data(), h.meta);
+  if (h.version == kIsotropicVersion) {
+    f.particles.resize(h.count);
+    in.read(reinterpret_cast<char*>(f.particles.data()), static_cast<std::streamsize>(h.count * 32));
+  } else {
+    std::vector<float> records(14 * h.count);
+    in.read(reinterpret_cast<char*>(records.data()), static_cast<std::streamsize>(h.count * h.record));
+    f.anisotropic.resize(h.count);
+    for (size_t i = 0; i < h.count; ++i) f.anisotropic[i] = from_record(&records[14 * i]);
+  }
   if (!in) throw UserError(path, "", "cannot read the particle file");
   check_particles(path, f.particles);
+  check_particles(path, f.anisotropic);
   return f;
 }
 

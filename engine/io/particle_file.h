@@ -2,35 +2,53 @@
 // Particle files (`.pyrop`): Gaussian particles made by `pyro import-vdb`, referenced by scenes.
 // Layout (all little-endian; documented in docs/particle_format.md):
 //   offset 0   8 bytes   magic "PYROPTCL"
-//   offset 8   uint32    format version (1)
-//   offset 12  uint32    bytes per particle (32)
+//   offset 8   uint32    format version: 1 (isotropic particles) or 2 (anisotropic particles)
+//   offset 12  uint32    bytes per particle (32 in version 1, 56 in version 2)
 //   offset 16  uint64    particle count N
 //   offset 24  uint32    metadata length M
 //   offset 28  M bytes   metadata: a UTF-8 JSON object (source file, grid, error, ...)
-//   then       N x 8 float32: x, y, z, radius, density, r, g, b (engine/particles/gaussian_particle.h)
-// The file size must be exactly 28 + M + 32 N. Written durably (engine/io/durable_file.h), so a
-// reader never sees half a file.
+//   then, version 1: N x 8 float32: x, y, z, radius, density, r, g, b
+//                    (engine/particles/gaussian_particle.h)
+//         version 2: N x 14 float32: centre x, y, z, rotation w, x, y, z, scale x, y, z,
+//                    extinction, r, g, b (engine/particles/anisotropic_gaussian.h)
+// The file size must be exactly 28 + M + N times the record size. Written durably
+// (engine/io/durable_file.h), so a reader never sees half a file.
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "engine/particles/anisotropic_gaussian.h"
 #include "engine/particles/gaussian_particle.h"
 
 namespace pyro {
 
 struct ParticleFile {
   std::string metadata_json = "{}";
-  std::vector<GaussianParticle> particles;
+  // At most one of the two holds particles: a file is of one kind.
+  std::vector<GaussianParticle> particles;        // version 1
+  std::vector<AnisotropicGaussian> anisotropic;   // version 2
+  // As read: 1 or 2. For writing, 0 picks the version from the particles (2 when `anisotropic`
+  // holds any, else 1); 1 or 2 asks for that version (so an empty file keeps its version).
+  uint32_t version = 0;
 };
+
+// The bytes of one anisotropic particle in a version 2 file.
+inline constexpr uint32_t kAnisotropicRecordBytes = 14 * 4;
 
 // The reader's check of every particle: finite values, radius > 0, density in [0, 1]. Throws
 // UserError(path, "particle I", ...) at the first one that fails.
 void check_particles(const std::string& path, const std::vector<GaussianParticle>& particles);
+// The same for anisotropic particles: finite values, every scale > 0, extinction >= 0 and a
+// non-zero rotation quaternion (it is normalised where it is used).
+void check_particles(const std::string& path, const std::vector<AnisotropicGaussian>& particles);
 
-// Checks the particles (check_particles: nothing is written that the reader would refuse), then
-// writes the file. Throws UserError or IoError (engine/io/io_error.h) naming the file.
+// Checks the particles (check_particles: nothing is written that the reader would refuse) and
+// that the file is of one kind, then writes it. Throws UserError or IoError
+// (engine/io/io_error.h) naming the file.
 void write_particle_file(const std::string& path, const ParticleFile& file);
 
-// Throws UserError(path, "", why) for a missing, truncated or malformed file or a non-finite value.
+// Throws UserError(path, "", why) for a missing, truncated or malformed file, and
+// UserError(path, "particle I", why) for a value check_particles refuses.
 ParticleFile read_particle_file(const std::string& path);
 
 }  // namespace pyro

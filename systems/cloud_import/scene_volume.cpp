@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -41,7 +42,11 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
   SceneVolume out;
   try {
     if (v.kind == VolumeFileKind::particles) {
-      out.particles = read_particle_file(v.path).particles;
+      ParticleFile file = read_particle_file(v.path);
+      if (!file.anisotropic.empty())
+        throw UserError(v.path, "", "a version 1 particle file (isotropic Gaussian particles), "
+                                    "found anisotropic particles (version 2)");
+      out.particles = std::move(file.particles);
     } else {
       const DenseGrid grid = read_vdb_grid(v.path, {v.grid, v.grid_index}, &out.note);
       out.grid = grid.name;

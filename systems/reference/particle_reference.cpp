@@ -12,6 +12,7 @@
 #include "systems/reference/grid_sampling.h"
 #include "systems/reference/parallel_rows.h"
 #include "systems/reference/pixel_ray.h"
+#include "systems/reference/ray_pieces.h"
 
 namespace pyro {
 
@@ -84,57 +85,22 @@ RgbImage integrate_particles(const ParticlePool& p, const CameraFrame& camera, B
   img.rgb.assign(size_t(3) * img.width * img.height, 0.0f);
   const glm::dvec3 eye(camera.eye);
   parallel_rows(img.height, threads, [&](int y) {
-    struct Hit {
-      double a, b;
-      const Gaussian* g;
-    };
-    std::vector<Hit> hits;
-    std::vector<double> cuts;
+    RayPieces pieces;
     for (int x = 0; x < img.width; ++x) {
       const glm::dvec3 w = pixel_ray_direction(camera, x + 0.5, y + 0.5);
       const double t_stop = stop(x, y);
-      hits.clear();
-      cuts.clear();
-      for (const Gaussian& g : gs) {
+      pieces.clear();
+      for (size_t i = 0; i < gs.size(); ++i) {
         double a, b;
-        if (!cube_span(g, eye, w, a, b)) continue;
+        if (!cube_span(gs[i], eye, w, a, b)) continue;
         a = std::max(a, 0.0);
         b = std::min(b, t_stop);
         if (b <= a) continue;
-        hits.push_back({a, b, &g});
-        cuts.push_back(a);
-        cuts.push_back(b);
-        const double tc = glm::dot(g.c - eye, w);
-        if (tc > a && tc < b) cuts.push_back(tc);
+        pieces.add(a, b, glm::dot(gs[i].c - eye, w), i);
       }
-      glm::dvec3 L(0.0);
-      double T = 1.0;
-      std::sort(cuts.begin(), cuts.end());
-      for (size_t c = 0; c + 1 < cuts.size() && T > 1e-7; ++c) {
-        const double a = cuts[c], b = cuts[c + 1];
-        if (b <= a) continue;
-        // Optical depth of the whole piece decides how finely it is split for colour mixing.
-        double total = 0.0;
-        for (const Hit& h : hits)
-          if (h.a <= a && h.b >= b) total += depth_between(*h.g, eye, w, a, b);
-        const int parts = std::max(1, int(std::ceil(total / max_piece_depth)));
-        for (int k = 0; k < parts; ++k) {
-          const double pa = a + (b - a) * k / parts, pb = a + (b - a) * (k + 1) / parts;
-          double dtau = 0.0;
-          glm::dvec3 col(0.0);
-          for (const Hit& h : hits)
-            if (h.a <= a && h.b >= b) {
-              const double t = depth_between(*h.g, eye, w, pa, pb);
-              dtau += t;
-              col += t * h.g->col;
-            }
-          if (dtau <= 0.0) continue;
-          const double alpha = -std::expm1(-dtau);
-          L += T * alpha * (col / dtau);
-          T *= 1.0 - alpha;
-        }
-      }
-      L += T * behind(x, y);
+      const glm::dvec3 L = pieces.integrate(
+          [&](size_t i, double a, double b) { return depth_between(gs[i], eye, w, a, b); },
+          [&](size_t i) { return gs[i].col; }, behind(x, y), max_piece_depth);
       float* px = img.at(x, y);
       px[0] = float(L.x);
       px[1] = float(L.y);

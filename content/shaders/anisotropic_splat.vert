@@ -1,0 +1,77 @@
+#version 450 core
+// Anisotropic Gaussian particles (engine/particles/anisotropic_gaussian.h), one instance each,
+// back to front; the four corners of a triangle strip come from gl_VertexID.
+// Vertex pulling: instance k is the particle draw_order[k], whose record is four vec4s (packed by
+// systems/billboard_render/anisotropic_splat_renderer.cpp): centre and peak extinction; the unit
+// rotation quaternion (x, y, z, w); the three scales; linear rgb.
+//
+// The quad is the screen rectangle of the particle's ellipsoid m <= 3 in closed form
+// (Sigg, Weyrich, Botsch, Gross 2006: the bounding box of a projected quadric), written out in
+// engine/math/projected_ellipsoid.h, which this follows step for step: with T = P V M,
+// M = [R diag(3 s) | c], r_i the rows of T and <a, b> = a^T diag(1, 1, 1, -1) b,
+//   x_ndc = (<r1, r4> -+ sqrt(<r1, r4>^2 - <r1, r1> <r4, r4>)) / <r4, r4>   (r2 for y),
+// widened by one pixel against float rounding. A particle that meets the near plane, lies between
+// it and the eye or holds the eye covers the whole viewport; one wholly behind the eye, nothing.
+// Depth is the centre's (the near plane's when the centre is not beyond it): the splat is depth
+// tested against opaque geometry there, as the isotropic billboards are.
+layout(std430, binding = 0) readonly buffer ParticleRecords { vec4 records[]; };
+layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
+
+uniform mat4 u_view_projection;
+uniform vec3 u_eye;
+uniform vec2 u_pixel_ndc;  // one pixel in NDC units: 2 / viewport size
+
+// M = S^-1 R^T (the whitening of engine/math/anisotropic_optical_depth.h) and u0 = M (eye - c).
+flat out mat3 v_whitening;
+flat out vec3 v_eye_whitened;
+flat out vec4 v_color_extinction;
+
+const float kExtent = 3.0;  // engine/particles/anisotropic_gaussian.h: kAnisotropicExtent
+
+float dot_d(vec4 a, vec4 b) { return dot(a.xyz, b.xyz) - a.w * b.w; }
+
+vec4 row(mat4 m, int i) { return vec4(m[0][i], m[1][i], m[2][i], m[3][i]); }
+
+// The plane p misses the unit sphere with the centre on its positive side (a relative margin
+// makes near-tangent planes count as cutting, the safe side).
+bool wholly_positive(vec4 p) { return p.w > 0.0 && length(p.xyz) < p.w * (1.0 - 1e-6); }
+
+vec2 edge_pair(vec4 r, vec4 r4) {
+  float a = dot_d(r4, r4), b = dot_d(r, r4), c = dot_d(r, r);
+  float root = sqrt(max(b * b - a * c, 0.0));
+  float l0 = (b - root) / a, l1 = (b + root) / a;
+  return vec2(min(l0, l1), max(l0, l1));
+}
+
+void main() {
+  uint particle = draw_order[gl_InstanceID];
+  vec4 centre_extinction = records[4u * particle];
+  vec4 q = records[4u * particle + 1u];
+  vec3 scale = records[4u * particle + 2u].xyz;
+  vec3 color = records[4u * particle + 3u].rgb;
+  vec3 centre = centre_extinction.xyz;
+  // The local axes in world space: the columns of the rotation matrix of the unit quaternion
+  // (w, x, y, z) = (q.w, q.x, q.y, q.z).
+  vec3 axis0 = vec3(1.0 - 2.0 * (q.y * q.y + q.z * q.z), 2.0 * (q.x * q.y + q.w * q.z), 2.0 * (q.x * q.z - q.w * q.y));
+  vec3 axis1 = vec3(2.0 * (q.x * q.y - q.w * q.z), 1.0 - 2.0 * (q.x * q.x + q.z * q.z), 2.0 * (q.y * q.z + q.w * q.x));
+  vec3 axis2 = vec3(2.0 * (q.x * q.z + q.w * q.y), 2.0 * (q.y * q.z - q.w * q.x), 1.0 - 2.0 * (q.x * q.x + q.y * q.y));
+  v_whitening = transpose(mat3(axis0 / scale.x, axis1 / scale.y, axis2 / scale.z));
+  v_eye_whitened = v_whitening * (u_eye - centre);
+  v_color_extinction = vec4(color, centre_extinction.w);
+
+  mat4 t = u_view_projection * mat4(vec4(axis0 * (kExtent * scale.x), 0.0), vec4(axis1 * (kExtent * scale.y), 0.0),
+                                    vec4(axis2 * (kExtent * scale.z), 0.0), vec4(centre, 1.0));
+  vec4 r1 = row(t, 0), r2 = row(t, 1), r3 = row(t, 2), r4 = row(t, 3);
+  vec4 near_plane = r3 + r4;
+  float depth = near_plane.w > 0.0 ? r3.w / r4.w : -1.0;
+  vec2 corner = vec2(float(gl_VertexID & 1), float((gl_VertexID >> 1) & 1));
+  if (wholly_positive(near_plane)) {
+    vec2 x = edge_pair(r1, r4), y = edge_pair(r2, r4);
+    vec2 lo = vec2(x[0], y[0]) - u_pixel_ndc, hi = vec2(x[1], y[1]) + u_pixel_ndc;
+    gl_Position = vec4(mix(lo, hi, corner), depth, 1.0);
+  } else if (wholly_positive(-r4)) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // hidden: a point outside the clip volume
+  } else {
+    gl_Position = vec4(corner * 2.0 - 1.0, depth, 1.0);
+  }
+}

@@ -1,0 +1,24 @@
+#pragma once
+// CPU ground truth for a set of anisotropic Gaussian particles (engine/particles/
+// anisotropic_gaussian.h): each pixel's ray from the eye (t >= 0) through the sum of their
+// extinction fields, every particle's optical depth in closed form
+// (engine/math/anisotropic_optical_depth.h) and the colours mixed piece by piece along the ray
+// (ray_pieces.h, as particle_reference.h does for the isotropic particles). Only particles whose
+// projected ellipsoid (engine/math/projected_ellipsoid.h) covers a pixel are visited there.
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "engine/math/camera_math.h"
+#include "engine/particles/anisotropic_gaussian.h"
+#include "systems/reference/rgb_image.h"
+
+namespace pyro {
+
+// `camera` must be a frame made by make_camera_frame (a symmetric perspective: the pixel rays of
+// pixel_ray.h). threads = 0: hardware concurrency; the image does not depend on it.
+RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& particles,
+                                      const CameraFrame& camera, const glm::dvec3& background,
+                                      int threads = 0, double max_piece_depth = 0.02);
+
+}  // namespace pyro
