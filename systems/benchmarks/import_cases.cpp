@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 
+#include "systems/benchmarks/fitted_import.h"
 #include "systems/benchmarks/vdb_import_evaluation.h"
 
 namespace pyro {

@@ -27,7 +27,8 @@ VdbImportReference make_vdb_import_reference(const DenseGrid& grid, int width, i
   if (grid.empty()) return r;
   const auto t0 = std::chrono::steady_clock::now();
   r.camera = framing_camera(grid);
-  const std::vector<float> light = light_optical_depth(grid, r.medium);
+  r.light_depth = light_optical_depth(grid, r.medium);
+  const std::vector<float>& light = r.light_depth;
   r.image = render_volume_reference(grid, light, camera_frame(r.camera, width, height), r.medium);
   if (every_view) {
     r.view_cameras = views_around(grid);
@@ -43,6 +44,20 @@ VdbImportReference make_vdb_import_reference(const DenseGrid& grid, int width, i
   return r;
 }
 
+void measure_views(VdbImportResult& r, const VdbImportReference& reference,
+                   const std::function<RgbImage(const CameraDescription&)>& render) {
+  r.view_rmse.clear();
+  r.rmse_views_mean = r.rmse_views_max = 0.0;
+  r.rmse = image_rmse(reference.image, render(reference.camera));
+  for (size_t v = 0; v < reference.view_cameras.size(); ++v) {
+    // The first view is the framing camera's, measured above.
+    r.view_rmse.push_back(v == 0 ? r.rmse : image_rmse(reference.view_images[v], render(reference.view_cameras[v])));
+    r.rmse_views_mean += r.view_rmse.back() / double(reference.view_cameras.size());
+    r.rmse_views_max = std::max(r.rmse_views_max, r.view_rmse.back());
+  }
+  if (reference.inside_camera) r.rmse_inside = image_rmse(reference.inside_image, render(*reference.inside_camera));
+}
+
 VdbImportResult import_and_measure_at(const DenseGrid& grid, double tau_tolerance,
                                       const VdbImportReference& reference, int render_repeats) {
   VdbImportResult r;
@@ -53,69 +68,22 @@ VdbImportResult import_and_measure_at(const DenseGrid& grid, double tau_toleranc
   r.particles = import_cloud(grid, opt, &r.report);
   r.import_seconds = seconds_since(t0);
   if (grid.empty()) return r;
-  SnapshotTiming timing;
   const glm::vec3 background(opt.medium.background);
-  const RgbImage splat = render_particle_snapshot(r.particles, reference.camera, reference.width,
-                                                  reference.height, background, render_repeats, &timing);
-  r.render_seconds = timing.render_seconds;
-  r.rmse = image_rmse(reference.image, splat);
-  for (size_t v = 0; v < reference.view_cameras.size(); ++v) {
-    const RgbImage view = v == 0 ? splat
-                                 : render_particle_snapshot(r.particles, reference.view_cameras[v],
-                                                            reference.width, reference.height, background);
-    r.view_rmse.push_back(image_rmse(reference.view_images[v], view));
-    r.rmse_views_mean += r.view_rmse.back() / double(reference.view_cameras.size());
-    r.rmse_views_max = std::max(r.rmse_views_max, r.view_rmse.back());
-  }
-  if (reference.inside_camera)
-    r.rmse_inside = image_rmse(reference.inside_image,
-                               render_particle_snapshot(r.particles, *reference.inside_camera, reference.width,
-                                                        reference.height, background));
+  bool first = true;  // the framing view is timed, best of render_repeats
+  measure_views(r, reference, [&](const CameraDescription& camera) {
+    SnapshotTiming timing;
+    const RgbImage image = render_particle_snapshot(r.particles, camera, reference.width, reference.height,
+                                                    background, first ? render_repeats : 1, &timing);
+    if (first) r.render_seconds = timing.render_seconds;
+    first = false;
+    return image;
+  });
   return r;
 }
 
 VdbImportResult import_and_measure(const DenseGrid& grid, double error, const VdbImportReference& reference,
                                    int render_repeats) {
   return import_and_measure_at(grid, tau_tolerance_for_error(error), reference, render_repeats);
-}
-
-FittedImport import_to_target(const DenseGrid& grid, double error, const VdbImportReference& reference,
-                              int max_refinements) {
-  FittedImport fit;
-  double tolerance = tau_tolerance_for_error(error);
-  fit.best = import_and_measure_at(grid, tolerance, reference);
-  int stalled = 0;  // refinements in a row that did not lower the error clearly
-  while (!(fit.best.rmse_views_max <= error)) {
-    if (fit.refinements == max_refinements) {
-      fit.reason = "stopped after " + std::to_string(max_refinements) + " refinements of the octree";
-      return fit;
-    }
-    tolerance *= 0.5;
-    ++fit.refinements;
-    VdbImportResult finer = import_and_measure_at(grid, tolerance, reference);
-    const bool grew = finer.report.particles > fit.best.report.particles;
-    // A finer import replaces the best one only where it meets the target or is clearly better
-    // (2 %), so a miss does not end with many more particles for nothing.
-    const bool better = finer.rmse_views_max <= error || finer.rmse_views_max < 0.98 * fit.best.rmse_views_max;
-    stalled = better ? 0 : stalled + 1;
-    if (better) fit.best = std::move(finer);
-    if (!grew) {
-      fit.reason = "the octree has reached its finest particles (a tighter tolerance adds none): "
-                   "isotropic Gaussians of at least one voxel cannot fit this grid closer";
-      return fit;
-    }
-    if (stalled == 2) {
-      char text[256];
-      std::snprintf(text, sizeof text,
-                    "the error has stopped falling near %.4f: a finer octree adds particles without "
-                    "lowering it (the floor of isotropic Gaussians on this grid)",
-                    fit.best.rmse_views_max);
-      fit.reason = text;
-      return fit;
-    }
-  }
-  fit.target_met = true;
-  return fit;
 }
 
 }  // namespace pyro

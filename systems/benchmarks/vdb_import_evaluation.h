@@ -3,11 +3,13 @@
 // particles for an image error target, and the image RMSE of the splatted particles (the real GL
 // pipeline, offscreen) against the CPU reference render of the grid (systems/reference) from
 // the camera framing the grid. The reference is rendered once per grid and reused across targets.
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "engine/particles/anisotropic_gaussian.h"
 #include "engine/particles/gaussian_particle.h"
 #include "components/volume_medium.h"
 #include "systems/scene/scene_description.h"
@@ -22,6 +24,10 @@ struct VdbImportReference {
   CameraDescription camera;  // framing_camera(grid)
   int width = 0, height = 0;
   RgbImage image;            // the CPU reference render (empty for an empty grid)
+  // The reference's optical depth from each voxel to the light (volume_reference.h,
+  // light_optical_depth; the layout of grid.values): the fitted import lights its Gaussians
+  // from the same field the reference is lit by.
+  std::vector<float> light_depth;
   double seconds = 0.0;      // light sweep + reference render(s)
   // With every view (grid_framing.h: views_around, the framing camera first, then every side;
   // and view_inside when the camera fits): each view's camera and reference image; empty
@@ -38,7 +44,9 @@ VdbImportReference make_vdb_import_reference(const DenseGrid& grid, int width, i
                                              bool every_view = false);
 
 struct VdbImportResult {
-  std::vector<GaussianParticle> particles;
+  std::vector<GaussianParticle> particles;  // the octree's isotropic particles
+  // The fitted import's anisotropic particles (fitted_import.h); empty for the octree alone.
+  std::vector<AnisotropicGaussian> fitted;
   CloudImportReport report;
   double tau_tolerance = 0.0;
   double import_seconds = 0.0;
@@ -60,17 +68,9 @@ VdbImportResult import_and_measure(const DenseGrid& grid, double error, const Vd
 VdbImportResult import_and_measure_at(const DenseGrid& grid, double tau_tolerance,
                                       const VdbImportReference& reference, int render_repeats = 1);
 
-// An import refined until its error from every side meets the target: the octree's tolerance
-// starts at tau_tolerance_for_error(error) and halves while rmse_views_max is above `error`, until
-// it is met, the particle count stops growing (the octree has reached its finest particles), or
-// `max_refinements` halvings were tried. The reference needs every view.
-struct FittedImport {
-  VdbImportResult best;  // the lowest rmse_views_max reached (the first that meets the target)
-  bool target_met = false;
-  int refinements = 0;  // halvings tried
-  std::string reason;   // why the target was not met (empty when it was)
-};
-FittedImport import_to_target(const DenseGrid& grid, double error, const VdbImportReference& reference,
-                              int max_refinements = 6);
+// The RMSE of `render`'s image (render(camera) -> RgbImage) against the reference from the
+// framing camera (rmse), every view (view_rmse, their mean and maximum) and from inside, into `r`.
+void measure_views(VdbImportResult& r, const VdbImportReference& reference,
+                   const std::function<RgbImage(const CameraDescription&)>& render);
 
 }  // namespace pyro

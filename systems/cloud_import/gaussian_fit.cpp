@@ -11,119 +11,14 @@
 #include <glm/matrix.hpp>
 
 #include "engine/math/symmetric_eigen.h"
-#include "systems/cloud_import/light_sweep.h"
+#include "systems/cloud_import/gaussian_field.h"
 #include "systems/reference/parallel_rows.h"
 
 namespace pyro {
 
+using namespace gaussian_field;
+
 namespace {
-
-constexpr float kExtent2 = kAnisotropicExtent * kAnisotropicExtent;
-
-// The grid's box grown by `margin` voxels on every side, as a dense array of floats (x fastest).
-// Local index x (0 = the first stored voxel) is element x + margin.
-struct FieldBox {
-  int margin = 0;
-  int n[3] = {0, 0, 0};
-  size_t at(int x, int y, int z) const {
-    return (size_t(z + margin) * n[1] + size_t(y + margin)) * n[0] + size_t(x + margin);
-  }
-  size_t size() const { return size_t(n[0]) * n[1] * n[2]; }
-  int lo() const { return -margin; }
-  int hi(int a) const { return n[a] - margin - 1; }  // last local index on axis a
-};
-
-FieldBox field_box(const DenseGrid& grid, int margin) {
-  FieldBox b;
-  b.margin = margin;
-  for (int a = 0; a < 3; ++a) b.n[a] = grid.dims[a] + 2 * margin;
-  return b;
-}
-
-// -rho over the grown box: the residual before any Gaussian is added.
-std::vector<float> negative_density(const DenseGrid& grid, const FieldBox& box) {
-  std::vector<float> r(box.size(), 0.0f);
-  for (int z = 0; z < grid.dims[2]; ++z)
-    for (int y = 0; y < grid.dims[1]; ++y)
-      for (int x = 0; x < grid.dims[0]; ++x) r[box.at(x, y, z)] = -grid.at(x, y, z);
-  return r;
-}
-
-// The range of planes [z0, z1] a Gaussian reaches (its truncation ellipsoid's box: half-extent
-// 3 sqrt(Sigma_zz)), clipped to the grown box; empty when z0 > z1.
-void plane_range(const GridGaussian& g, const FieldBox& box, int axis, int& lo, int& hi) {
-  const glm::mat3 cov = glm::inverse(glm::transpose(g.shape) * g.shape);
-  const float h = kAnisotropicExtent * std::sqrt(std::max(cov[axis][axis], 0.0f));
-  lo = std::max(box.lo(), int(std::ceil(g.mean[axis] - h)));
-  hi = std::min(box.hi(axis), int(std::floor(g.mean[axis] + h)));
-}
-
-// Calls f(index, u, v, e) for every voxel of plane z inside g's truncation ellipsoid: u = x - mean,
-// v = A u, e = exp(-|v|^2 / 2). Along a row, |v|^2 = a t^2 + 2 (c0 . w) t + |w|^2 with t = x - mean.x,
-// c0 = A's first column, a = |c0|^2 and w = A (0, dy, dz); the row's voxels inside are the t
-// between its roots. From one voxel to the next, e is multiplied by exp(-(c0 . v) - a / 2), and
-// that factor by exp(-a): two products a voxel instead of an exponential.
-template <class F>
-void visit_plane(const GridGaussian& g, const FieldBox& box, int z, int ylo, int yhi, F&& f) {
-  const glm::vec3 c0 = g.shape[0], c1 = g.shape[1], c2 = g.shape[2];
-  const float a = glm::dot(c0, c0);
-  const float step_ratio = std::exp(-a);
-  const float dz = float(z) - g.mean.z;
-  for (int y = ylo; y <= yhi; ++y) {
-    const float dy = float(y) - g.mean.y;
-    const glm::vec3 w = c1 * dy + c2 * dz;
-    const float b = glm::dot(c0, w), c = glm::dot(w, w) - kExtent2;
-    const float disc = b * b - a * c;
-    if (disc < 0.0f) continue;
-    const float root = std::sqrt(disc);
-    const int xlo = std::max(box.lo(), int(std::ceil(g.mean.x + (-b - root) / a)));
-    const int xhi = std::min(box.hi(0), int(std::floor(g.mean.x + (-b + root) / a)));
-    if (xlo > xhi) continue;
-    size_t index = box.at(xlo, y, z);
-    float t = float(xlo) - g.mean.x;
-    glm::vec3 v = c0 * t + w;
-    float e = std::exp(-0.5f * glm::dot(v, v));
-    float ratio = std::exp(-glm::dot(c0, v) - 0.5f * a);
-    for (int x = xlo; x <= xhi; ++x, ++index) {
-      f(index, glm::vec3(t, dy, dz), v, e);
-      e *= ratio;
-      ratio *= step_ratio;
-      t += 1.0f;
-      v += c0;
-    }
-  }
-}
-
-template <class F>
-void visit(const GridGaussian& g, const FieldBox& box, F&& f) {
-  int zlo, zhi, ylo, yhi;
-  plane_range(g, box, 2, zlo, zhi);
-  plane_range(g, box, 1, ylo, yhi);
-  for (int z = zlo; z <= zhi; ++z) visit_plane(g, box, z, ylo, yhi, f);
-}
-
-// The residual f - rho over the grown box. Each plane adds its Gaussians in index order on one
-// thread, so the sums do not depend on the thread count.
-std::vector<float> residual(const DenseGrid& grid, const std::vector<GridGaussian>& gs,
-                            const FieldBox& box, int threads) {
-  std::vector<float> r = negative_density(grid, box);
-  std::vector<std::vector<uint32_t>> planes(box.n[2]);
-  for (uint32_t i = 0; i < gs.size(); ++i) {
-    int zlo, zhi;
-    plane_range(gs[i], box, 2, zlo, zhi);
-    for (int z = zlo; z <= zhi; ++z) planes[z + box.margin].push_back(i);
-  }
-  parallel_rows(box.n[2], threads, [&](int plane) {
-    for (const uint32_t i : planes[plane]) {
-      const GridGaussian& g = gs[i];
-      int ylo, yhi;
-      plane_range(g, box, 1, ylo, yhi);
-      visit_plane(g, box, plane - box.margin, ylo, yhi,
-                  [&](size_t q, const glm::vec3&, const glm::vec3&, float e) { r[q] += g.peak * e; });
-    }
-  });
-  return r;
-}
 
 double active_rmse(const DenseGrid& grid, const FieldBox& box, const std::vector<float>& r) {
   double sum = 0.0;
@@ -259,26 +154,17 @@ GaussianFitReport fit_grid_gaussians(const DenseGrid& grid, std::vector<GridGaus
   return rep;
 }
 
-namespace {
-
-// Each Gaussian's share of the squared residual: sum over its voxels of (its value there / the
-// sum's value there) r^2.
-std::vector<double> residual_shares(const DenseGrid& grid, const std::vector<GridGaussian>& gs,
-                                    const FieldBox& box, int threads) {
-  const std::vector<float> r = residual(grid, gs, box, threads);
-  std::vector<float> rho = negative_density(grid, box);
-  std::vector<double> share(gs.size(), 0.0);
-  parallel_rows(int(gs.size()), threads, [&](int i) {
-    const GridGaussian& g = gs[i];
-    double s = 0.0;
-    visit(g, box, [&](size_t q, const glm::vec3&, const glm::vec3&, float e) {
-      const float f = r[q] - rho[q];  // the sum of the Gaussians there (rho[q] holds -rho)
-      if (f > 0.0f) s += double(g.peak * e / f) * double(r[q]) * r[q];
-    });
-    share[i] = s;
-  });
-  return share;
+std::vector<double> residual_shares(const DenseGrid& grid, const std::vector<GridGaussian>& gs, int margin,
+                                    int threads) {
+  const FieldBox box = field_box(grid, margin);
+  std::vector<float> f(box.size(), 0.0f);
+  add_gaussians(f, gs, box, threads, [](uint32_t) { return 1.0f; });
+  std::vector<float> r = negative_density(grid, box);
+  for (size_t q = 0; q < r.size(); ++q) r[q] += f[q];
+  return shares_of(gs, box, r, f, threads);
 }
+
+namespace {
 
 // Two Gaussians in place of g along its longest axis (see densify_and_prune).
 void split_gaussian(const GridGaussian& g, GridGaussian& a, GridGaussian& b) {
@@ -302,12 +188,10 @@ void split_gaussian(const GridGaussian& g, GridGaussian& a, GridGaussian& b) {
 
 }  // namespace
 
-DensifyReport densify_and_prune(const DenseGrid& grid, std::vector<GridGaussian>& gs, double split_fraction,
-                                double depth_per_density_voxel, double prune_depth,
+DensifyReport densify_and_prune(std::vector<GridGaussian>& gs, const std::vector<double>& share,
+                                double split_fraction, double depth_per_density_voxel, double prune_depth,
                                 const GaussianFitOptions& opt) {
   DensifyReport rep;
-  const FieldBox box = field_box(grid, opt.margin);
-  const std::vector<double> share = residual_shares(grid, gs, box, opt.threads);
   std::vector<uint32_t> order(gs.size());
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return share[a] > share[b]; });
@@ -339,27 +223,6 @@ DensifyReport densify_and_prune(const DenseGrid& grid, std::vector<GridGaussian>
   }
   gs = std::move(out);
   return rep;
-}
-
-std::vector<AnisotropicGaussian> lit_world_gaussians(const DenseGrid& grid, const std::vector<GridGaussian>& gs,
-                                                     const VolumeMedium& medium, int threads) {
-  const FieldBox box = field_box(grid, 0);
-  const std::vector<float> depth = light_optical_depth_sweep(grid, medium, threads);
-  std::vector<AnisotropicGaussian> out(gs.size());
-  parallel_rows(int(gs.size()), threads, [&](int i) {
-    const GridGaussian& g = gs[i];
-    double wsum = 0.0, tsum = 0.0;
-    visit(g, box, [&](size_t q, const glm::vec3&, const glm::vec3&, float e) {
-      const double w = double(e) * grid.values[q];
-      wsum += w;
-      tsum += w * std::exp(-double(depth[q]));
-    });
-    const double t = wsum > 0.0 ? tsum / wsum : 1.0;
-    out[i] = world_gaussian(grid, g, medium.extinction);
-    out[i].color = glm::vec3(glm::clamp(medium.albedo * (medium.light_color * t + medium.ambient), glm::dvec3(0.0),
-                                        glm::dvec3(1.0)));
-  });
-  return out;
 }
 
 }  // namespace pyro

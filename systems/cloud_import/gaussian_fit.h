@@ -60,26 +60,23 @@ std::array<float, 13> grid_gaussian_gradient(const DenseGrid& grid, const std::v
 // The field RMSE of the Gaussians against the grid over its active voxels (those != 0).
 double grid_gaussian_rmse(const DenseGrid& grid, const std::vector<GridGaussian>& gaussians, int threads = 0);
 
+// Each Gaussian's share of the squared residual of the density: the sum over its voxels (the
+// grid's box grown by `margin`) of (what it adds there / the Gaussians' sum there) r^2.
+std::vector<double> residual_shares(const DenseGrid& grid, const std::vector<GridGaussian>& gaussians,
+                                    int margin, int threads = 0);
+
 struct DensifyReport {
   uint64_t split = 0, pruned = 0;
 };
 
-// Densify and prune: the `split_fraction` of the Gaussians that carry the most squared residual
-// (each voxel's residual shared among the Gaussians in proportion to what they add there) are
-// each replaced by two along their longest axis (moment-preserving: offsets of +-sigma/2, that
-// axis's sigma times sqrt(3)/2, half the mass each), when that axis is wider than 2 min_sigma;
-// Gaussians whose largest optical depth (peak * sqrt(2 pi) * longest sigma, times
-// `depth_per_density_voxel`, the extinction times a voxel's length) is below `prune_depth` are
-// removed.
-DensifyReport densify_and_prune(const DenseGrid& grid, std::vector<GridGaussian>& gaussians,
-                                double split_fraction, double depth_per_density_voxel,
-                                double prune_depth, const GaussianFitOptions& options = {});
-
-// The world particles of fitted Gaussians, lit as the octree's are (cloud_import.h: single
-// scattering with self-shadowing): colour = albedo (light T + ambient), T the mean of the
-// transmittance to the light (light_sweep.h) over the particle's voxels, weighted by what the
-// particle adds there times the density.
-std::vector<AnisotropicGaussian> lit_world_gaussians(const DenseGrid& grid, const std::vector<GridGaussian>& gaussians,
-                                                     const VolumeMedium& medium, int threads = 0);
+// Densify and prune: the `split_fraction` of the Gaussians whose `share` of the error is largest
+// (residual_shares, and the lighting's, gaussian_lighting.h) are each replaced by two along their
+// longest axis (moment-preserving: offsets of +-sigma/2, that axis's sigma times sqrt(3)/2, half
+// the mass each), when that axis is wider than 2 min_sigma; Gaussians whose largest optical depth
+// (peak * sqrt(2 pi) * longest sigma, times `depth_per_density_voxel`, the extinction times a
+// voxel's length) is below `prune_depth` are removed.
+DensifyReport densify_and_prune(std::vector<GridGaussian>& gaussians, const std::vector<double>& share,
+                                double split_fraction, double depth_per_density_voxel, double prune_depth,
+                                const GaussianFitOptions& options = {});
 
 }  // namespace pyro

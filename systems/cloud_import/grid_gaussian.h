@@ -23,6 +23,9 @@ struct GridGaussian {
   glm::vec3 mean{0.0f};
   glm::mat3 shape{1.0f};  // A
   float peak = 0.0f;      // grid density at the centre
+  // The transmittance to the light the Gaussian shows, in [0, 1] (gaussian_lighting.h); its
+  // colour is albedo (light lit + ambient).
+  float lit = 1.0f;
 };
 
 // The octree importer's isotropic particles (cloud_import.h: centre, radius 3 s, opacity at the

@@ -1,9 +1,9 @@
 // pyro import-vdb FILE [--grid NAME | --grid-index I] [--error E] --out FILE [--json]
 //                 [--width W] [--height H]
-// Reads one float grid, imports it as Gaussian particles (systems/cloud_import), measures the
-// image error of the splatted particles (the real GL pipeline, offscreen) against the CPU
-// reference render of the grid (systems/reference) from a camera framing the grid, and only then
-// writes the particle file (engine/io/particle_file.h: checked as the loader checks it, then
+// Reads one float grid, imports it as anisotropic Gaussian particles fitted to the grid until the
+// image error from every side meets the target (systems/benchmarks/fitted_import.h: the splats
+// drawn by the real GL renderer, offscreen, against the CPU reference render of the grid from
+// seven views around it), and only then writes the particle file (engine/io/particle_file.h: checked as the loader checks it, then
 // written durably).
 #include <chrono>
 #include <cmath>
@@ -17,7 +17,7 @@
 #include "engine/io/vdb_reader.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
-#include "systems/benchmarks/vdb_import_evaluation.h"
+#include "systems/benchmarks/fitted_import.h"
 
 namespace pyro::cli {
 
@@ -92,7 +92,6 @@ void run_import(const ImportArgs& a) {
   const CloudImportReport& rep = imported.report;
   const double import_seconds = imported.import_seconds;
   const double rmse = imported.rmse;
-  const std::vector<GaussianParticle>& particles = imported.particles;
   if (!std::isfinite(rmse))
     throw UserError(a.file, "grid \"" + grid.name + "\"",
                     "a grid whose import can be measured, found a non-finite image error");
@@ -105,7 +104,7 @@ void run_import(const ImportArgs& a) {
                          {"active_voxels", rep.active_voxels}};
   ParticleFile pf;
   pf.metadata_json = meta.dump();
-  pf.particles = particles;
+  pf.anisotropic = imported.fitted;
   write_particle_file(a.out, pf);
 
   nlohmann::json summary = {{"active_voxels", rep.active_voxels},
@@ -116,7 +115,6 @@ void run_import(const ImportArgs& a) {
                             {"import_seconds", import_seconds},
                             {"light_seconds", rep.light_seconds},
                             {"voxels_per_second", rep.active_voxels / std::max(1e-9, read_seconds + import_seconds)},
-                            {"particles_per_level", rep.particles_per_level},
                             {"grid", grid.name},
                             {"extinction", reference.medium.extinction},
                             {"tau_tolerance", imported.tau_tolerance},

@@ -167,8 +167,9 @@ TEST(ImportVdbCli, SmallVolumeImportsAndTheParticleFileReadsBack) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   const ParticleFile f = read_particle_file(out.string());
-  EXPECT_EQ(j["particles"].get<size_t>(), f.particles.size());
-  EXPECT_GT(f.particles.size(), 0u);
+  EXPECT_EQ(f.version, 2u);  // fitted anisotropic particles
+  EXPECT_EQ(j["particles"].get<size_t>(), f.anisotropic.size());
+  EXPECT_GT(f.anisotropic.size(), 0u);
   EXPECT_LE(j["rmse"].get<double>(), 0.03);
   // The error from every side, and whether the target was met.
   EXPECT_EQ(j["views"], 7);

@@ -145,7 +145,7 @@ TEST(GaussianFit, ResultsDoNotDependOnTheThreadCount) {
     opt.steps = 12;
     opt.threads = threads;
     fit_grid_gaussians(grid, gs, opt);
-    densify_and_prune(grid, gs, 0.2, 0.4, 1e-3, opt);
+    densify_and_prune(gs, residual_shares(grid, gs, opt.margin, threads), 0.2, 0.4, 1e-3, opt);
     results.push_back(gs);
   }
   for (size_t t = 1; t < results.size(); ++t) {
@@ -188,7 +188,7 @@ TEST(GaussianFit, ASplitKeepsMassAndSecondMoments) {
   finish(grid);
   std::vector<GridGaussian> gs = {rotated({8, 8, 8}, {2.5f, 1.0f, 0.8f}, q, 1.0f)};
   GaussianFitOptions opt;
-  const DensifyReport rep = densify_and_prune(grid, gs, 1.0, 1.0, 0.0, opt);
+  const DensifyReport rep = densify_and_prune(gs, residual_shares(grid, gs, opt.margin), 1.0, 1.0, 0.0, opt);
   ASSERT_EQ(rep.split, 1u);
   ASSERT_EQ(gs.size(), 2u);
   for (GridGaussian& g : gs) g.mean -= glm::vec3(8.0f);

@@ -1,0 +1,40 @@
+#pragma once
+// The import that meets an image error target from every side: the octree's isotropic particles
+// (systems/cloud_import/cloud_import.h) start it, their means, shapes and densities are fitted to
+// the grid as anisotropic Gaussians (gaussian_fit.h), and while the largest error over the views
+// around the grid (vdb_import_evaluation.h, measured with the anisotropic splats against the CPU
+// reference of the grid) is above the target, the Gaussians that carry the most residual are
+// split and the fit goes on (densify and prune). A start stops when the target is met, when the
+// error stops falling (two rounds without a 2 % gain), when there are as many particles as voxels
+// or when the rounds run out; a start that misses is followed by a finer one (the octree's
+// tolerance halved), up to `starts` of them. The first start that meets the target is kept, else
+// the lowest error reached, with the reason its start gave.
+#include <string>
+
+#include "systems/benchmarks/vdb_import_evaluation.h"
+
+namespace pyro {
+
+struct FitSchedule {
+  // The first start's octree is at this multiple of tau_tolerance_for_error(error): coarse, so
+  // that the splits go where the error is rather than where the octree's rule put them.
+  double start_factor = 4.0;
+  int starts = 3;
+  int first_steps = 60;         // fit steps before the first measurement
+  int round_steps = 30;         // fit steps after each split
+  double split_fraction = 0.1;  // of the Gaussians, split each round
+  int max_rounds = 12;          // per start
+  int threads = 0;
+};
+
+struct FittedImport {
+  VdbImportResult best;  // the lowest rmse_views_max reached (the first that meets the target)
+  bool target_met = false;
+  int refinements = 0;  // rounds of split and fit, and finer starts, after the first fit
+  std::string reason;   // why the target was not met (empty when it was)
+};
+
+FittedImport import_to_target(const DenseGrid& grid, double error, const VdbImportReference& reference,
+                              const FitSchedule& schedule = {});
+
+}  // namespace pyro
