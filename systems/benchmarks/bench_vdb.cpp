@@ -12,11 +12,13 @@
 #include <glm/trigonometric.hpp>
 
 #include "engine/core/user_error.h"
+#include "systems/benchmarks/fitted_import.h"
 #include "systems/cloud_import/cloud_import.h"
+#include "systems/cloud_import/gaussian_lighting.h"
 #include "systems/cloud_import/grid_framing.h"
 #include "systems/reference/rgb_image.h"
 #include "systems/reference/volume_reference.h"
-#include "systems/scene_runtime/particle_snapshot.h"
+#include "systems/scene_runtime/anisotropic_snapshot.h"
 
 namespace pyro {
 
@@ -91,15 +93,13 @@ VolumeMedium without_ambient(VolumeMedium m) {
 }
 
 // The splats and the CPU reference of the ambient-free medium against vdb_render's image.
-nlohmann::json score_against_vdb_render(const DenseGrid& grid, double tau_tolerance,
+nlohmann::json score_against_vdb_render(const DenseGrid& grid, const std::vector<GridGaussian>& fitted,
                                         const CameraDescription& cam, const std::vector<float>& light,
                                         const VolumeMedium& medium, const RgbImage& vdb) {
-  CloudImportOptions opt;
-  opt.medium = without_ambient(medium);
-  opt.tau_tolerance = tau_tolerance;
-  const std::vector<GaussianParticle> particles = import_cloud(grid, opt);
-  const RgbImage splat = render_particle_snapshot(particles, cam, vdb.width, vdb.height, glm::vec3(0.0f));
-  const RgbImage ref = render_volume_reference(grid, light, camera_frame(cam, vdb.width, vdb.height), opt.medium);
+  const VolumeMedium unlit = without_ambient(medium);
+  const RgbImage splat = render_anisotropic_snapshot(lit_world_gaussians(grid, fitted, unlit), cam, vdb.width,
+                                                     vdb.height, glm::vec3(0.0f));
+  const RgbImage ref = render_volume_reference(grid, light, camera_frame(cam, vdb.width, vdb.height), unlit);
   return {{"splats", image_rmse(splat, vdb)},
           {"reference", image_rmse(ref, vdb)},
           {"splats_vs_reference", image_rmse(splat, ref)}};
@@ -114,29 +114,28 @@ nlohmann::json bench_vdb(const VdbBenchOptions& a) {
   const DenseGrid grid = read_vdb_grid(a.file, {a.grid, a.grid_index}, &note);
   if (!note.empty() && a.on_note) a.on_note(a.file + ": " + note);
   if (grid.empty()) throw UserError(a.file, "grid \"" + grid.name + "\"", "a grid with active voxels to render");
-  CloudImportOptions opt;
-  opt.medium = default_medium(grid);
-  opt.tau_tolerance = tau_tolerance_for_error(a.error);
   progress.stage(1, "import");
   auto t = std::chrono::steady_clock::now();
-  CloudImportReport rep;
-  const std::vector<GaussianParticle> particles = import_cloud(grid, opt, &rep);
+  // The import as import-vdb makes it (fitted to the error target from every side, 256^2 views).
+  const VdbImportReference views = make_vdb_import_reference(grid, 256, 256, true);
+  const FittedImport fit = import_to_target(grid, a.error, views);
   const double import_seconds = seconds_since(t);
+  const VolumeMedium& medium = views.medium;
 
   const CameraDescription cam = framing_camera(grid);
   SnapshotTiming timing;
   progress.stage(2, "splats");
-  const RgbImage splat = render_particle_snapshot(particles, cam, a.width, a.height,
-                                                  glm::vec3(opt.medium.background), 3, &timing);
+  const RgbImage splat = render_anisotropic_snapshot(fit.best.fitted, cam, a.width, a.height,
+                                                     glm::vec3(medium.background), 3, &timing);
   progress.stage(3, "reference");
   t = std::chrono::steady_clock::now();
-  const std::vector<float> light = light_optical_depth(grid, opt.medium);
-  const RgbImage ref = render_volume_reference(grid, light, camera_frame(cam, a.width, a.height), opt.medium);
+  const std::vector<float> light = light_optical_depth(grid, medium);
+  const RgbImage ref = render_volume_reference(grid, light, camera_frame(cam, a.width, a.height), medium);
   const double reference_seconds = seconds_since(t);
 
   const std::filesystem::path image =
       std::filesystem::temp_directory_path() / ("pyro_bench_vdb_" + std::to_string(::getpid()) + ".ppm");
-  const std::string cmd = vdb_render_command(a, grid, cam, opt.medium, image.string());
+  const std::string cmd = vdb_render_command(a, grid, cam, medium, image.string());
   progress.stage(4, "vdb_render");
   const double vdb_render_seconds = time_vdb_render(cmd);
   const bool vdb_ok = vdb_render_seconds >= 0.0;
@@ -146,7 +145,7 @@ nlohmann::json bench_vdb(const VdbBenchOptions& a) {
   if (vdb_ok) {
     const RgbImage vdb = read_vdb_render_ppm(image, a.width, a.height);
     if (vdb.rgb.empty() && a.on_note) a.on_note("vdb_render's image could not be read: " + image.string());
-    if (!vdb.rgb.empty()) scores = score_against_vdb_render(grid, opt.tau_tolerance, cam, light, opt.medium, vdb);
+    if (!vdb.rgb.empty()) scores = score_against_vdb_render(grid, fit.best.grid_gaussians, cam, light, medium, vdb);
   }
   std::error_code ec;
   std::filesystem::remove(image, ec);
@@ -155,8 +154,10 @@ nlohmann::json bench_vdb(const VdbBenchOptions& a) {
   return {{"file", a.file},
           {"width", a.width},
           {"height", a.height},
-          {"active_voxels", rep.active_voxels},
-          {"particles", rep.particles},
+          {"active_voxels", grid.active_voxels},
+          {"particles", fit.best.fitted.size()},
+          {"import_target_met", fit.target_met},
+          {"import_rmse_views_max", fit.best.rmse_views_max},
           {"import_seconds", import_seconds},
           {"splat_ms", timing.render_seconds * 1e3},
           {"reference_ms", reference_seconds * 1e3},

@@ -28,6 +28,7 @@ VdbImportResult measured(const DenseGrid& grid, std::vector<GridGaussian>& gs, c
   VdbImportResult r;
   fit_lit_fractions(grid, gs, transmittance, 20, threads);
   r.fitted = lit_world_gaussians(grid, gs, reference.medium);
+  r.grid_gaussians = gs;
   r.report = octree;
   r.report.particles = r.fitted.size();
   const glm::vec3 background(reference.medium.background);

@@ -15,6 +15,7 @@
 #include "systems/scene/scene_description.h"
 #include "engine/io/vdb_reader.h"
 #include "systems/cloud_import/cloud_import.h"
+#include "systems/cloud_import/grid_gaussian.h"
 #include "systems/reference/rgb_image.h"
 
 namespace pyro {
@@ -45,8 +46,11 @@ VdbImportReference make_vdb_import_reference(const DenseGrid& grid, int width, i
 
 struct VdbImportResult {
   std::vector<GaussianParticle> particles;  // the octree's isotropic particles
-  // The fitted import's anisotropic particles (fitted_import.h); empty for the octree alone.
+  // The fitted import's anisotropic particles (fitted_import.h), and the same in the grid's index
+  // space with their lit values (to light them again for another medium); empty for the octree
+  // alone.
   std::vector<AnisotropicGaussian> fitted;
+  std::vector<GridGaussian> grid_gaussians;
   CloudImportReport report;
   double tau_tolerance = 0.0;
   double import_seconds = 0.0;
