@@ -2,19 +2,18 @@
 // The optical depth of one anisotropic Gaussian particle along the pixel's ray from the eye,
 // in closed form: engine/math/anisotropic_optical_depth.h (anisotropic_ray_segment and
 // AnisotropicRaySegment::depth over t in [0, infinity)), evaluated here step for step in float.
-// The ray is the eye towards the pixel's point on the far plane (the inverse view-projection),
-// so a camera inside a particle sees the particle's density ahead of it, not a flat card.
+// The ray is the eye towards the pixel's point on the far plane (the inverse view-projection,
+// applied at the quad's corners and interpolated: anisotropic_splat.vert), so a camera inside a
+// particle sees the particle's density ahead of it, not a flat card.
 // erf is Abramowitz & Stegun 7.1.26 (|error| <= 1.5e-7), its coefficients the uniform
 // u_erf = kErfAs7126 {p, a1, a2, a3, a4, a5} from the same header.
 // Output is premultiplied (colour alpha, alpha), alpha = 1 - exp(-tau); blending is
 // (ONE, ONE_MINUS_SRC_ALPHA), back to front.
-flat in mat3 v_whitening;       // M = S^-1 R^T
-flat in vec3 v_eye_whitened;    // u0 = M (eye - c)
+noperspective in vec3 v_ray;           // d: the ray's direction, unnormalised
+noperspective in vec3 v_ray_whitened;  // M d, M = S^-1 R^T
+flat in vec3 v_eye_whitened;           // u0 = M (eye - c)
 flat in vec4 v_color_extinction;
 
-uniform mat4 u_inverse_view_projection;
-uniform vec3 u_eye;
-uniform vec2 u_viewport;
 uniform float u_erf[6];
 
 layout(location = 0) out vec4 o_color;
@@ -31,11 +30,8 @@ float erf_as_7_1_26(float x) {
 }
 
 void main() {
-  vec2 ndc = 2.0 * gl_FragCoord.xy / u_viewport - 1.0;
-  vec4 far_point = u_inverse_view_projection * vec4(ndc, 1.0, 1.0);
-  vec3 w = normalize(far_point.xyz / far_point.w - u_eye);
-  // anisotropic_ray_segment:
-  vec3 v = v_whitening * w;
+  // anisotropic_ray_segment, with w = d / |d| and so v = M w = (M d) / |d|:
+  vec3 v = v_ray_whitened / length(v_ray);
   float a = dot(v, v);
   float t_closest = -dot(v_eye_whitened, v) / a;
   vec3 closest = v_eye_whitened + t_closest * v;

@@ -18,11 +18,17 @@ layout(std430, binding = 0) readonly buffer ParticleRecords { vec4 records[]; };
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
 
 uniform mat4 u_view_projection;
+uniform mat4 u_inverse_view_projection;
 uniform vec3 u_eye;
 uniform vec2 u_pixel_ndc;  // one pixel in NDC units: 2 / viewport size
 
+// The pixel's ray from the eye, in world space and whitened: d = P(ndc) - eye w(ndc) with
+// (P, w) = inverse(P V) (ndc, 1, 1), a direction (unnormalised) towards the pixel's point on the
+// far plane; both d and M d are linear in the window position, so they are interpolated
+// exactly (noperspective: every corner has clip w = 1).
+noperspective out vec3 v_ray;
+noperspective out vec3 v_ray_whitened;
 // M = S^-1 R^T (the whitening of engine/math/anisotropic_optical_depth.h) and u0 = M (eye - c).
-flat out mat3 v_whitening;
 flat out vec3 v_eye_whitened;
 flat out vec4 v_color_extinction;
 
@@ -55,8 +61,8 @@ void main() {
   vec3 axis0 = vec3(1.0 - 2.0 * (q.y * q.y + q.z * q.z), 2.0 * (q.x * q.y + q.w * q.z), 2.0 * (q.x * q.z - q.w * q.y));
   vec3 axis1 = vec3(2.0 * (q.x * q.y - q.w * q.z), 1.0 - 2.0 * (q.x * q.x + q.z * q.z), 2.0 * (q.y * q.z + q.w * q.x));
   vec3 axis2 = vec3(2.0 * (q.x * q.z + q.w * q.y), 2.0 * (q.y * q.z - q.w * q.x), 1.0 - 2.0 * (q.x * q.x + q.y * q.y));
-  v_whitening = transpose(mat3(axis0 / scale.x, axis1 / scale.y, axis2 / scale.z));
-  v_eye_whitened = v_whitening * (u_eye - centre);
+  mat3 whitening = transpose(mat3(axis0 / scale.x, axis1 / scale.y, axis2 / scale.z));
+  v_eye_whitened = whitening * (u_eye - centre);
   v_color_extinction = vec4(color, centre_extinction.w);
 
   mat4 t = u_view_projection * mat4(vec4(axis0 * (kExtent * scale.x), 0.0), vec4(axis1 * (kExtent * scale.y), 0.0),
@@ -65,13 +71,17 @@ void main() {
   vec4 near_plane = r3 + r4;
   float depth = near_plane.w > 0.0 ? r3.w / r4.w : -1.0;
   vec2 corner = vec2(float(gl_VertexID & 1), float((gl_VertexID >> 1) & 1));
+  vec2 ndc = corner * 2.0 - 1.0;
   if (wholly_positive(near_plane)) {
     vec2 x = edge_pair(r1, r4), y = edge_pair(r2, r4);
     vec2 lo = vec2(x[0], y[0]) - u_pixel_ndc, hi = vec2(x[1], y[1]) + u_pixel_ndc;
-    gl_Position = vec4(mix(lo, hi, corner), depth, 1.0);
+    ndc = mix(lo, hi, corner);
   } else if (wholly_positive(-r4)) {
-    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // hidden: a point outside the clip volume
-  } else {
-    gl_Position = vec4(corner * 2.0 - 1.0, depth, 1.0);
+    ndc = vec2(2.0);  // hidden: a point outside the clip volume
+    depth = 2.0;
   }
+  gl_Position = vec4(ndc, depth, 1.0);
+  vec4 far_point = u_inverse_view_projection * vec4(ndc, 1.0, 1.0);
+  v_ray = far_point.xyz - u_eye * far_point.w;
+  v_ray_whitened = whitening * v_ray;
 }

@@ -73,7 +73,6 @@ void AnisotropicSplatRenderer::draw(const CameraFrame& frame, const gpu::RenderT
   glUniformMatrix4fv(gpu::uniform_location(program_, "u_inverse_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(inverse_vp));
   glUniform3fv(gpu::uniform_location(program_, "u_eye"), 1, glm::value_ptr(frame.eye));
-  glUniform2f(gpu::uniform_location(program_, "u_viewport"), float(target.width()), float(target.height()));
   glUniform2f(gpu::uniform_location(program_, "u_pixel_ndc"), 2.0f / float(target.width()),
               2.0f / float(target.height()));
   float erf_coefficients[6];

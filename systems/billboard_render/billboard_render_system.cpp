@@ -1,5 +1,8 @@
 #include "systems/billboard_render/billboard_render_system.h"
 
+#include <vector>
+
+#include "components/anisotropic_cloud.h"
 #include "components/draw_list.h"
 #include "components/explosion_shading.h"
 #include "components/frame_clock.h"
@@ -45,7 +48,17 @@ namespace {
 
 // The renderer the scene's particle shape needs: the Gaussian BillboardRenderer is made from the
 // scene's footprint table when the world is built; the others are made here, at setup.
+void make_anisotropic_pass(ecs::World& world) {
+  std::vector<AnisotropicGaussian> all;
+  world.each<const AnisotropicCloud>([&](const AnisotropicCloud& c) {
+    all.insert(all.end(), c.particles.begin(), c.particles.end());
+  });
+  if (all.empty()) return;
+  world.set_resource<AnisotropicSplatPass>().renderer.upload(all);
+}
+
 void make_particle_renderer(ecs::World& world) {
+  make_anisotropic_pass(world);
   const RenderSettings& settings = world.resource<const RenderSettings>();
   if (settings.particles == ParticleShape::gaussian) return;
   if (settings.media_layers()) {
@@ -73,9 +86,25 @@ void draw_media(ecs::World& world, const EyeDrawLists& lists, const View& view, 
                     frame.eyes[v].media_combined->width(), *frame.eyes[v].scene);
 }
 
-void draw_billboards(ecs::World& world) {
+// After the other particles, into the target they were drawn into (a view's layer, prepared
+// by them, or its scene target).
+void draw_anisotropic_clouds(ecs::World& world, bool layers_prepared) {
+  AnisotropicSplatPass* pass = world.try_resource<AnisotropicSplatPass>();
+  if (!pass) return;
+  const View& view = world.resource<const View>();
+  GpuFrame& frame = world.resource<GpuFrame>();
+  const size_t views = std::min(view.eyes.size(), frame.eyes.size());
+  for (size_t v = 0; v < views; ++v) {
+    const gpu::GpuPassScope scope("anisotropic particles", true);  // profiling hook
+    const EyeTargets& t = frame.eyes[v];
+    pass->renderer.draw(view.eyes[v], t.layer && layers_prepared ? *t.layer : *t.scene);
+  }
+}
+
+// Returns whether the views' layers were prepared (cleared, the scene's depth copied down).
+bool draw_particle_lists(ecs::World& world) {
   const EyeDrawLists* lists = world.try_resource<const EyeDrawLists>();
-  if (!lists) return;
+  if (!lists) return false;
   const View& view = world.resource<const View>();
   GpuFrame& frame = world.resource<GpuFrame>();
   const RenderSettings& settings = world.resource<const RenderSettings>();
@@ -86,11 +115,11 @@ void draw_billboards(ecs::World& world) {
     for (size_t v = 0; v < views; ++v)
       draw_particles_for_view(renderer, *lists, v, view.eyes[v], frame.eyes[v],
                               settings.alignment, BillboardShading::kernel);
-    return;
+    return true;
   }
   if (settings.media_layers()) {
     draw_media(world, *lists, view, frame, settings, views);
-    return;
+    return false;
   }
   SphereBillboardRenderer& spheres = world.resource<SphereBillboardRenderer>();
   for (size_t v = 0; v < views; ++v) {
@@ -101,16 +130,23 @@ void draw_billboards(ecs::World& world) {
                  t.scene->depth_texture(), t.scene->width(), t.scene->height(),
                  settings.particles == ParticleShape::planar, settings.billboard_sprites);
   }
+  return true;
+}
+
+void draw_billboards(ecs::World& world) {
+  draw_anisotropic_clouds(world, draw_particle_lists(world));
 }
 
 }  // namespace
 
 ecs::SystemDesc billboard_render_system() {
-  using Renderers = ecs::Writes<BillboardRenderer, ExplosionRenderer, SphereBillboardRenderer>;
+  using Renderers =
+      ecs::Writes<BillboardRenderer, ExplosionRenderer, SphereBillboardRenderer, AnisotropicSplatPass>;
   return {.name = "billboard_render",
           .phase = ecs::Phase::render,
           .access = ecs::Access::of<
-              ecs::Reads<EyeDrawLists, View, RenderSettings, FrameClock, ExplosionShading>,
+              ecs::Reads<EyeDrawLists, View, RenderSettings, FrameClock, ExplosionShading,
+                         AnisotropicCloud>,
               ecs::Writes<GpuFrame>, Renderers>(),
           .run = draw_billboards,
           .setup = make_particle_renderer,

@@ -13,27 +13,57 @@
 
 namespace pyro {
 
-void place_volume_particles(std::vector<GaussianParticle>& particles, const VolumeDescription& v) {
-  if (particles.empty()) return;
+namespace {
+
+// p' = at + scale (p - anchor), from the entry's placement and the particles' centres.
+struct Placement {
+  glm::dvec3 at{0.0}, anchor{0.0};
+  double scale = 1.0;
+  glm::dvec3 apply(const glm::dvec3& p) const { return at + scale * (p - anchor); }
+};
+
+template <class Centre>
+Placement placement_for(std::size_t n, Centre&& centre, const VolumeDescription& v) {
   glm::dvec3 lo(1e300), hi(-1e300);
-  for (const GaussianParticle& p : particles) {
-    lo = glm::min(lo, glm::dvec3(p.x, p.y, p.z));
-    hi = glm::max(hi, glm::dvec3(p.x, p.y, p.z));
+  for (std::size_t i = 0; i < n; ++i) {
+    lo = glm::min(lo, centre(i));
+    hi = glm::max(hi, centre(i));
   }
-  const glm::dvec3 anchor = v.anchor_center ? 0.5 * (lo + hi) : glm::dvec3(0.0);
-  double s = v.scale;
+  Placement p;
+  p.anchor = v.anchor_center ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+  p.scale = v.scale;
   if (v.size > 0.0f) {
     const glm::dvec3 extent = hi - lo;
     const double longest = std::max({extent.x, extent.y, extent.z});
-    s = longest > 0.0 ? double(v.size) / longest : 1.0;
+    p.scale = longest > 0.0 ? double(v.size) / longest : 1.0;
   }
-  const glm::dvec3 at(v.position);
+  p.at = glm::dvec3(v.position);
+  return p;
+}
+
+}  // namespace
+
+void place_volume_particles(std::vector<GaussianParticle>& particles, const VolumeDescription& v) {
+  if (particles.empty()) return;
+  const Placement place = placement_for(
+      particles.size(), [&](std::size_t i) { return glm::dvec3(particles[i].x, particles[i].y, particles[i].z); }, v);
   for (GaussianParticle& p : particles) {
-    const glm::dvec3 q = at + s * (glm::dvec3(p.x, p.y, p.z) - anchor);
+    const glm::dvec3 q = place.apply(glm::dvec3(p.x, p.y, p.z));
     p.x = float(q.x);
     p.y = float(q.y);
     p.z = float(q.z);
-    p.radius = float(s * p.radius);
+    p.radius = float(place.scale * p.radius);
+  }
+}
+
+void place_volume_particles(std::vector<AnisotropicGaussian>& particles, const VolumeDescription& v) {
+  if (particles.empty()) return;
+  const Placement place =
+      placement_for(particles.size(), [&](std::size_t i) { return glm::dvec3(particles[i].centre); }, v);
+  for (AnisotropicGaussian& g : particles) {
+    g.centre = glm::vec3(place.apply(glm::dvec3(g.centre)));
+    g.scale = glm::vec3(place.scale * glm::dvec3(g.scale));
+    g.extinction = float(double(g.extinction) / place.scale);
   }
 }
 
@@ -43,10 +73,8 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
   try {
     if (v.kind == VolumeFileKind::particles) {
       ParticleFile file = read_particle_file(v.path);
-      if (!file.anisotropic.empty())
-        throw UserError(v.path, "", "a version 1 particle file (isotropic Gaussian particles), "
-                                    "found anisotropic particles (version 2)");
       out.particles = std::move(file.particles);
+      out.anisotropic = std::move(file.anisotropic);
     } else {
       const DenseGrid grid = read_vdb_grid(v.path, {v.grid, v.grid_index}, &out.note);
       out.grid = grid.name;
@@ -65,6 +93,7 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
     throw UserError(scene.file, place, std::string("cannot use volume file: ") + e.what());
   }
   place_volume_particles(out.particles, v);
+  place_volume_particles(out.anisotropic, v);
   return out;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// A scene's `volumes[]` entry made into Gaussian particles: a particle file is read as it is, an
+// A scene's `volumes[]` entry made into Gaussian particles: a particle file is read as it is
+// (isotropic particles from a version 1 file, anisotropic ones from a version 2 file), an
 // OpenVDB grid is imported (cloud_import.h) with the scene's light, then the placement
 // (position, scale or size, anchor; systems/scene/scene_description.h) is applied.
 #include <cstdint>
@@ -8,6 +9,7 @@
 
 #include "engine/particles/particle_pool.h"
 
+#include "engine/particles/anisotropic_gaussian.h"
 #include "engine/particles/gaussian_particle.h"
 #include "systems/scene/scene_description.h"
 
@@ -15,6 +17,8 @@ namespace pyro {
 
 struct SceneVolume {
   std::vector<GaussianParticle> particles;
+  std::vector<AnisotropicGaussian> anisotropic;  // a version 2 particle file's (then `particles`
+                                                 // is empty)
   uint64_t active_voxels = 0;  // of the imported grid (0 for a particle file)
   std::string grid;            // the grid imported (empty for a particle file)
   std::string note;            // the reader's note when the grid was chosen by default
@@ -32,5 +36,8 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
 ParticlePool to_particle_pool(const std::vector<GaussianParticle>& particles);
 
 void place_volume_particles(std::vector<GaussianParticle>& particles, const VolumeDescription& volume);
+// The same for anisotropic particles: centres placed alike, scales times s, extinction over s (so
+// optical depths, and opacities, stay).
+void place_volume_particles(std::vector<AnisotropicGaussian>& particles, const VolumeDescription& volume);
 
 }  // namespace pyro

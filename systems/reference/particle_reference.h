@@ -13,6 +13,7 @@
 // its optical depth is at most `max_piece_depth`; each piece adds T (1 - exp(-dtau)) times the
 // dtau-weighted mean colour and multiplies T by exp(-dtau). Optical depth is exact; the colour
 // mixing is exact for one colour and converges as pieces shrink.
+// (The cutting and mixing are ray_pieces.h, shared with anisotropic_reference.h.)
 #include <vector>
 
 #include "components/volume_medium.h"

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "components/anisotropic_cloud.h"
 #include "components/camera.h"
 #include "components/camera_orbit.h"
 #include "components/cloud_volume.h"
@@ -54,11 +55,15 @@ void add_clouds(ecs::World& world, const SceneDescription& scene) {
 }
 
 // Volumes: particles fixed since loading; the sorting and billboard systems draw them like any
-// other ParticleSet.
+// other ParticleSet. Anisotropic particles (a version 2 particle file) are an AnisotropicCloud,
+// drawn by the billboard system's anisotropic pass.
 void add_volumes(ecs::World& world, std::vector<VolumeAsset>& volumes) {
   for (VolumeAsset& v : volumes) {
     const ecs::Entity e = world.create();
-    world.emplace<ParticleSet>(e, ParticleSet{std::move(v.particles)});
+    if (!v.anisotropic.empty())
+      world.emplace<AnisotropicCloud>(e, AnisotropicCloud{std::move(v.anisotropic)});
+    else
+      world.emplace<ParticleSet>(e, ParticleSet{std::move(v.particles)});
     world.emplace<VolumeSource>(e, std::move(v.source));
   }
 }

@@ -1,5 +1,7 @@
 #include "systems/scene_runtime/load_scene_assets.h"
 
+#include <utility>
+
 #include "systems/cloud_import/scene_volume.h"
 #include "systems/scene_runtime/flipbook_bake.h"
 #include "systems/scene_runtime/resolve_scene.h"
@@ -29,9 +31,9 @@ void load_volumes(const SceneDescription& scene, SceneAssets& assets, const Note
     note(volume_file_note(scene, v));
     SceneVolume loaded = load_scene_volume(scene, v);
     if (!loaded.note.empty()) note(v.path + ": " + loaded.note);
-    assets.volumes.push_back(
-        {to_particle_pool(loaded.particles),
-         VolumeSource{v.path, v.used_fallback, loaded.active_voxels, loaded.particles.size()}});
+    const uint64_t count = loaded.particles.size() + loaded.anisotropic.size();
+    assets.volumes.push_back({to_particle_pool(loaded.particles), std::move(loaded.anisotropic),
+                              VolumeSource{v.path, v.used_fallback, loaded.active_voxels, count}});
   }
 }
 

@@ -1,12 +1,13 @@
 #pragma once
 // What a scene needs from files, read before its world is built: the volumes' particles
-// (particle files read, VDB grids imported) and the flipbooks' frames (read from their folders,
+// (particle files read, isotropic or anisotropic; VDB grids imported) and the flipbooks' frames (read from their folders,
 // prepared; the engine's default flipbook baked first when missing). Plain data:
 // load_scene_assets.h makes it, build_world.h consumes it.
 #include <string>
 #include <vector>
 
 #include "components/volume_source.h"
+#include "engine/particles/anisotropic_gaussian.h"
 #include "engine/particles/particle_pool.h"
 #include "systems/flipbook_fire/flipbook_world.h"
 
@@ -14,6 +15,7 @@ namespace pyro {
 
 struct VolumeAsset {
   ParticlePool particles;  // exactly sized, fixed after loading
+  std::vector<AnisotropicGaussian> anisotropic;  // a version 2 particle file's particles
   VolumeSource source;
 };
 
