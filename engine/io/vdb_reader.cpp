@@ -322,15 +322,24 @@ void sparsify_into(const GridT& grid, GridHeader head, const std::string& path, 
     end_sparse_grid(out, active, 0.0f);
     return;
   }
+  // The box's sides in 64 bits (OpenVDB's dim() overflows for boxes spanning the index range).
+  int64_t side[3];
+  double bricks_in_box = 1.0;
+  bool long_side = false;
+  for (int a = 0; a < 3; ++a) {
+    side[a] = int64_t(box.max()[a]) - int64_t(box.min()[a]) + 1;
+    bricks_in_box *= double((side[a] + kSide - 1) / kSide);
+    long_side = long_side || side[a] > (int64_t{1} << 30);
+  }
+  if (bricks_in_box > double(SparseGrid::kMaxBoxBricks) || long_side)
+    throw UserError("", quote(grid.getName()),
+                    "a grid whose active bounding box has at most 2^37 voxels (2^28 bricks of 8^3) and "
+                    "sides of at most 2^30, found " +
+                        std::to_string(side[0]) + " x " + std::to_string(side[1]) + " x " + std::to_string(side[2]));
   for (int a = 0; a < 3; ++a) {
     head.origin[a] = box.min()[a];
-    head.dims[a] = box.dim()[a];
+    head.dims[a] = int(side[a]);
   }
-  if (box_bricks(brick_dims_for(head.dims)) > SparseGrid::kMaxBoxBricks)
-    throw UserError("", quote(grid.getName()),
-                    "a grid whose active bounding box has at most 2^37 voxels (2^28 bricks of 8^3), found " +
-                        std::to_string(box.dim()[0]) + " x " + std::to_string(box.dim()[1]) + " x " +
-                        std::to_string(box.dim()[2]));
   BrickTable table(head);
   const GridPieces<GridT> pieces(grid);
   pieces.mark(box, table);
