@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <barrier>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <thread>
 
 #include <glm/geometric.hpp>
@@ -57,23 +59,46 @@ SweepGeometry sweep_geometry(const GridHeader& grid, const VolumeMedium& medium)
 
 // Two slices (the one being swept and the one towards the light) of density and depth, each row
 // zero-padded by kPad on both sides and kPad zero rows above and below, so that the bilinear
-// lookups need no bounds checks.
+// lookups need no bounds checks; and per row whether it holds anything but zeros (bits all 0).
 class SliceBuffers {
  public:
   explicit SliceBuffers(const SweepGeometry& g)
-      : stride_(size_t(g.n[g.p]) + 2 * kPad), rows_(size_t(g.n[g.q]) + 2 * kPad) {
+      : np_(size_t(g.n[g.p])), stride_(np_ + 2 * kPad), rows_(size_t(g.n[g.q]) + 2 * kPad) {
     for (int b = 0; b < 2; ++b) {
       density_[b].assign(stride_ * rows_, 0.0f);
       depth_[b].assign(stride_ * rows_, 0.0f);
+      live_[b].assign(rows_, 0);
     }
   }
   // Row j (may be -kPad .. n_q + kPad - 1) of buffer b: its first voxel.
   float* density(int b, int j) { return density_[b].data() + size_t(j + kPad) * stride_ + kPad; }
   float* depth(int b, int j) { return depth_[b].data() + size_t(j + kPad) * stride_ + kPad; }
+  bool live(int b, int j) const { return live_[b][size_t(j + kPad)] != 0; }
+  // Row j of buffer b after it was swept: notes whether it holds anything but zeros.
+  void note_row(int b, int j) {
+    const float* d = depth(b, j);
+    const float* f = density(b, j);
+    uint32_t bits = 0;
+    for (size_t i = 0; i < np_; ++i) {
+      uint32_t u, v;
+      std::memcpy(&u, d + i, sizeof u);
+      std::memcpy(&v, f + i, sizeof v);
+      bits |= u | v;
+    }
+    live_[b][size_t(j + kPad)] = bits != 0;
+  }
+  // Row j of buffer b made all zeros (what sweeping zeros gives), cheaply when it is already.
+  void clear_row(int b, int j) {
+    if (!live(b, j)) return;
+    std::fill(density(b, j), density(b, j) + np_, 0.0f);
+    std::fill(depth(b, j), depth(b, j) + np_, 0.0f);
+    live_[b][size_t(j + kPad)] = 0;
+  }
 
  private:
-  size_t stride_, rows_;
+  size_t np_, stride_, rows_;
   std::vector<float> density_[2], depth_[2];
+  std::vector<uint8_t> live_[2];
 };
 
 // Row j of a slice: the depth one slice towards the light (bilinear in rows u0, u1 of depth and
@@ -100,12 +125,14 @@ void sweep_row(const SweepGeometry& g, bool first, const float* f, float* d, con
 }
 
 // The sweep, for any storage: gather(s, j, row) fills row j of slice s with density (n_p values
-// along p), scatter(s, j, depth, density) takes its depth. The rows of a slice are shared among
-// threads that meet at a barrier between slices (the next slice reads this one); every voxel's
-// value is computed by the same expression from the same inputs whoever computes it, so the result
-// does not depend on the thread count.
-template <class Gather, class Scatter>
-void sweep_slices(const SweepGeometry& g, int threads, Gather&& gather, Scatter&& scatter) {
+// along p), scatter(s, j, depth, density) takes its depth, and stored(s, j) says whether that row
+// may hold density (false: all 0). The rows of a slice are shared among threads that meet at a
+// barrier between slices (the next slice reads this one); every voxel's value is computed by the
+// same expression from the same inputs whoever computes it, so the result does not depend on the
+// thread count. A row without density whose two upstream rows are all zeros sweeps to zeros
+// (every product and sum of +0 is +0): it is cleared, not swept, and nothing is scattered.
+template <class Gather, class Scatter, class Stored>
+void sweep_slices(const SweepGeometry& g, int threads, Gather&& gather, Scatter&& scatter, Stored&& stored) {
   const int nq = g.n[g.q];
   int t = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
   t = std::max(1, std::min(t, nq));
@@ -116,11 +143,17 @@ void sweep_slices(const SweepGeometry& g, int threads, Gather&& gather, Scatter&
     for (int s = g.first; s >= 0 && s < g.n[g.a]; s -= g.sa, b ^= 1) {
       const bool first = s == g.first;
       for (int j = k; j < nq; j += t) {
+        const bool lit_from_above = !first && (buffers.live(b ^ 1, j + g.oq) || buffers.live(b ^ 1, j + g.oq + 1));
+        if (!lit_from_above && !stored(s, j)) {
+          buffers.clear_row(b, j);
+          continue;
+        }
         float* f = buffers.density(b, j);
         float* d = buffers.depth(b, j);
         gather(s, j, f);
         sweep_row(g, first, f, d, buffers.depth(b ^ 1, j + g.oq), buffers.depth(b ^ 1, j + g.oq + 1),
                   buffers.density(b ^ 1, j + g.oq), buffers.density(b ^ 1, j + g.oq + 1));
+        buffers.note_row(b, j);
         scatter(s, j, static_cast<const float*>(d), static_cast<const float*>(f));
       }
       sync.arrive_and_wait();  // the next slice reads this one
@@ -179,7 +212,8 @@ std::vector<float> light_optical_depth_sweep(const DenseGrid& grid, const Volume
       [&](int s, int j, const float* d, const float*) {
         const DenseRow r = dense_row(g, s, j);
         for (int i = 0; i < np; ++i) depth[r.start + size_t(i) * r.step] = d[i];
-      });
+      },
+      [](int, int) { return true; });
   return depth;
 }
 
@@ -208,6 +242,11 @@ std::vector<float> light_transmittance_sweep(const SparseGrid& grid, const Volum
           for (int i = 0; i < count; ++i)
             out[i * step] = f[i0 + i] != 0.0f ? std::exp(-d[i0 + i]) : 1.0f;
         });
+      },
+      [&](int s, int j) {
+        bool any = false;
+        for_each_brick_run(grid, g, s, j, [&](int32_t slot, int, int, int) { any = any || slot >= 0; });
+        return any;
       });
   return lit;
 }
