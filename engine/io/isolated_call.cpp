@@ -224,7 +224,8 @@ IsolationLimits& vdb_isolation_limits() {
 
 void run_isolated(const std::string& file, const std::string& what,
                   const std::function<void(ResultWriter&)>& work,
-                  const std::function<void(std::string_view)>& take, const IsolationLimits& limits) {
+                  const std::function<void(std::string_view)>& take, const IsolationLimits& limits,
+                  IsolatedRunStats* stats) {
   const Fd result(anonymous_file("pyro-isolated-result"));
   const Fd errors(anonymous_file("pyro-isolated-stderr"));
   const uint64_t memory = limits.memory_bytes ? limits.memory_bytes : default_memory_bytes();
@@ -237,8 +238,9 @@ void run_isolated(const std::string& file, const std::string& what,
   const auto start = std::chrono::steady_clock::now();
   const Fd child(static_cast<int>(::syscall(SYS_pidfd_open, pid, 0)));
   int status = 0;
+  struct rusage usage = {};
   for (;;) {
-    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
     if (done == pid) break;
     if (done < 0 && errno != EINTR)
       throw std::runtime_error(std::string("waitpid failed: ") + std::strerror(errno));
@@ -262,6 +264,7 @@ void run_isolated(const std::string& file, const std::string& what,
     }
   }
 
+  if (stats) stats->peak_rss_bytes = uint64_t(usage.ru_maxrss) * 1024;  // Linux: kilobytes
   const std::string err = read_all(errors.get());
   const std::string memory_note =
       " (the reader may use " + std::to_string(memory >> 20) + " MiB more address space)";

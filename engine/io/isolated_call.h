@@ -50,12 +50,18 @@ class ResultWriter {
   size_t size_ = 0, capacity_ = 0;
 };
 
+// What a run's child used: its peak resident memory (wait4's ru_maxrss).
+struct IsolatedRunStats {
+  uint64_t peak_rss_bytes = 0;
+};
+
 // Forks; the child runs `work`, and `take` receives the bytes it wrote (mapped, valid during the
 // call), or the UserError the child threw is rethrown. `file` and `what` ("reading the OpenVDB
 // file", ...) name the work in errors. Other exceptions in the child become
 // UserError(file, "", what + ": " + e.what()).
 void run_isolated(const std::string& file, const std::string& what,
                   const std::function<void(ResultWriter&)>& work,
-                  const std::function<void(std::string_view)>& take, const IsolationLimits& limits);
+                  const std::function<void(std::string_view)>& take, const IsolationLimits& limits,
+                  IsolatedRunStats* stats = nullptr);
 
 }  // namespace pyro

@@ -68,11 +68,9 @@ class Reader {
   size_t pos_ = 0;
 };
 
-uint64_t voxel_count(const std::array<int, 3>& dims) {
-  for (int d : dims)
-    if (d < 0) throw std::runtime_error("vdb transfer: negative dimension");
-  return uint64_t(dims[0]) * uint64_t(dims[1]) * uint64_t(dims[2]);
-}
+// Pads the result so that what follows starts at a multiple of 4 bytes from the start of the
+// result file (which is page-aligned): the values are filled in place as floats.
+void align_to_float(ResultWriter& out) { out.extend((4 - out.size() % 4) % 4); }
 
 }  // namespace
 
@@ -119,53 +117,66 @@ std::vector<VdbGridInfo> decode_grid_infos(std::string_view bytes) {
   return grids;
 }
 
-float* begin_dense_grid(ResultWriter& out, const std::string& note, const DenseGrid& d) {
+float* begin_sparse_grid(ResultWriter& out, const std::string& note, const GridHeader& h,
+                         const std::vector<int32_t>& slots, uint64_t bricks) {
   Writer w(out);
   w.put(note);
-  w.put(d.file);
-  w.put(d.name);
-  w.put(d.file_index);
-  w.put(d.index_to_world);
-  w.put(d.voxel_size);
-  w.put(d.converted_from_level_set);
-  w.put(d.half_float);
-  w.put(d.origin);
-  w.put(d.dims);
-  // Values start at a multiple of 4 bytes from the start of the result (the file is
-  // page-aligned), so they can be filled as floats in place.
-  const size_t pad = (4 - out.size() % 4) % 4;
-  out.extend(pad);
-  return reinterpret_cast<float*>(out.extend(voxel_count(d.dims) * sizeof(float)));
+  w.put(h.file);
+  w.put(h.name);
+  w.put(h.file_index);
+  w.put(h.index_to_world);
+  w.put(h.voxel_size);
+  w.put(h.converted_from_level_set);
+  w.put(h.half_float);
+  w.put(h.origin);
+  w.put(h.dims);
+  w.put<uint64_t>(slots.size());
+  out.append(slots.data(), slots.size() * sizeof(int32_t));
+  w.put<uint64_t>(bricks);
+  align_to_float(out);
+  return reinterpret_cast<float*>(out.extend(bricks * SparseGrid::kBrickVoxels * sizeof(float)));
 }
 
-void end_dense_grid(ResultWriter& out, uint64_t active_voxels, float max_value) {
+void end_sparse_grid(ResultWriter& out, uint64_t active_voxels, float max_value) {
   Writer w(out);
   w.put(active_voxels);
   w.put(max_value);
 }
 
-DenseGrid decode_dense_grid(std::string_view bytes, std::string* note) {
+SparseGrid decode_sparse_grid(std::string_view bytes, std::string* note) {
   // `bytes` starts one byte into the result file (after the run_isolated tag), so the padding
   // before the values is counted from there.
   Reader r(bytes);
-  DenseGrid d;
+  SparseGrid g;
   const std::string n = r.get_string();
   if (note) *note = n;
-  d.file = r.get_string();
-  d.name = r.get_string();
-  d.file_index = r.get<int>();
-  d.index_to_world = r.get<glm::dmat4>();
-  d.voxel_size = r.get<std::array<double, 3>>();
-  d.converted_from_level_set = r.get<bool>();
-  d.half_float = r.get<bool>();
-  d.origin = r.get<std::array<int, 3>>();
-  d.dims = r.get<std::array<int, 3>>();
+  g.file = r.get_string();
+  g.name = r.get_string();
+  g.file_index = r.get<int>();
+  g.index_to_world = r.get<glm::dmat4>();
+  g.voxel_size = r.get<std::array<double, 3>>();
+  g.converted_from_level_set = r.get<bool>();
+  g.half_float = r.get<bool>();
+  g.origin = r.get<std::array<int, 3>>();
+  g.dims = r.get<std::array<int, 3>>();
+  for (int d : g.dims)
+    if (d < 0) throw std::runtime_error("vdb transfer: negative dimension");
+  g.brick_dims = brick_dims_for(g.dims);
+  const uint64_t table = box_bricks(g.brick_dims);
+  if (table > SparseGrid::kMaxBoxBricks || r.get<uint64_t>() != table)
+    throw std::runtime_error("vdb transfer: brick table of the wrong size");
+  r.get_array(g.slots, table);
+  const uint64_t bricks = r.get<uint64_t>();
+  for (int32_t s : g.slots)
+    if (s < -1 || (s >= 0 && uint64_t(s) >= bricks)) throw std::runtime_error("vdb transfer: brick slot out of range");
   r.skip((4 - (r.pos() + 1) % 4) % 4);
-  r.get_array(d.values, voxel_count(d.dims));
-  d.active_voxels = r.get<uint64_t>();
-  d.max_value = r.get<float>();
+  if (bricks > (bytes.size() - r.pos()) / (SparseGrid::kBrickVoxels * sizeof(float)))
+    throw std::runtime_error("vdb transfer: short bricks");
+  r.get_array(g.values, bricks * SparseGrid::kBrickVoxels);
+  g.active_voxels = r.get<uint64_t>();
+  g.max_value = r.get<float>();
   r.done();
-  return d;
+  return g;
 }
 
 }  // namespace pyro

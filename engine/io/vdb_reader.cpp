@@ -4,8 +4,9 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
-#include <openvdb/tools/Dense.h>
 #include <openvdb/tools/LevelSetUtil.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <cerrno>
 #include <cmath>
@@ -22,13 +23,15 @@
 #include "engine/io/isolated_call.h"
 #include "engine/io/vdb_file_check.h"
 #include "engine/io/vdb_grid_transfer.h"
+#include "engine/volume/sparse_grid.h"
 
 namespace pyro {
 
 namespace {
 
-// Dense grids larger than this are refused rather than allocated (1 GiB of floats).
+// Dense copies larger than this are refused rather than allocated (1 GiB of floats).
 constexpr uint64_t kMaxDenseVoxels = uint64_t{1} << 28;
+constexpr int kSide = SparseGrid::kBrickSide;
 
 void initialize_openvdb() {
   static std::once_flag once;
@@ -118,45 +121,239 @@ auto guarded(const std::string& path, const std::string& place, F&& f) {
 
 std::string quote(const std::string& s) { return "\"" + s + "\""; }
 
-// Writes the grid made dense over its active bounding box into the child's result (`head`
-// holds the fields known before: file, name, transform, ...).
-template <class GridT>
-void densify_into(const GridT& grid, DenseGrid head, const std::string& note, ResultWriter& out) {
-  const openvdb::CoordBBox box = grid.evalActiveVoxelBoundingBox();
-  const uint64_t active = grid.activeVoxelCount();
-  if (active == 0 || box.empty()) {
-    head.dims = {0, 0, 0};
-    begin_dense_grid(out, note, head);
-    end_dense_grid(out, active, 0.0f);
-    return;
+// Which bricks of the box hold a value, as the table SparseGrid::slots: marked per brick, then
+// given slots in the table's order.
+class BrickTable {
+ public:
+  explicit BrickTable(const GridHeader& head) : origin_(head.origin), bd_(brick_dims_for(head.dims)) {
+    slots.assign(box_bricks(bd_), -1);
   }
-  const openvdb::Coord dim = box.dim();
-  const uint64_t n = uint64_t(dim[0]) * uint64_t(dim[1]) * uint64_t(dim[2]);
-  if (n > kMaxDenseVoxels)
-    throw UserError("", quote(grid.getName()),
-                    "a grid whose active bounding box has at most 2^28 voxels, found " +
-                        std::to_string(n));
-  for (int a = 0; a < 3; ++a) {
-    head.origin[a] = box.min()[a];
-    head.dims[a] = dim[a];
+  // Marks the bricks meeting the index box [lo, hi] (inclusive, inside the grid's box).
+  void mark(const openvdb::Coord& lo, const openvdb::Coord& hi) {
+    int b0[3], b1[3];
+    for (int a = 0; a < 3; ++a) {
+      b0[a] = (lo[a] - origin_[a]) / kSide;
+      b1[a] = (hi[a] - origin_[a]) / kSide;
+    }
+    for (int z = b0[2]; z <= b1[2]; ++z)
+      for (int y = b0[1]; y <= b1[1]; ++y)
+        for (int x = b0[0]; x <= b1[0]; ++x) slots[at(x, y, z)] = 0;
   }
-  float* values = begin_dense_grid(out, note, head);  // zero-filled: a fresh file region
-  // OpenVDB's dense copy walks the tree leaf by leaf (tiles included) on TBB's threads; the
-  // layout with x fastest matches DenseGrid's index (z * ny + y) * nx + x.
-  using Dense = openvdb::tools::Dense<float, openvdb::tools::LayoutXYZ>;
-  Dense dense(box, values);
-  openvdb::tools::copyToDense(grid, dense, /*serial=*/false);
-  float mx = 0.0f;
-  for (uint64_t i = 0; i < n; ++i) mx = std::max(mx, values[i]);
-  end_dense_grid(out, active, mx);
+  // Gives the marked bricks their slots; returns how many there are.
+  uint64_t assign() {
+    int32_t next = 0;
+    for (int32_t& s : slots) s = s < 0 ? -1 : next++;
+    return uint64_t(next);
+  }
+  // For c in the same leaf as lo (both inside the box): which of the 2 x 2 x 2 bricks from lo's
+  // it is in, as bit (dz * 2 + dy) * 2 + dx.
+  int brick_bit(const openvdb::Coord& lo, const openvdb::Coord& c) const {
+    int bit = 0;
+    for (int a = 2; a >= 0; --a) bit = bit * 2 + ((c[a] - origin_[a]) / kSide - (lo[a] - origin_[a]) / kSide);
+    return bit;
+  }
+  // Where index coordinate c's value goes among the bricks (c inside the box), or null when
+  // its brick is not stored (all its values are 0).
+  float* voxel(float* bricks, const openvdb::Coord& c) const {
+    const int x = c[0] - origin_[0], y = c[1] - origin_[1], z = c[2] - origin_[2];
+    const int32_t slot = slots[at(x / kSide, y / kSide, z / kSide)];
+    if (slot < 0) return nullptr;
+    return bricks + size_t(slot) * SparseGrid::kBrickVoxels + size_t(SparseGrid::in_brick(x, y, z));
+  }
+  std::vector<int32_t> slots;
+
+ private:
+  size_t at(int bx, int by, int bz) const { return (size_t(bz) * bd_[1] + size_t(by)) * bd_[0] + size_t(bx); }
+  std::array<int, 3> origin_, bd_;
+};
+
+// A box clipped to another; false when they do not meet.
+bool clip(const openvdb::CoordBBox& box, const openvdb::CoordBBox& to, openvdb::Coord& lo, openvdb::Coord& hi) {
+  lo = openvdb::Coord::maxComponent(box.min(), to.min());
+  hi = openvdb::Coord::minComponent(box.max(), to.max());
+  return lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2];
 }
+
+// What holds the grid's values: its leaves, and its active tiles with their boxes. Tiles that are
+// not active are the fog volume's background: 0, which absent voxels hold already.
+template <class GridT>
+struct GridPieces {
+  using LeafT = typename GridT::TreeType::LeafNodeType;
+  std::vector<const LeafT*> leaves;
+  std::vector<std::pair<openvdb::CoordBBox, float>> tiles;
+
+  explicit GridPieces(const GridT& grid) {
+    for (auto it = grid.tree().cbeginLeaf(); it; ++it) leaves.push_back(&*it);
+    auto tile = grid.cbeginValueOn();
+    tile.setMaxDepth(tile.getLeafDepth() - 1);  // tiles only, no leaf voxels
+    for (; tile; ++tile) {
+      openvdb::CoordBBox b;
+      if (!tile.isTileValue() || !tile.getBoundingBox(b)) continue;
+      tiles.emplace_back(b, static_cast<float>(*tile));
+    }
+  }
+  // Marks the bricks that will hold a value (bits not all 0): those of each leaf found on
+  // TBB's threads (a leaf meets at most 2 x 2 x 2 bricks), then marked in order.
+  void mark(const openvdb::CoordBBox& box, BrickTable& table) const {
+    std::vector<uint8_t> meets(leaves.size(), 0);  // bit (dz * 2 + dy) * 2 + dx: brick first + d
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i < r.end(); ++i) meets[i] = bricks_with_values(*leaves[i], box, table);
+    });
+    openvdb::Coord lo, hi;
+    for (size_t i = 0; i < leaves.size(); ++i) {
+      if (!meets[i] || !clip(leaves[i]->getNodeBoundingBox(), box, lo, hi)) continue;
+      for (int bit = 0; bit < 8; ++bit)
+        if (meets[i] >> bit & 1) {
+          const openvdb::Coord c = lo.offsetBy(kSide * (bit & 1), kSide * (bit >> 1 & 1), kSide * (bit >> 2));
+          table.mark(c, c);  // c: in that brick, maybe past the box
+        }
+    }
+    for (const auto& [b, v] : tiles)
+      if (v != 0.0f && clip(b, box, lo, hi)) table.mark(lo, hi);
+  }
+  // Which of the bricks that leaf meets inside the box get a value whose bits are not all 0.
+  static uint8_t bricks_with_values(const LeafT& leaf, const openvdb::CoordBBox& box, const BrickTable& table) {
+    openvdb::Coord lo, hi;
+    if (!clip(leaf.getNodeBoundingBox(), box, lo, hi)) return 0;
+    uint8_t meets = 0;
+    for (openvdb::Coord c = lo; c[2] <= hi[2]; ++c[2])
+      for (c[1] = lo[1]; c[1] <= hi[1]; ++c[1])
+        for (c[0] = lo[0]; c[0] <= hi[0]; ++c[0]) {
+          const float v = static_cast<float>(leaf.getValue(c));
+          uint32_t bits;
+          std::memcpy(&bits, &v, sizeof bits);
+          if (bits != 0) meets |= uint8_t(1u << table.brick_bit(lo, c));
+        }
+    return meets;
+  }
+  // Copies every leaf's values inside the box (all of them, active or not, as a dense copy
+  // would), the leaves spread over threads, then every active tile's value over its voxels.
+  void copy(const openvdb::CoordBBox& box, const BrickTable& table, float* values) const {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const tbb::blocked_range<size_t>& r) {
+      openvdb::Coord lo, hi;
+      for (size_t i = r.begin(); i < r.end(); ++i) {
+        const LeafT& leaf = *leaves[i];
+        if (!clip(leaf.getNodeBoundingBox(), box, lo, hi)) continue;
+        for (openvdb::Coord c = lo; c[2] <= hi[2]; ++c[2])
+          for (c[1] = lo[1]; c[1] <= hi[1]; ++c[1])
+            for (c[0] = lo[0]; c[0] <= hi[0]; ++c[0])
+              if (float* to = table.voxel(values, c)) *to = static_cast<float>(leaf.getValue(c));
+      }
+    });
+    openvdb::Coord lo, hi;
+    for (const auto& [b, v] : tiles) {
+      if (v == 0.0f || !clip(b, box, lo, hi)) continue;
+      for (openvdb::Coord c = lo; c[2] <= hi[2]; ++c[2])
+        for (c[1] = lo[1]; c[1] <= hi[1]; ++c[1])
+          for (c[0] = lo[0]; c[0] <= hi[0]; ++c[0]) *table.voxel(values, c) = v;
+    }
+  }
+};
 
 // Densities beyond this magnitude come from damaged bytes, not from a simulation.
 constexpr double kMaxDensity = 1e6;
 
-// Refuses what the importer and the renderer cannot take in: a non-finite or absurd density (the
-// grid and the voxel named) or a degenerate transform.
-void check_grid_values(const std::string& path, const DenseGrid& g) {
+// The largest value of the bricks (at least 0) and the first voxel, in the dense order (z, then
+// y, then x), whose value is not a finite density of magnitude at most 1e6 (none: -1).
+struct ValueScan {
+  float max = 0.0f;
+  int64_t first_bad = -1;
+  float bad_value = 0.0f;
+};
+
+ValueScan scan_values(const GridHeader& head, const std::vector<int32_t>& slots, const float* values) {
+  const std::array<int, 3> bd = brick_dims_for(head.dims);
+  ValueScan total;
+  std::mutex join;
+  tbb::parallel_for(tbb::blocked_range<int>(0, bd[2]), [&](const tbb::blocked_range<int>& r) {
+    ValueScan part;
+    for (int bz = r.begin(); bz < r.end(); ++bz)
+      for (int by = 0; by < bd[1]; ++by)
+        for (int bx = 0; bx < bd[0]; ++bx) {
+          const int32_t slot = slots[(size_t(bz) * bd[1] + size_t(by)) * bd[0] + size_t(bx)];
+          if (slot < 0) continue;
+          const float* brick = values + size_t(slot) * SparseGrid::kBrickVoxels;
+          for (int i = 0; i < SparseGrid::kBrickVoxels; ++i) {
+            const float v = brick[i];
+            part.max = std::max(part.max, v);
+            if (std::isfinite(v) && std::fabs(v) <= kMaxDensity) continue;
+            const int64_t x = bx * kSide + (i & 7), y = by * kSide + ((i >> 3) & 7), z = bz * kSide + (i >> 6);
+            const int64_t key = (z * head.dims[1] + y) * head.dims[0] + x;
+            if (part.first_bad < 0 || key < part.first_bad) {
+              part.first_bad = key;
+              part.bad_value = v;
+            }
+          }
+        }
+    const std::lock_guard<std::mutex> lock(join);
+    total.max = std::max(total.max, part.max);
+    if (part.first_bad >= 0 && (total.first_bad < 0 || part.first_bad < total.first_bad)) {
+      total.first_bad = part.first_bad;
+      total.bad_value = part.bad_value;
+    }
+  });
+  return total;
+}
+
+// Refuses a value the importer and the renderer cannot take in, naming the grid and the voxel.
+void check_values(const std::string& path, const GridHeader& head, const ValueScan& scan) {
+  if (scan.first_bad < 0) return;
+  const int64_t nx = head.dims[0], ny = head.dims[1];
+  const int64_t x = scan.first_bad % nx, y = (scan.first_bad / nx) % ny, z = scan.first_bad / (nx * ny);
+  char found[64];
+  std::snprintf(found, sizeof found, "%g", static_cast<double>(scan.bad_value));
+  throw UserError(path,
+                  "grid " + quote(head.name) + ", voxel (" + std::to_string(head.origin[0] + x) + ", " +
+                      std::to_string(head.origin[1] + y) + ", " + std::to_string(head.origin[2] + z) + ")",
+                  "a finite density of magnitude at most 1e6, found " + std::string(found));
+}
+
+// Writes the grid into the child's result as bricks of its active bounding box (`head` holds
+// the fields known before: file, name, transform, ...), leaf by leaf and tile by tile: no dense
+// copy, memory in proportion to the active voxels.
+template <class GridT>
+void sparsify_into(const GridT& grid, GridHeader head, const std::string& path, const std::string& note,
+                   ResultWriter& out) {
+  const openvdb::CoordBBox box = grid.evalActiveVoxelBoundingBox();
+  const uint64_t active = grid.activeVoxelCount();
+  if (active == 0 || box.empty()) {
+    head.dims = {0, 0, 0};
+    begin_sparse_grid(out, note, head, {}, 0);
+    end_sparse_grid(out, active, 0.0f);
+    return;
+  }
+  // The box's sides in 64 bits (OpenVDB's dim() overflows for boxes spanning the index range).
+  int64_t side[3];
+  double bricks_in_box = 1.0;
+  bool long_side = false;
+  for (int a = 0; a < 3; ++a) {
+    side[a] = int64_t(box.max()[a]) - int64_t(box.min()[a]) + 1;
+    bricks_in_box *= double((side[a] + kSide - 1) / kSide);
+    long_side = long_side || side[a] > (int64_t{1} << 30);
+  }
+  if (bricks_in_box > double(SparseGrid::kMaxBoxBricks) || long_side)
+    throw UserError("", quote(grid.getName()),
+                    "a grid whose active bounding box has at most 2^37 voxels (2^28 bricks of 8^3) and "
+                    "sides of at most 2^30, found " +
+                        std::to_string(side[0]) + " x " + std::to_string(side[1]) + " x " + std::to_string(side[2]));
+  for (int a = 0; a < 3; ++a) {
+    head.origin[a] = box.min()[a];
+    head.dims[a] = int(side[a]);
+  }
+  BrickTable table(head);
+  const GridPieces<GridT> pieces(grid);
+  pieces.mark(box, table);
+  const uint64_t bricks = table.assign();
+  float* values = begin_sparse_grid(out, note, head, table.slots, bricks);  // zeroed
+  pieces.copy(box, table, values);
+  const ValueScan scan = scan_values(head, table.slots, values);
+  check_values(path, head, scan);
+  end_sparse_grid(out, active, scan.max);
+}
+
+// Refuses what the importer and the renderer cannot take in (the values are checked in the
+// child, as they are copied): a degenerate transform.
+void check_grid_header(const std::string& path, const GridHeader& g) {
   const std::string grid = quote(g.name);
   for (int a = 0; a < 3; ++a)
     if (!std::isfinite(g.voxel_size[a]) || !(g.voxel_size[a] > 1e-9 && g.voxel_size[a] < 1e9))
@@ -166,19 +363,6 @@ void check_grid_values(const std::string& path, const DenseGrid& g) {
     for (int r = 0; r < 4; ++r)
       if (!std::isfinite(g.index_to_world[c][r]))
         throw UserError(path, "grid " + grid, "a finite index-to-world transform");
-  size_t i = 0;
-  for (int z = 0; z < g.dims[2]; ++z)
-    for (int y = 0; y < g.dims[1]; ++y)
-      for (int x = 0; x < g.dims[0]; ++x, ++i) {
-        const float v = g.values[i];
-        if (std::isfinite(v) && std::fabs(v) <= kMaxDensity) continue;
-        char found[64];
-        std::snprintf(found, sizeof found, "%g", static_cast<double>(v));
-        throw UserError(path,
-                        "grid " + grid + ", voxel (" + std::to_string(g.origin[0] + x) + ", " +
-                            std::to_string(g.origin[1] + y) + ", " + std::to_string(g.origin[2] + z) + ")",
-                        "a finite density of magnitude at most 1e6, found " + std::string(found));
-      }
 }
 
 }  // namespace
@@ -263,7 +447,7 @@ void read_grid_in_this_process(const std::string& path, const VdbGridChoice& cho
   for (int i = 0; i < pick; ++i) repeat += grids[i].name == info.name;
   const std::string unique = repeat == 0 ? info.name : info.name + "[" + std::to_string(repeat) + "]";
 
-  DenseGrid head;
+  GridHeader head;
   head.file = path;
   head.name = info.name;
   head.file_index = pick;
@@ -278,10 +462,10 @@ void read_grid_in_this_process(const std::string& path, const VdbGridChoice& cho
     head.converted_from_level_set = base->getGridClass() == openvdb::GRID_LEVEL_SET;
     if (auto fg = openvdb::GridBase::grid<openvdb::FloatGrid>(base)) {
       if (head.converted_from_level_set) openvdb::tools::sdfToFogVolume(*fg);
-      densify_into(*fg, head, note_text, out);
+      sparsify_into(*fg, head, path, note_text, out);
     } else if (auto dg = openvdb::GridBase::grid<openvdb::DoubleGrid>(base)) {
       if (head.converted_from_level_set) openvdb::tools::sdfToFogVolume(*dg);
-      densify_into(*dg, head, note_text, out);
+      sparsify_into(*dg, head, path, note_text, out);
     } else {
       throw UserError(path, place, "a float grid, found tree type " + base->type());
     }
@@ -322,9 +506,11 @@ void write_fog_volume_in_this_process(const std::string& path, const std::string
 
 }  // namespace
 
-// The child's limits for this file: unless set, 2.5 GiB (the largest dense grid, 1 GiB, twice,
-// and room for OpenVDB) plus 64 bytes a byte of file (its trees decompressed), at most half the
-// machine's memory (run_isolated's default, applied when this is larger).
+// The child's limits for this file: unless set, 2.5 GiB (room for OpenVDB and for a grid of up to
+// 2^28 voxels twice, as its tree and as bricks) plus 64 bytes a byte of file (its trees
+// decompressed, then copied into bricks), at most half the machine's memory (run_isolated's
+// default, applied when this is larger). A 10 KB file that asks for gigabytes is refused; a
+// 2 GB file of 5·10^8 voxels may use half the machine.
 static IsolationLimits limits_for(const std::string& path) {
   IsolationLimits limits = vdb_isolation_limits();
   if (limits.memory_bytes == 0) {
@@ -349,22 +535,34 @@ std::vector<VdbGridInfo> list_vdb_grids(const std::string& path) {
   return grids;
 }
 
-DenseGrid read_vdb_grid(const std::string& path, const VdbGridChoice& choice, std::string* note) {
+SparseGrid read_vdb_grid_sparse(const std::string& path, const VdbGridChoice& choice,
+                                std::string* note, VdbReadStats* stats) {
   check_file(path);
   check_vdb_file_structure(path);
   // The child's result: the note's length and text, then the grid.
-  DenseGrid grid;
+  SparseGrid grid;
+  IsolatedRunStats run;
   run_isolated(
       path, "reading the OpenVDB file",
       [&](ResultWriter& out) { read_grid_in_this_process(path, choice, out); },
       [&](std::string_view bytes) {
         std::string child_note;
-        grid = decode_dense_grid(bytes, &child_note);
+        grid = decode_sparse_grid(bytes, &child_note);
         if (note && !child_note.empty()) *note = child_note;
       },
-      limits_for(path));
-  check_grid_values(path, grid);
+      limits_for(path), &run);
+  check_grid_header(path, grid);
+  if (stats) stats->child_peak_rss_bytes = run.peak_rss_bytes;
   return grid;
+}
+
+DenseGrid read_vdb_grid(const std::string& path, const VdbGridChoice& choice, std::string* note) {
+  const SparseGrid grid = read_vdb_grid_sparse(path, choice, note);
+  if (grid.box_voxels() > kMaxDenseVoxels)
+    throw UserError(path, "grid " + quote(grid.name),
+                    "a grid whose active bounding box has at most 2^28 voxels for a dense copy, found " +
+                        std::to_string(grid.box_voxels()));
+  return dense_from_sparse(grid);
 }
 
 void write_vdb_fog_volume(const std::string& path, const std::string& grid_name,

@@ -5,14 +5,22 @@
 //
 // Coordinates: OpenVDB stores a value at every integer index coordinate (i, j, k), the voxel
 // centre; its transform maps index space to world space. We keep that transform as a 4x4 affine
-// matrix (column vectors: world = index_to_world * (i, j, k, 1)). Non-affine maps (frustum) are
-// refused.
+// matrix (column vectors: world = index_to_world * (i, j, k, 1); engine/volume/grid_header.h).
+// Non-affine maps (frustum) are refused.
+//
+// A grid is read sparse (engine/volume/sparse_grid.h): the child process walks the tree's leaves
+// and active tiles and writes bricks of 8^3 voxels into the shared result file, so memory grows
+// with the active voxels; a dense copy (engine/volume/dense_grid.h) is made from it for the grids
+// small enough to have one.
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+
+#include "engine/volume/dense_grid.h"
+#include "engine/volume/sparse_grid.h"
 
 namespace pyro {
 
@@ -32,29 +40,6 @@ struct VdbGridInfo {
   bool is_float() const { return value_type == "float" || value_type == "double"; }
 };
 
-// A float grid made dense over its active bounding box. Inactive voxels hold the background of a
-// fog volume (0). Element (x, y, z) holds index coordinate origin + (x, y, z).
-struct DenseGrid {
-  std::string file;
-  std::string name;
-  int file_index = 0;
-  std::array<int, 3> origin{0, 0, 0};
-  std::array<int, 3> dims{0, 0, 0};
-  std::vector<float> values;  // x fastest: values[(z * dims[1] + y) * dims[0] + x]
-  glm::dmat4 index_to_world{1.0};
-  std::array<double, 3> voxel_size{1, 1, 1};
-  uint64_t active_voxels = 0;
-  float max_value = 0.0f;
-  bool converted_from_level_set = false;
-  bool half_float = false;
-
-  bool empty() const { return values.empty(); }
-  size_t size() const { return values.size(); }
-  float at(int x, int y, int z) const {
-    return values[(static_cast<size_t>(z) * dims[1] + y) * dims[0] + x];
-  }
-};
-
 // Lists every grid of the file (names, types, classes, transforms, counts, bounds) without
 // reading voxel data. Throws UserError (file, "", why) for a missing, truncated or corrupt file.
 std::vector<VdbGridInfo> list_vdb_grids(const std::string& path);
@@ -64,12 +49,24 @@ struct VdbGridChoice {
   int index = -1;    // >= 0: the grid at this position in the file (overrides name)
 };
 
-// Reads one float grid as a dense fog volume: level sets become fog volumes (OpenVDB's
+// Reads one float grid as a sparse fog volume: level sets become fog volumes (OpenVDB's
 // sdfToFogVolume: 0 outside, rising to 1 inside across the narrow band), half floats are
-// widened. Throws UserError naming the file, the grid and what the file holds when the choice
-// is not a float grid, when no float grid exists, when the transform is not affine, or when the
-// file is truncated or corrupt. `note` (if given) receives a line saying which grid was chosen
-// when it was not named explicitly.
+// widened, leaves are copied whole (inactive voxels included) and active tiles voxel by voxel;
+// inactive tiles are the background, 0. Throws UserError naming the file, the grid and what the
+// file holds when the choice is not a float grid, when no float grid exists, when the transform
+// is not affine, when the file is truncated or corrupt, when a value is not a finite density of
+// magnitude at most 1e6 (naming the voxel), or when the active box has over 2^37 voxels. `note`
+// (if given) receives a line saying which grid was chosen when it was not named explicitly;
+// `stats` (if given) what the child process used.
+struct VdbReadStats {
+  uint64_t child_peak_rss_bytes = 0;  // the reading child's peak resident memory
+};
+SparseGrid read_vdb_grid_sparse(const std::string& path, const VdbGridChoice& choice = {},
+                                std::string* note = nullptr, VdbReadStats* stats = nullptr);
+
+// The same grid made dense over its active bounding box (read_vdb_grid_sparse, then
+// dense_from_sparse). Also refuses a grid whose box has over 2^28 voxels (1 GiB of floats): those
+// are read sparse.
 DenseGrid read_vdb_grid(const std::string& path, const VdbGridChoice& choice = {},
                         std::string* note = nullptr);
 

@@ -27,6 +27,7 @@
 #include "engine/particles/gaussian_particle.h"
 #include "components/volume_medium.h"
 #include "engine/io/vdb_reader.h"
+#include "engine/volume/sparse_grid.h"
 
 namespace pyro {
 
@@ -46,13 +47,21 @@ struct CloudImportReport {
   double fit_seconds = 0.0;
 };
 
+// The grid as Gaussian particles. Memory in proportion to the active voxels: the light sweep keeps
+// two slices of the box's cross-section, the transmittance and the pyramid's levels up to blocks
+// of 8^3 live in the grid's bricks, coarser levels are dense over the box (1/4096 of it). The
+// particles and their order are the same for every thread count.
+std::vector<GaussianParticle> import_cloud(const SparseGrid& grid, const CloudImportOptions& options,
+                                           CloudImportReport* report = nullptr);
+// The same for a dense grid (made sparse first, sparse_from_dense): bit for bit the particles of
+// the sparse form of the same grid.
 std::vector<GaussianParticle> import_cloud(const DenseGrid& grid, const CloudImportOptions& options,
                                            CloudImportReport* report = nullptr);
 
 // Default extinction for a grid: chosen so that a ray crossing the grid's densest line of
 // voxels along its shortest axis sees an optical depth of `target_depth`... in practice
 // extinction = target_depth / (max_value * shortest world extent of the active box).
-double default_extinction(const DenseGrid& grid, double target_depth = 8.0);
+double default_extinction(const GridHeader& grid, double target_depth = 8.0);
 
 // The importer's per-block optical depth tolerance for an image error target E (an RMSE of linear
 // colour in [0, 1]). An optical depth error dtau changes a pixel by at most |dtau| times the
@@ -62,6 +71,6 @@ double default_extinction(const DenseGrid& grid, double target_depth = 8.0);
 double tau_tolerance_for_error(double error);
 
 // The world-space axis-aligned bounds of the grid's index box (voxel centres +- 0.5).
-void grid_world_bounds(const DenseGrid& grid, glm::dvec3& lo, glm::dvec3& hi);
+void grid_world_bounds(const GridHeader& grid, glm::dvec3& lo, glm::dvec3& hi);
 
 }  // namespace pyro

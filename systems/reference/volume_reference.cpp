@@ -13,7 +13,7 @@
 
 namespace pyro {
 
-glm::dmat4 world_to_local_index(const DenseGrid& grid) {
+glm::dmat4 world_to_local_index(const GridHeader& grid) {
   glm::dmat4 shift(1.0);
   shift[3] = glm::dvec4(-grid.origin[0], -grid.origin[1], -grid.origin[2], 1.0);
   return shift * glm::inverse(grid.index_to_world);

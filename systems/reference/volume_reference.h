@@ -20,7 +20,7 @@ namespace pyro {
 
 // Inverse of the grid's index-to-world map, with the grid origin folded in, so that local index
 // coordinates (0 = first stored voxel) come out.
-glm::dmat4 world_to_local_index(const DenseGrid& grid);
+glm::dmat4 world_to_local_index(const GridHeader& grid);
 
 // Optical depth from each voxel centre to the light (dense, same layout as grid.values).
 // Voxels whose 3x3x3 neighbourhood has no density get 0 (nothing samples them).

@@ -16,10 +16,11 @@ void add_view_command(CLI::App& app);  // command_view.cpp: the interactive view
 void add_chart_command(CLI::App& app);  // command_chart.cpp
 // Registered under `pyro analyze` by add_analyze_commands.
 void add_billboard_mode_analysis(CLI::App& analyze);
-// `pyro bench vdb` and `pyro bench schedule` (bench_schedule.cpp), registered by
+// `pyro bench vdb`, `pyro bench schedule` (bench_schedule.cpp) and `pyro bench import-scale`, registered by
 // add_bench_commands.
 void add_bench_vdb_command(CLI::App& bench);
 void add_bench_schedule_command(CLI::App& bench);
+void add_bench_import_scale_command(CLI::App& bench);  // command_bench_import_scale.cpp
 
 // Subcommands of `pyro analyze`, registered by add_analyze_commands.
 void add_analyze_projection_error_command(CLI::App& analyze);  // command_analyze_alignment.cpp

@@ -1,0 +1,69 @@
+// pyro bench import-scale [--voxels N] [--keep FILE] [--source FILE] [--error E] [--threads T] [--json]
+// The VDB import at production sizes (systems/benchmarks/import_scale.h): a synthetic file of at
+// least N active voxels read sparse and imported, voxels per second and peak resident memory.
+#include <unistd.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "systems/benchmarks/import_scale.h"
+#include "tools/pyro/commands.h"
+#include "tools/pyro/progress.h"
+
+namespace pyro::cli {
+
+namespace {
+
+void print_note(const std::string& line) { std::fprintf(stderr, "pyro bench import-scale: %s\n", line.c_str()); }
+
+void print_import_scale(const nlohmann::json& j) {
+  const double gib = double(uint64_t{1} << 30);
+  std::printf("%llu active voxels (%llu bricks of 8^3, box %llu voxels), file %.2f GiB%s\n",
+              j["active_voxels"].get<unsigned long long>(), j["bricks"].get<unsigned long long>(),
+              j["box_voxels"].get<unsigned long long>(), j["file_bytes"].get<double>() / gib,
+              j["generated"].get<bool>() ? " (written for this run)" : "");
+  std::printf("read %.2f s, import %.2f s (light %.2f s, pyramid and octree %.2f s): %.2f M active voxels/s, "
+              "%llu particles\n",
+              j["read_seconds"].get<double>(), j["import_seconds"].get<double>(), j["light_seconds"].get<double>(),
+              j["fit_seconds"].get<double>(), j["voxels_per_second"].get<double>() / 1e6,
+              j["particles"].get<unsigned long long>());
+  std::printf("peak resident memory: engine %.2f GiB, reading child %.2f GiB\n",
+              j["parent_peak_rss_bytes"].get<double>() / gib, j["child_peak_rss_bytes"].get<double>() / gib);
+}
+
+}  // namespace
+
+void add_bench_import_scale_command(CLI::App& bench) {
+  struct Args {
+    ImportScaleOptions options;
+    bool json = false;
+  };
+  auto args = std::make_shared<Args>();
+  ImportScaleOptions& o = args->options;
+  CLI::App* cmd = bench.add_subcommand(
+      "import-scale", "A synthetic VDB of at least N active voxels read sparse and imported: voxels per second, "
+                      "peak resident memory");
+  cmd->add_option("--voxels", o.voxels, "Active voxels in the synthetic file (default 2e8)")
+      ->check(CLI::Range(uint64_t(1000), uint64_t(4000000000)));
+  cmd->add_option("--keep", o.keep, "Keep the synthetic file here (reused when it exists)");
+  cmd->add_option("--source", o.source, "The small .vdb to resample (default: the Disney cloud beside the "
+                                        "checkout, else the procedural cloud)");
+  cmd->add_option("--error", o.error, "The import's error target (default 0.03)")->check(CLI::Range(1e-6, 1.0));
+  cmd->add_option("--threads", o.threads, "Import threads (0: one per core)")->check(CLI::Range(0, 256));
+  cmd->add_flag("--json", args->json, "Print one JSON object");
+  cmd->callback([args] {
+    args->options.progress = terminal_progress();
+    args->options.on_note = print_note;
+    args->options.progress_fd = STDERR_FILENO;
+    const nlohmann::json j = bench_import_scale(args->options);
+    if (args->json)
+      std::printf("%s\n", j.dump().c_str());
+    else
+      print_import_scale(j);
+  });
+}
+
+}  // namespace pyro::cli
