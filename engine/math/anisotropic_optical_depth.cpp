@@ -21,12 +21,16 @@ glm::dmat3 whitening_matrix(const AnisotropicGaussian& g) {
 
 AnisotropicRaySegment anisotropic_ray_segment(const AnisotropicGaussian& g, const glm::dvec3& o,
                                               const glm::dvec3& w) {
-  AnisotropicRaySegment s;
   const glm::dmat3 m = whitening_matrix(g);
-  const glm::dvec3 u0 = m * (o - glm::dvec3(g.centre));
+  return anisotropic_ray_segment(m, m * (o - glm::dvec3(g.centre)), double(g.extinction), w);
+}
+
+AnisotropicRaySegment anisotropic_ray_segment(const glm::dmat3& m, const glm::dvec3& u0, double k,
+                                              const glm::dvec3& w) {
+  AnisotropicRaySegment s;
   const glm::dvec3 v = m * w;
   const double a = glm::dot(v, v);
-  if (!(a > 0.0) || g.extinction <= 0.0f) return s;
+  if (!(a > 0.0) || !(k > 0.0)) return s;
   const double tc = -glm::dot(u0, v) / a;
   const glm::dvec3 closest = u0 + tc * v;
   const double m2_min = glm::dot(closest, closest);
@@ -38,7 +42,7 @@ AnisotropicRaySegment anisotropic_ray_segment(const AnisotropicGaussian& g, cons
   s.t_enter = tc - h;
   s.t_exit = tc + h;
   s.rate = std::sqrt(0.5 * a);
-  s.peak = double(g.extinction) * std::exp(-0.5 * m2_min) * std::sqrt(std::numbers::pi / (2.0 * a));
+  s.peak = k * std::exp(-0.5 * m2_min) * std::sqrt(std::numbers::pi / (2.0 * a));
   return s;
 }
 

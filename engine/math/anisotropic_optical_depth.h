@@ -51,6 +51,10 @@ glm::dmat3 whitening_matrix(const AnisotropicGaussian& g);
 // The segment of the line o + t w (|w| = 1) through the particle.
 AnisotropicRaySegment anisotropic_ray_segment(const AnisotropicGaussian& g, const glm::dvec3& o,
                                               const glm::dvec3& w);
+// The same from the whitened terms, for many rays from one origin: m = whitening_matrix(g),
+// u0 = m (o - c), k the peak extinction.
+AnisotropicRaySegment anisotropic_ray_segment(const glm::dmat3& m, const glm::dvec3& u0, double k,
+                                              const glm::dvec3& w);
 
 // Optical depth of the particle along o + t w (|w| = 1) over t in [a, b], truncated to m <= 3.
 double anisotropic_optical_depth(const AnisotropicGaussian& g, const glm::dvec3& o,

@@ -40,19 +40,23 @@ bool pixel_span(const AnisotropicGaussian& g, const CameraFrame& camera, PixelSp
 RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& particles,
                                       const CameraFrame& camera, const glm::dvec3& background,
                                       int threads, double max_piece_depth) {
+  const glm::dvec3 eye(camera.eye);
   std::vector<std::size_t> visible;
   std::vector<PixelSpan> spans;
+  std::vector<glm::dmat3> whitening;  // per visible particle: M, and u0 = M (eye - c)
+  std::vector<glm::dvec3> eye_whitened;
   for (std::size_t i = 0; i < particles.size(); ++i) {
     PixelSpan s;
     if (!pixel_span(particles[i], camera, s)) continue;
     visible.push_back(i);
     spans.push_back(s);
+    whitening.push_back(whitening_matrix(particles[i]));
+    eye_whitened.push_back(whitening.back() * (eye - glm::dvec3(particles[i].centre)));
   }
   RgbImage img;
   img.width = camera.width;
   img.height = camera.height;
   img.rgb.assign(std::size_t(3) * img.width * img.height, 0.0f);
-  const glm::dvec3 eye(camera.eye);
   parallel_rows(img.height, threads, [&](int y) {
     std::vector<std::size_t> row;  // indices into visible / spans
     for (std::size_t k = 0; k < visible.size(); ++k)
@@ -68,7 +72,8 @@ RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& pa
       for (std::size_t k : row) {
         if (x < spans[k].x0 || x > spans[k].x1) continue;
         const std::size_t i = visible[k];
-        const AnisotropicRaySegment s = anisotropic_ray_segment(particles[i], eye, w);
+        const AnisotropicRaySegment s =
+            anisotropic_ray_segment(whitening[k], eye_whitened[k], double(particles[i].extinction), w);
         const double a = std::max(s.t_enter, 0.0), b = s.t_exit;
         if (!s.hit || b <= a) continue;
         pieces.add(a, b, s.t_closest, segments.size());

@@ -41,24 +41,37 @@ class RayPieces {
     glm::dvec3 radiance(0.0);
     double transmittance = 1.0;
     std::sort(cuts_.begin(), cuts_.end());
+    // A sweep along the ray: `active_` holds the particles that cover the current piece, in the
+    // order they were added (so every sum runs in the same order as over all particles). Every
+    // interval end is a cut, so particle h covers [a, b] (consecutive cuts, a < b) exactly when
+    // h.a <= a and h.b > a.
+    starts_.resize(hits_.size());
+    for (std::size_t i = 0; i < hits_.size(); ++i) starts_[i] = i;
+    std::sort(starts_.begin(), starts_.end(), [&](std::size_t x, std::size_t y) {
+      return hits_[x].a != hits_[y].a ? hits_[x].a < hits_[y].a : x < y;
+    });
+    active_.clear();
+    std::size_t next_start = 0;
     for (std::size_t c = 0; c + 1 < cuts_.size() && transmittance > 1e-7; ++c) {
       const double a = cuts_[c], b = cuts_[c + 1];
       if (b <= a) continue;
+      for (; next_start < starts_.size() && hits_[starts_[next_start]].a <= a; ++next_start)
+        active_.insert(std::lower_bound(active_.begin(), active_.end(), starts_[next_start]),
+                       starts_[next_start]);
+      std::erase_if(active_, [&](std::size_t h) { return hits_[h].b <= a; });
       // The optical depth of the whole piece decides how finely it is split for colour mixing.
       double total = 0.0;
-      for (const Hit& h : hits_)
-        if (h.a <= a && h.b >= b) total += depth(h.element, a, b);
+      for (std::size_t h : active_) total += depth(hits_[h].element, a, b);
       const int parts = std::max(1, int(std::ceil(total / max_piece_depth)));
       for (int k = 0; k < parts; ++k) {
         const double pa = a + (b - a) * k / parts, pb = a + (b - a) * (k + 1) / parts;
         double dtau = 0.0;
         glm::dvec3 col(0.0);
-        for (const Hit& h : hits_)
-          if (h.a <= a && h.b >= b) {
-            const double t = depth(h.element, pa, pb);
-            dtau += t;
-            col += t * colour(h.element);
-          }
+        for (std::size_t h : active_) {
+          const double t = depth(hits_[h].element, pa, pb);
+          dtau += t;
+          col += t * colour(hits_[h].element);
+        }
         if (dtau <= 0.0) continue;
         const double alpha = -std::expm1(-dtau);
         radiance += transmittance * alpha * (col / dtau);
@@ -75,6 +88,7 @@ class RayPieces {
   };
   std::vector<Hit> hits_;
   std::vector<double> cuts_;
+  std::vector<std::size_t> starts_, active_;  // integrate's sweep, kept to reuse their memory
 };
 
 }  // namespace pyro
