@@ -29,8 +29,6 @@ namespace pyro {
 
 namespace {
 
-// Dense copies larger than this are refused rather than allocated (1 GiB of floats).
-constexpr uint64_t kMaxDenseVoxels = uint64_t{1} << 28;
 constexpr int kSide = SparseGrid::kBrickSide;
 
 void initialize_openvdb() {
@@ -558,7 +556,7 @@ SparseGrid read_vdb_grid_sparse(const std::string& path, const VdbGridChoice& ch
 
 DenseGrid read_vdb_grid(const std::string& path, const VdbGridChoice& choice, std::string* note) {
   const SparseGrid grid = read_vdb_grid_sparse(path, choice, note);
-  if (grid.box_voxels() > kMaxDenseVoxels)
+  if (grid.box_voxels() > kMaxDenseGridVoxels)
     throw UserError(path, "grid " + quote(grid.name),
                     "a grid whose active bounding box has at most 2^28 voxels for a dense copy, found " +
                         std::to_string(grid.box_voxels()));

@@ -64,8 +64,11 @@ struct VdbReadStats {
 SparseGrid read_vdb_grid_sparse(const std::string& path, const VdbGridChoice& choice = {},
                                 std::string* note = nullptr, VdbReadStats* stats = nullptr);
 
+// The largest box a grid may be made dense over (1 GiB of floats).
+inline constexpr uint64_t kMaxDenseGridVoxels = uint64_t{1} << 28;
+
 // The same grid made dense over its active bounding box (read_vdb_grid_sparse, then
-// dense_from_sparse). Also refuses a grid whose box has over 2^28 voxels (1 GiB of floats): those
+// dense_from_sparse). Also refuses a grid whose box has over kMaxDenseGridVoxels voxels: those
 // are read sparse.
 DenseGrid read_vdb_grid(const std::string& path, const VdbGridChoice& choice = {},
                         std::string* note = nullptr);

@@ -9,6 +9,7 @@
 #include <glm/matrix.hpp>
 
 #include "systems/cloud_import/gaussian_fit.h"
+#include "systems/cloud_import/grid_framing.h"
 #include "systems/cloud_import/gaussian_lighting.h"
 #include "systems/scene_runtime/anisotropic_snapshot.h"
 
@@ -133,6 +134,64 @@ FittedImport import_to_target(const DenseGrid& grid, double error, const VdbImpo
   best.refinements = rounds;
   best.best.import_seconds = seconds_since(t0);
   return best;
+}
+
+nlohmann::json fitted_import_summary(const FittedImport& fit, const VdbImportReference& reference, double error) {
+  const VdbImportResult& r = fit.best;
+  nlohmann::json j = {{"active_voxels", r.report.active_voxels},
+                      {"particles", r.report.particles},
+                      {"rmse", r.rmse},
+                      {"import_seconds", r.import_seconds},
+                      {"light_seconds", r.report.light_seconds},
+                      {"extinction", reference.medium.extinction},
+                      {"tau_tolerance", r.tau_tolerance},
+                      {"error_target", error},
+                      {"rmse_views_mean", r.rmse_views_mean},
+                      {"rmse_views_max", r.rmse_views_max},
+                      {"view_rmse", r.view_rmse},
+                      {"rmse_inside", std::isfinite(r.rmse_inside) ? nlohmann::json(r.rmse_inside) : nlohmann::json()},
+                      {"views", reference.view_cameras.size()},
+                      {"target_met", fit.target_met},
+                      {"refinements", fit.refinements},
+                      {"measured", true}};
+  if (!fit.target_met) j["reason"] = fit.reason;
+  return j;
+}
+
+UnmeasuredImport import_unmeasured(const SparseGrid& grid, double error) {
+  const auto t0 = Clock::now();
+  UnmeasuredImport u;
+  u.medium = default_medium(grid);
+  CloudImportOptions opt;
+  opt.medium = u.medium;
+  opt.tau_tolerance = u.tau_tolerance = tau_tolerance_for_error(error);
+  u.particles = import_cloud(grid, opt, &u.report);
+  u.import_seconds = seconds_since(t0);
+  u.reason = "the grid's box of " + std::to_string(grid.box_voxels()) + " voxels is over the " +
+             std::to_string(kMaxDenseGridVoxels) +
+             " a dense copy may hold, which the fit and the reference renderer need: imported by the "
+             "octree alone at the target's tolerance, its image error not measured";
+  return u;
+}
+
+nlohmann::json unmeasured_import_summary(const UnmeasuredImport& u, double error) {
+  return {{"active_voxels", u.report.active_voxels},
+          {"particles", u.report.particles},
+          {"rmse", nullptr},
+          {"import_seconds", u.import_seconds},
+          {"light_seconds", u.report.light_seconds},
+          {"extinction", u.medium.extinction},
+          {"tau_tolerance", u.tau_tolerance},
+          {"error_target", error},
+          {"rmse_views_mean", nullptr},
+          {"rmse_views_max", nullptr},
+          {"view_rmse", nlohmann::json::array()},
+          {"rmse_inside", nullptr},
+          {"views", 0},
+          {"target_met", nullptr},
+          {"refinements", 0},
+          {"measured", false},
+          {"reason", u.reason}};
 }
 
 }  // namespace pyro

@@ -10,6 +10,11 @@
 // tolerance halved), up to `starts` of them. The first start that meets the target is kept, else
 // the lowest error reached, with the reason its start gave.
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/volume/sparse_grid.h"
 
 #include "systems/benchmarks/vdb_import_evaluation.h"
 
@@ -36,5 +41,27 @@ struct FittedImport {
 
 FittedImport import_to_target(const DenseGrid& grid, double error, const VdbImportReference& reference,
                               const FitSchedule& schedule = {});
+
+// What import-vdb reports of a fitted import (its --json fields but the command's own: read
+// time, output): active_voxels, particles, rmse, import_seconds, light_seconds, extinction,
+// tau_tolerance, error_target, rmse_views_mean, rmse_views_max, view_rmse, rmse_inside (null
+// without that view), views, target_met, refinements, measured (true), and reason when missed.
+nlohmann::json fitted_import_summary(const FittedImport& fit, const VdbImportReference& reference, double error);
+
+// A grid whose box is too large to be made dense (engine/io/vdb_reader.h, kMaxDenseGridVoxels)
+// cannot be fitted or measured against the dense reference: it is imported sparse by the octree
+// alone, at the error target's tolerance, as isotropic particles.
+struct UnmeasuredImport {
+  std::vector<GaussianParticle> particles;
+  CloudImportReport report;
+  VolumeMedium medium;
+  double tau_tolerance = 0.0;
+  double import_seconds = 0.0;
+  std::string reason;  // why the error is not measured
+};
+UnmeasuredImport import_unmeasured(const SparseGrid& grid, double error);
+// The same fields as fitted_import_summary where they apply; the errors and target_met are null,
+// measured false, reason said.
+nlohmann::json unmeasured_import_summary(const UnmeasuredImport& import, double error);
 
 }  // namespace pyro

@@ -61,7 +61,7 @@ CameraFrame camera_frame(const CameraDescription& c, int width, int height) {
   return make_camera_frame(c.position, c.target, c.up, c.fov_y_deg, c.near, c.far, width, height);
 }
 
-VolumeMedium default_medium(const DenseGrid& grid) {
+VolumeMedium default_medium(const GridHeader& grid) {
   VolumeMedium m;
   m.extinction = default_extinction(grid);
   return m;

@@ -22,6 +22,6 @@ std::vector<CameraDescription> views_around(const DenseGrid& grid);
 // looking along +x with a 90-degree field of view.
 std::optional<CameraDescription> view_inside(const DenseGrid& grid);
 CameraFrame camera_frame(const CameraDescription& c, int width, int height);
-VolumeMedium default_medium(const DenseGrid& grid);
+VolumeMedium default_medium(const GridHeader& grid);
 
 }  // namespace pyro

@@ -15,6 +15,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
+#include "engine/volume/sparse_grid.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "systems/benchmarks/fitted_import.h"
@@ -56,6 +57,39 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+// Writes the particles and prints the summary (the import's fields, the command's own added).
+void finish_import(const ImportArgs& a, const GridHeader& grid, ParticleFile pf, nlohmann::json summary,
+                   double read_seconds) {
+  pf.metadata_json = nlohmann::json{{"source", a.file},        {"grid", grid.name},
+                                    {"grid_index", grid.file_index}, {"error_target", a.error},
+                                    {"extinction", summary["extinction"]}, {"rmse", summary["rmse"]},
+                                    {"rmse_views_max", summary["rmse_views_max"]},
+                                    {"target_met", summary["target_met"]}, {"active_voxels", grid.active_voxels}}
+                         .dump();
+  write_particle_file(a.out, pf);
+  const double seconds = read_seconds + summary["import_seconds"].get<double>();
+  summary.update({{"grid", grid.name}, {"read_seconds", read_seconds}, {"seconds", seconds},
+                  {"voxels_per_second", grid.active_voxels / std::max(1e-9, seconds)}, {"out", a.out}});
+  if (a.json) {
+    std::printf("%s\n", summary.dump().c_str());
+  } else if (summary["measured"].get<bool>()) {
+    std::printf("%s: %llu active voxels -> %llu particles, image RMSE over %d views mean %.4f, max %.4f "
+                "(target %g %s), %.3f s; wrote %s\n",
+                a.file.c_str(), (unsigned long long)grid.active_voxels, summary["particles"].get<unsigned long long>(),
+                summary["views"].get<int>(), summary["rmse_views_mean"].get<double>(),
+                summary["rmse_views_max"].get<double>(), a.error, summary["target_met"].get<bool>() ? "met" : "not met",
+                seconds, a.out.c_str());
+  } else {
+    std::printf("%s: %llu active voxels -> %llu particles (error not measured), %.3f s; wrote %s\n", a.file.c_str(),
+                (unsigned long long)grid.active_voxels, summary["particles"].get<unsigned long long>(), seconds,
+                a.out.c_str());
+  }
+}
+
+void say(const ImportArgs& a, const std::string& what) {
+  std::fprintf(stderr, "pyro import-vdb: %s: %s\n", a.file.c_str(), what.c_str());
+}
+
 void run_import(const ImportArgs& a) {
   if (a.list) {
     list_grids(a);
@@ -69,75 +103,38 @@ void run_import(const ImportArgs& a) {
   progress.stage(0, "read");
   const auto t0 = std::chrono::steady_clock::now();
   std::string note;
-  const DenseGrid grid = read_vdb_grid(a.file, {a.grid, a.grid_index}, &note);
+  const SparseGrid sparse = read_vdb_grid_sparse(a.file, {a.grid, a.grid_index}, &note);
   const double read_seconds = seconds_since(t0);
-  if (!note.empty()) std::fprintf(stderr, "pyro import-vdb: %s: %s\n", a.file.c_str(), note.c_str());
-  if (grid.converted_from_level_set)
-    std::fprintf(stderr, "pyro import-vdb: %s: grid \"%s\" is a level set; converted to a fog volume\n",
-                 a.file.c_str(), grid.name.c_str());
-  if (grid.empty())
-    std::fprintf(stderr, "pyro import-vdb: %s: grid \"%s\" has no active voxels; writing 0 particles\n",
-                 a.file.c_str(), grid.name.c_str());
-
+  if (!note.empty()) say(a, note);
+  if (sparse.converted_from_level_set) say(a, "grid \"" + sparse.name + "\" is a level set; converted to a fog volume");
+  if (sparse.empty()) say(a, "grid \"" + sparse.name + "\" has no active voxels; writing 0 particles");
+  ParticleFile pf;
+  if (sparse.box_voxels() > kMaxDenseGridVoxels) {
+    progress.stage(2, "import (too large to measure)");
+    UnmeasuredImport u = import_unmeasured(sparse, a.error);
+    say(a, u.reason);
+    progress.finish();
+    pf.particles = std::move(u.particles);
+    return finish_import(a, sparse, std::move(pf), unmeasured_import_summary(u, a.error), read_seconds);
+  }
+  const DenseGrid grid = dense_from_sparse(sparse);
   // The image error of what the engine draws against the ground truth, from every side.
   progress.stage(1, "reference views");
   const VdbImportReference reference = make_vdb_import_reference(grid, a.width, a.height, true);
   progress.stage(2, "import and measure");
   const FittedImport fit = import_to_target(grid, a.error, reference);
-  const VdbImportResult& imported = fit.best;
-  if (!fit.target_met)
-    std::fprintf(stderr, "pyro import-vdb: %s: --error %g not met: rmse_views_max %.4f at best (%llu particles, %d refinement(s)); %s\n",
-                 a.file.c_str(), a.error, imported.rmse_views_max,
-                 (unsigned long long)imported.report.particles, fit.refinements, fit.reason.c_str());
-  const CloudImportReport& rep = imported.report;
-  const double import_seconds = imported.import_seconds;
-  const double rmse = imported.rmse;
-  if (!std::isfinite(rmse))
-    throw UserError(a.file, "grid \"" + grid.name + "\"",
-                    "a grid whose import can be measured, found a non-finite image error");
+  if (!fit.target_met) {
+    char text[160];
+    std::snprintf(text, sizeof text, "--error %g not met: rmse_views_max %.4f at best (%llu particles, %d refinement(s)); ",
+                  a.error, fit.best.rmse_views_max, (unsigned long long)fit.best.report.particles, fit.refinements);
+    say(a, text + fit.reason);
+  }
+  if (!std::isfinite(fit.best.rmse))
+    throw UserError(a.file, "grid \"" + grid.name + "\"", "a grid whose import can be measured, found a non-finite image error");
   progress.update(3);
   progress.finish();
-  nlohmann::json meta = {{"source", a.file},      {"grid", grid.name},
-                         {"grid_index", grid.file_index}, {"error_target", a.error},
-                         {"extinction", reference.medium.extinction}, {"rmse", rmse},
-                         {"rmse_views_max", imported.rmse_views_max}, {"target_met", fit.target_met},
-                         {"active_voxels", rep.active_voxels}};
-  ParticleFile pf;
-  pf.metadata_json = meta.dump();
-  pf.anisotropic = imported.fitted;
-  write_particle_file(a.out, pf);
-
-  nlohmann::json summary = {{"active_voxels", rep.active_voxels},
-                            {"particles", rep.particles},
-                            {"rmse", rmse},
-                            {"seconds", read_seconds + import_seconds},
-                            {"read_seconds", read_seconds},
-                            {"import_seconds", import_seconds},
-                            {"light_seconds", rep.light_seconds},
-                            {"voxels_per_second", rep.active_voxels / std::max(1e-9, read_seconds + import_seconds)},
-                            {"grid", grid.name},
-                            {"extinction", reference.medium.extinction},
-                            {"tau_tolerance", imported.tau_tolerance},
-                            {"error_target", a.error},
-                            {"rmse_views_mean", imported.rmse_views_mean},
-                            {"rmse_views_max", imported.rmse_views_max},
-                            {"view_rmse", imported.view_rmse},
-                            {"rmse_inside", std::isfinite(imported.rmse_inside) ? nlohmann::json(imported.rmse_inside)
-                                                                               : nlohmann::json(nullptr)},
-                            {"views", reference.view_cameras.size()},
-                            {"target_met", fit.target_met},
-                            {"refinements", fit.refinements},
-                            {"out", a.out}};
-  if (!fit.target_met) summary["reason"] = fit.reason;
-  if (a.json)
-    std::printf("%s\n", summary.dump().c_str());
-  else
-    std::printf("%s: %llu active voxels -> %llu particles, image RMSE over %zu views mean %.4f, max %.4f "
-                "(target %g %s), %.3f s; wrote %s\n",
-                a.file.c_str(), (unsigned long long)rep.active_voxels,
-                (unsigned long long)rep.particles, reference.view_cameras.size(), imported.rmse_views_mean,
-                imported.rmse_views_max, a.error, fit.target_met ? "met" : "not met",
-                read_seconds + import_seconds, a.out.c_str());
+  pf.anisotropic = fit.best.fitted;
+  finish_import(a, grid, std::move(pf), fitted_import_summary(fit, reference, a.error), read_seconds);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
+#include "engine/io/vdb_resampled_volume.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -190,6 +191,33 @@ TEST(ImportVdbCli, SmallVolumeImportsAndTheParticleFileReadsBack) {
   // A truncated particle file is refused.
   fs::resize_file(out, fs::file_size(out) - 4);
   EXPECT_FALSE(expect_user_error([&] { read_particle_file(out.string()); }).empty());
+}
+
+// A grid whose box is too large for a dense copy (two clumps 1.1e6 voxels apart, a box of
+// 2.9e8 voxels) cannot be fitted or measured: it is imported sparse by the octree, and the command
+// says that its error was not measured instead of claiming or refusing a target.
+TEST(ImportVdbCli, ABoxTooLargeForTheReferenceImportsUnmeasuredAndSaysSo) {
+  DenseGrid src;
+  src.dims = {140000, 1, 1};
+  src.values.assign(140000, 0.0f);
+  src.values.front() = src.values.back() = 0.5f;
+  const fs::path dir = test::scratch_dir("vdb_cli_large_box");
+  const std::string path = (dir / "far.vdb").string();
+  write_vdb_resampled_fog_volume(path, "density", src, 8.0);
+  const fs::path out = dir / "far.pyrop";
+  const auto r = test::run_pyro({"import-vdb", path, "--out", out.string(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j["measured"].get<bool>());
+  EXPECT_TRUE(j["target_met"].is_null());
+  EXPECT_TRUE(j["rmse_views_max"].is_null());
+  EXPECT_NE(j["reason"].get<std::string>().find("not measured"), std::string::npos);
+  EXPECT_NE(r.err.find("not measured"), std::string::npos) << r.err;
+  EXPECT_EQ(j["active_voxels"].get<uint64_t>(), 2u * 16u * 16u * 16u);
+  const ParticleFile f = read_particle_file(out.string());
+  EXPECT_EQ(f.version, 1u);
+  EXPECT_EQ(f.particles.size(), j["particles"].get<size_t>());
+  EXPECT_GT(f.particles.size(), 0u);
 }
 
 }  // namespace
