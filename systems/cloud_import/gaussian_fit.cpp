@@ -59,12 +59,17 @@ Params gradient(const GridGaussian& g, const FieldBox& box, const std::vector<fl
   return p;
 }
 
-// Keeps every axis's sigma within [min_sigma, max_sigma]: A = diag(1 / sigma) V^T from the
-// eigen-decomposition of A^T A, clamped.
-void clamp_shape(GridGaussian& g, float min_sigma, float max_sigma) {
+// Keeps every axis's sigma within [min_sigma, max_sigma] and within max_aspect of the thinnest:
+// A = diag(1 / sigma) V^T from the eigen-decomposition of A^T A, clamped. Needles and sheets
+// much longer than they are thin fit the field between voxel centres no better, but seen along
+// their length they draw bright streaks that no view of the fit was measured from.
+void clamp_shape(GridGaussian& g, float min_sigma, float max_sigma, float max_aspect) {
   const glm::dmat3 a(g.shape);
-  const SymmetricEigen e = symmetric_eigen(glm::transpose(a) * a);
-  const double lo = 1.0 / (double(max_sigma) * max_sigma), hi = 1.0 / (double(min_sigma) * min_sigma);
+  const SymmetricEigen e = symmetric_eigen(glm::transpose(a) * a);  // 1 / sigma^2, largest first
+  // No axis wider than max_aspect times the thinnest: the widest's 1 / sigma^2 is at least the
+  // thinnest's over max_aspect^2.
+  const double lo = std::max(1.0 / (double(max_sigma) * max_sigma), e.values[0] / (double(max_aspect) * max_aspect));
+  const double hi = 1.0 / (double(min_sigma) * min_sigma);
   bool inside = true;
   for (int i = 0; i < 3; ++i) inside = inside && e.values[i] >= lo && e.values[i] <= hi;
   if (inside) return;
@@ -98,8 +103,21 @@ void adam_step(GridGaussian& g, const Params& grad, Adam& adam, size_t i, int st
   g.peak *= std::exp(-rate * opt.peak_step * d[12]);
 }
 
+// Keeps the whole truncation ellipsoid inside the grown box, where the loss sees it: the mean is
+// clamped into the box, and where the ellipsoid's extent along an axis, 3 sqrt(Sigma_aa), reaches
+// past the box, the covariance is scaled down until it does not. A Gaussian that left the box
+// would be free there, and the renderer would draw what the fit never saw (a faint needle across
+// the sky, bright along its length).
 void keep_inside(GridGaussian& g, const FieldBox& box) {
   for (int a = 0; a < 3; ++a) g.mean[a] = std::clamp(g.mean[a], float(box.lo()), float(box.hi(a)));
+  const glm::mat3 cov = glm::inverse(glm::transpose(g.shape) * g.shape);
+  float scale = 1.0f;
+  for (int a = 0; a < 3; ++a) {
+    const float room = std::min(g.mean[a] - float(box.lo()), float(box.hi(a)) - g.mean[a]) + 0.5f;
+    const float extent = kAnisotropicExtent * std::sqrt(std::max(cov[a][a], 0.0f));
+    if (extent > room) scale = std::min(scale, room / extent);
+  }
+  if (scale < 1.0f) g.shape /= std::max(scale, 1e-3f);
 }
 
 using Clock = std::chrono::steady_clock;
@@ -143,8 +161,8 @@ GaussianFitReport fit_grid_gaussians(const DenseGrid& grid, std::vector<GridGaus
     parallel_rows(int(gs.size()), opt.threads, [&](int i) {
       const Params grad = gradient(gs[i], box, r);
       adam_step(gs[i], grad, adam, size_t(i), step, rate, opt);
+      if (step % 8 == 7 || step == opt.steps - 1) clamp_shape(gs[i], opt.min_sigma, opt.max_sigma, opt.max_aspect);
       keep_inside(gs[i], box);
-      if (step % 8 == 7 || step == opt.steps - 1) clamp_shape(gs[i], opt.min_sigma, opt.max_sigma);
     });
     r = residual(grid, gs, box, opt.threads);
     ++rep.steps;

@@ -36,6 +36,7 @@ struct GaussianFitOptions {
   float peak_step = 0.03f;      // Adam step of ln peak
   float min_sigma = 0.3f;       // no axis thinner than this many voxels
   float max_sigma = 64.0f;      // nor wider
+  float max_aspect = 8.0f;      // nor wider than this many times the thinnest axis
   int margin = 3;               // voxels of empty space fitted around the box
   int threads = 0;              // 0: hardware concurrency
 };

@@ -131,6 +131,33 @@ TEST(GaussianFit, LowersTheFieldErrorOfTheOctreeParticlesOnAHardBox) {
   EXPECT_NEAR(rep.rmse_after, grid_gaussian_rmse(grid, gs), 1e-6);
 }
 
+// Whatever the fit does, every Gaussian stays where the loss sees it (its ellipsoid inside the box
+// grown by the margin) and no axis is more than max_aspect times another: a Gaussian outside would
+// be drawn where the fit never looked.
+TEST(GaussianFit, EveryEllipsoidStaysInsideTheFittedBoxAndWithinTheAspectBound) {
+  DenseGrid grid = empty_grid(24, 12, 16);
+  for (int z = 3; z < 13; ++z)
+    for (int y = 2; y < 10; ++y)
+      for (int x = 0; x < 24; ++x) grid.values[(size_t(z) * 12 + y) * 24 + x] = x < 20 ? 0.8f : 0.0f;
+  finish(grid);
+  // A start that reaches far past the box: wide, thin Gaussians.
+  std::vector<GridGaussian> gs = {rotated({4, 6, 8}, {30.0f, 0.5f, 0.5f}, glm::quat(1, 0, 0, 0), 0.5f),
+                                  rotated({15, 6, 8}, {6.0f, 6.0f, 0.4f}, glm::angleAxis(0.7f, glm::vec3(0, 1, 0)), 0.5f)};
+  GaussianFitOptions opt;
+  opt.steps = 16;
+  fit_grid_gaussians(grid, gs, opt);
+  for (const GridGaussian& g : gs) {
+    const glm::mat3 cov = glm::inverse(glm::transpose(g.shape) * g.shape);
+    for (int a = 0; a < 3; ++a) {
+      const float h = 3.0f * std::sqrt(cov[a][a]);
+      EXPECT_GE(g.mean[a] - h, -opt.margin - 0.5f - 1e-3f) << a;
+      EXPECT_LE(g.mean[a] + h, grid.dims[a] - 1 + opt.margin + 0.5f + 1e-3f) << a;
+    }
+    const glm::vec3 sig = grid_gaussian_sigmas(g);
+    EXPECT_LE(sig[0], opt.max_aspect * sig[2] * 1.001f);
+  }
+}
+
 TEST(GaussianFit, ResultsDoNotDependOnTheThreadCount) {
   const DenseGrid grid = hard_box();
   CloudImportOptions io;
