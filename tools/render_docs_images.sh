@@ -36,6 +36,7 @@ shot fog fog 30 480 360
 shot mist mist 30 480 360
 shot clouds clouds 30 480 360
 shot cloud_vdb cloud_vdb 0 480 270
+shot cloud_fitted cloud_fitted 0 480 270
 shot explosion explosion 30 384 384
 shot explosion_behind_tower explosion_behind_tower 30 384 384
 shot flipbook_fire flipbook_fire 12 128 192
