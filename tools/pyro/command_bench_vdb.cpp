@@ -49,7 +49,7 @@ void add_bench_vdb_command(CLI::App& bench) {
   cmd->add_option("file", o.file, "OpenVDB file (.vdb)")->required();
   cmd->add_option("--grid", o.grid, "Grid name");
   cmd->add_option("--grid-index", o.grid_index, "Grid position in the file, from 0");
-  cmd->add_option("--error", o.error, "Import error target (default 0.02)");
+  cmd->add_option("--error", o.error, "Import error target (default 0.03)");
   cmd->add_option("--width", o.width, "Image width (default 512)")->check(CLI::Range(1, 8192));
   cmd->add_option("--height", o.height, "Image height (default 512)")->check(CLI::Range(1, 8192));
   cmd->add_option("--vdb-render", o.vdb_render, "The vdb_render program (default: from PATH)");
