@@ -11,6 +11,7 @@
 
 #include "engine/gpu/shader_program.h"
 #include "engine/math/anisotropic_optical_depth.h"
+#include "systems/billboard_render/particle_blending.h"
 
 namespace pyro {
 
@@ -60,12 +61,7 @@ void AnisotropicSplatRenderer::draw(const CameraFrame& frame, const gpu::RenderT
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, records_.get());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, order_.get());
   target.bind();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_FALSE);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over", back to front
-  glDisable(GL_CULL_FACE);
+  use_particle_blending();
   glUseProgram(program_.get());
   const glm::mat4 inverse_vp(glm::inverse(glm::dmat4(frame.view_projection)));
   glUniformMatrix4fv(gpu::uniform_location(program_, "u_view_projection"), 1, GL_FALSE,

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "engine/gpu/shader_program.h"
+#include "systems/billboard_render/particle_blending.h"
 #include "systems/billboard_render/parallel_copy.h"
 
 namespace pyro {
@@ -112,12 +113,7 @@ void BillboardRenderer::draw(const DrawList& list, const std::vector<const Parti
   const gpu::Program& program =
       shading == BillboardShading::kernel ? kernel_program_ : trivial_program_;
   target.bind();
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_FALSE);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over", back to front
-  glDisable(GL_CULL_FACE);
+  use_particle_blending();
   glUseProgram(program.get());
   glUniformMatrix4fv(gpu::uniform_location(program, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(frame.view_projection));
