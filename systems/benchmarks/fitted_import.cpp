@@ -21,7 +21,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The Gaussians lit and measured from every view; import_seconds is left to the caller.
 // The Gaussians lit (their `lit` fitted to the transmittance T) and measured from every view;
 // `octree` is the start's report (its light sweep time and levels).
 VdbImportResult measured(const DenseGrid& grid, std::vector<GridGaussian>& gs, const VdbImportReference& reference,
@@ -43,7 +42,8 @@ std::string stalled_reason(double best) {
   char text[256];
   std::snprintf(text, sizeof text,
                 "the error has stopped falling near %.4f: splitting more Gaussians does not lower it "
-                "(the renderer's own error, or detail finer than the grid's voxels)",
+                "(light or density that changes within a voxel, which a Gaussian's one colour and "
+                "smooth profile cannot follow)",
                 best);
   return text;
 }
