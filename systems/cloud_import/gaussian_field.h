@@ -131,9 +131,8 @@ inline std::vector<float> residual(const DenseGrid& grid, const std::vector<Grid
   return r;
 }
 
-// Each Gaussian's share of a squared residual r (of a field whose target, negated, is `minus_target`,
-// so that r - minus_target is the Gaussians' density sum there): the sum over its voxels of
-// (what it adds there / the density sum there) r^2.
+// Each Gaussian's share of a squared residual r: the sum over its voxels of (what it adds there /
+// the Gaussians' density sum there, `density_sum`) r^2.
 inline std::vector<double> shares_of(const std::vector<GridGaussian>& gs, const FieldBox& box,
                                      const std::vector<float>& r, const std::vector<float>& density_sum,
                                      int threads) {
