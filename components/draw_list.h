@@ -5,16 +5,31 @@
 //    lists made by hand);
 //  - indexed: `order`, the draw order as indices into the particle pools themselves
 //    (EyeDrawLists::pools, one after another), whose attribute arrays the Gaussian splats' vertex
-//    shader reads itself, so nothing is gathered or packed on the CPU.
+//    shader reads itself, so nothing is gathered or packed on the CPU;
+//  - ordered on the GPU: `on_gpu`, with `gpu_request` saying how; the compute shaders
+//    (systems/gpu_sorting) make the indexed order when the list is drawn, so the CPU never
+//    holds it (size() is 0 on the CPU).
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "engine/math/view_frustum.h"
 #include "engine/particles/particle_pool.h"
 
 namespace pyro {
+
+// How a list's particles are ordered, for the GPU to do it (systems/gpu_sorting): the sorting
+// system's order for an eye at `eye` looking along `forward`, by view depth or by distance to the
+// eye, culled against `views` (none: nothing culled).
+struct GpuOrderRequest {
+  glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, -1.0f};
+  bool by_eye_distance = false;
+  std::vector<ViewFrustum> views;
+};
 
 struct DrawList {
   std::vector<glm::vec4> center_radius;  // xyz world position, w radius
@@ -26,6 +41,10 @@ struct DrawList {
   // Indexed form: entry k of the draw order is particle order[k] of EyeDrawLists::pools taken one
   // after another. Empty in the gathered form.
   std::vector<uint32_t> order;
+  // The Gaussian splats' lists carry how the GPU would order them (when the key fits its
+  // layout, systems/sorting/gpu_key_layout.h); with `on_gpu` the GPU does, and `order` is empty.
+  std::optional<GpuOrderRequest> gpu_request;
+  bool on_gpu = false;
 
   bool indexed() const { return !order.empty(); }
   size_t size() const { return indexed() ? order.size() : center_radius.size(); }

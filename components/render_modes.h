@@ -1,6 +1,6 @@
 #pragma once
 // How particles are drawn: the choices a scene file (`render.billboards`, `render.particles`,
-// `render.shading`) and the command line make, read by the render systems.
+// `render.shading`, `render.sort_device`) and the command line make, read by the render systems.
 #include "engine/core/enum_names.h"
 
 namespace pyro {
@@ -30,5 +30,14 @@ enum class ParticleShading { color, explosion };
 inline constexpr EnumName<ParticleShading> particle_shading_names[] = {
     {ParticleShading::color, "color"}, {ParticleShading::explosion, "explosion"}};
 constexpr const auto& enum_names(ParticleShading) { return particle_shading_names; }
+
+// Where the Gaussian splats' draw order is made (culling and sorting): on the CPU
+// (systems/sorting), on the GPU by compute shaders (systems/gpu_sorting), or on whichever of the
+// two measured faster on this renderer (components/sort_device_choice.h). Both give the same
+// order, so the images are the same bytes.
+enum class SortDevice { automatic, cpu, gpu };
+inline constexpr EnumName<SortDevice> sort_device_names[] = {
+    {SortDevice::automatic, "auto"}, {SortDevice::cpu, "cpu"}, {SortDevice::gpu, "gpu"}};
+constexpr const auto& enum_names(SortDevice) { return sort_device_names; }
 
 }  // namespace pyro

@@ -62,6 +62,8 @@ struct RenderSettings {
   // Leave out of the draw lists the particles no view can show, before sorting them
   // (systems/sorting/depth_sort.h); off: every particle is sorted and drawn, to compare.
   bool cull_particles = true;
+  // Where the Gaussian splats' draw order is made (components/render_modes.h).
+  SortDevice sort_device = SortDevice::automatic;
   // explosion: dust, smoke and fire each in its own layer at layer_scale (components/gpu_frame.h).
   ParticleShading shading = ParticleShading::color;
   bool media_layers() const {

@@ -10,9 +10,12 @@
 //    tests/render/billboard_alignment_render_test.cpp.
 // Vertex pulling: instance k is the particle draw_order[k], whose record is two vec4s
 // (packed by systems/billboard_render/billboard_renderer.cpp): world xyz and radius, then
-// linear rgb and density rho.
+// linear rgb and density rho. The order's entries are u_order_stride_offset.x uints apart, the
+// index at .y within one: (1, 0) for an order made on the CPU, (4, 2) for the GPU's sorted
+// elements (systems/gpu_sorting/gpu_depth_sort.h).
 layout(std430, binding = 0) readonly buffer ParticleRecords { vec4 records[]; };
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
+uniform uvec2 u_order_stride_offset;
 
 uniform mat4 u_view_projection;
 uniform vec3 u_right;
@@ -27,7 +30,7 @@ out vec2 v_texcoord;
 flat out vec4 v_premultiplied;  // (rgb * rho, rho): one value per billboard, not interpolated
 
 void main() {
-  uint particle = draw_order[gl_InstanceID];
+  uint particle = draw_order[uint(gl_InstanceID) * u_order_stride_offset.x + u_order_stride_offset.y];
   vec4 a_center_radius = records[2u * particle];
   vec4 a_color_density = records[2u * particle + 1u];
   vec2 corner = vec2(float(gl_VertexID & 1), float((gl_VertexID >> 1) & 1)) * 2.0 - 1.0;

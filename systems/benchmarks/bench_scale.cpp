@@ -8,8 +8,12 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <optional>
 
+#include "components/draw_list.h"
 #include "components/render_settings.h"
+#include "components/sort_device_choice.h"
+#include "engine/core/enum_names.h"
 #include "engine/core/user_error.h"
 #include "engine/particles/particle_pool.h"
 #include "systems/billboard_render/billboard_renderer.h"
@@ -71,6 +75,8 @@ struct ScaleRun {
   SortStageTimes sort;
   ParticlePassCost pass;
   std::vector<SortKey> last_keys;
+  bool on_gpu = false;  // the last frame's order was made on the GPU
+  std::optional<SortDeviceChoice> choice;
 };
 
 void add_frame(SceneRuntime& runtime, double frame_ms, ScaleRun& run) {
@@ -80,7 +86,10 @@ void add_frame(SceneRuntime& runtime, double frame_ms, ScaleRun& run) {
     run.phase[st.name] = phase_name(st.phase);
   }
   ecs::World& world = runtime.world();
-  run.drawn += drawn_particles(world);
+  const EyeDrawLists& lists = world.resource<const EyeDrawLists>();
+  run.on_gpu = !lists.eyes.empty() && lists.eyes[0].on_gpu;
+  const BillboardRenderer* renderer = world.try_resource<const BillboardRenderer>();
+  run.drawn += run.on_gpu && renderer ? renderer->gpu_kept() : drawn_particles(world);
   if (const SortScratch* s = world.try_resource<const SortScratch>()) {
     run.sort.keys_ms += s->times.keys_ms;
     run.sort.pack_ms += s->times.pack_ms;
@@ -105,6 +114,7 @@ ScaleRun run_count(const SceneDescription& scene, const ScaleBenchOptions& o, Pr
   options.threads = o.threads;
   SceneRuntime runtime(scene, options);
   runtime.world().resource<RenderSettings>().cull_particles = o.cull;
+  runtime.world().resource<RenderSettings>().sort_device = o.sort_device;
   runtime.step();  // warm-up: shaders, tables, first allocations
   glFinish();
   ScaleRun run;
@@ -116,8 +126,10 @@ ScaleRun run_count(const SceneDescription& scene, const ScaleBenchOptions& o, Pr
     add_frame(runtime, ms_since(start), run);
     progress.update(++done);
   }
+  if (const auto* c = runtime.world().try_resource<const SortDeviceChoice>(); c && c->measured)
+    run.choice = *c;
   // The last frame's sorted keys: every one, or those the view kept.
-  if (const SortScratch* s = runtime.world().try_resource<const SortScratch>()) {
+  if (const SortScratch* s = runtime.world().try_resource<const SortScratch>(); s && !run.on_gpu) {
     if (s->radix.order.size() == s->keys.size()) run.last_keys = s->keys;
     else
       for (const uint32_t k : s->kept_places) run.last_keys.push_back(s->keys[k]);
@@ -140,7 +152,12 @@ nlohmann::json count_report(const ScaleRun& run, int frames) {
   const double submission = std::max(0.0, billboard - copy - wait - draws);
   const double cpu = cpu_systems + copy + submission;
   const double frame = run.frame_ms / n;
-  const double sort = run.sort.order_ms / n, standard = std_sort_ms(run.last_keys);
+  const double sort = run.sort.order_ms / n;
+  const double standard = run.on_gpu ? 0.0 : std_sort_ms(run.last_keys);
+  nlohmann::json choice = nullptr;
+  if (run.choice)
+    choice = {{"gpu", run.choice->gpu}, {"cpu_ms", run.choice->cpu_ms},
+              {"gpu_ms", run.choice->gpu_ms}, {"particles", run.choice->particles}};
   // Building the instances: packing the pools' attributes, gathering them in draw order, copying
   // them into the GPU's memory.
   const double instances = (run.sort.pack_ms + run.sort.gather_ms) / n + copy;
@@ -164,8 +181,10 @@ nlohmann::json count_report(const ScaleRun& run, int frames) {
             {"draw_list", 2 * sizeof(glm::vec4)},
             {"instances", double(instance_bytes) * per}}},
           {"sort_ms", sort},
-          {"std_sort_ms", standard},
-          {"sort_over_std_sort", standard > 0.0 ? sort / standard : 0.0},
+          {"std_sort_ms", run.on_gpu ? nlohmann::json(nullptr) : nlohmann::json(standard)},
+          {"sort_over_std_sort", standard > 0.0 ? nlohmann::json(sort / standard) : nlohmann::json(nullptr)},
+          {"ordered_on", run.on_gpu ? "gpu" : "cpu"},
+          {"sort_device_choice", choice},
           {"instances_ms", instances},
           {"memcpy_instances_ms", baseline},
           {"instances_over_memcpy", baseline > 0.0 ? instances / baseline : 0.0}};
@@ -236,6 +255,7 @@ nlohmann::json bench_scale(const ScaleBenchOptions& o) {
           {"height", height},
           {"frames", o.frames},
           {"cull", o.cull},
+          {"sort_device", std::string(name_of(o.sort_device))},
           {"counts", counts},
           {"cpu_slope", slope_over(counts, "cpu_ms_per_frame")},
           {"frame_slope", slope_over(counts, "ms_per_frame")}};

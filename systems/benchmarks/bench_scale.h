@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/progress_sink.h"
+#include "components/render_modes.h"
 #include "systems/scene/scene_description.h"
 
 namespace pyro {
@@ -23,15 +24,18 @@ struct ScaleBenchOptions {
   int width = 0, height = 0;  // 0: the scene's size
   int threads = 0;  // the schedule's threads (0: one per core)
   bool cull = true;  // false: every particle sorted and drawn (RenderSettings::cull_particles)
+  SortDevice sort_device = SortDevice::automatic;  // where the draw order is made
   ProgressSink* progress = nullptr;
 };
 
-// {"scene", "width", "height", "frames", "cull", "counts": [per count: "particles",
+// {"scene", "width", "height", "frames", "cull", "sort_device", "counts": [per count: "particles",
 // "drawn_particles" (the mean the view's list kept), "ms_per_frame",
 // "cpu_ms_per_frame", "driver_ms_per_frame", "system_ms" {name: ms}, "stage_ms" {keys, pack,
 // sort, gather, instance_write, instance_wait, draw_calls, submission}, "bytes_per_particle"
 // {pools, sort_keys, draw_list, instances}, "sort_ms", "std_sort_ms", "sort_over_std_sort",
-// "instances_ms", "memcpy_instances_ms", "instances_over_memcpy"}], "cpu_slope",
+// "instances_ms", "memcpy_instances_ms", "instances_over_memcpy", "ordered_on" ("cpu" or
+// "gpu": where the last frame's order was made), "sort_device_choice" (under "auto": the
+// measurement that chose, {"gpu", "cpu_ms", "gpu_ms", "particles"}, or null)}], "cpu_slope",
 // "frame_slope" (log-log least squares over the counts from 1e5 to 2e6, null with fewer than two
 // such counts)}.
 // cpu_ms_per_frame: the spawn, simulate, camera and sort systems, writing the instances into the
@@ -39,7 +43,8 @@ struct ScaleBenchOptions {
 // time inside the draw calls (on llvmpipe the driver runs the vertex stage there), the wait for
 // a free buffer slot, or the other GL systems: those make driver_ms_per_frame, the rest of the
 // frame. instances_ms: everything done to turn the pools into GPU instances (packing and
-// gathering for gathered lists, writing into the mapped buffer).
+// gathering for gathered lists, writing into the mapped buffer). An order made on the GPU has no
+// CPU keys: "std_sort_ms" and its ratio are then null, and the GPU's work is in the driver's time.
 // Throws UserError when the scene has no clouds to scale.
 nlohmann::json bench_scale(const ScaleBenchOptions& options);
 

@@ -8,12 +8,14 @@
 #include "components/frame_clock.h"
 #include "components/gpu_frame.h"
 #include "components/render_settings.h"
+#include "components/sort_device_choice.h"
 #include "components/view.h"
 #include "engine/ecs/world.h"
 #include "engine/gpu/gpu_pass_timer.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/billboard_render/explosion_renderer.h"
 #include "systems/billboard_render/sphere_billboard_renderer.h"
+#include "systems/sorting/depth_sort.h"
 
 #include <algorithm>
 
@@ -60,6 +62,7 @@ void make_anisotropic_pass(ecs::World& world) {
 void make_particle_renderer(ecs::World& world) {
   make_anisotropic_pass(world);
   const RenderSettings& settings = world.resource<const RenderSettings>();
+  if (!world.has_resource<SortDeviceChoice>()) world.set_resource<SortDeviceChoice>();
   if (settings.particles == ParticleShape::gaussian) return;
   if (settings.media_layers()) {
     const ExplosionShading* shading = world.try_resource<const ExplosionShading>();
@@ -101,6 +104,28 @@ void draw_anisotropic_clouds(ecs::World& world, bool layers_prepared) {
   }
 }
 
+// SortDevice::automatic: while the CPU orders a list the GPU could, and the choice was not
+// measured at this many particles, time the GPU's order of the first list against the sorting
+// system's CPU time per order this frame (its keys and radix order) and keep the faster.
+void measure_sort_devices(ecs::World& world, BillboardRenderer& renderer, const EyeDrawLists& lists,
+                          const RenderSettings& settings) {
+  if (settings.sort_device != SortDevice::automatic || lists.eyes.empty()) return;
+  const DrawList& list = lists.eyes[0];
+  const SortScratch* scratch = world.try_resource<const SortScratch>();
+  if (list.on_gpu || !list.gpu_request || !scratch) return;
+  uint64_t particles = 0;
+  for (const ParticlePool* p : lists.pools) particles += p->size();
+  SortDeviceChoice& choice = world.resource<SortDeviceChoice>();
+  if (particles == 0 || !choice.needs_measuring(particles)) return;
+  // One order serves every eye facing the viewplane; facing the viewpoint, one per eye.
+  const size_t orders = settings.alignment == BillboardAlignment::viewplane ? 1 : lists.eyes.size();
+  choice.cpu_ms = (scratch->times.keys_ms + scratch->times.order_ms) / double(orders);
+  choice.gpu_ms = renderer.time_gpu_order(list, lists.pools);
+  choice.gpu = choice.gpu_ms < choice.cpu_ms;
+  choice.measured = true;
+  choice.particles = particles;
+}
+
 // Returns whether the views' layers were prepared (cleared, the scene's depth copied down).
 bool draw_particle_lists(ecs::World& world) {
   const EyeDrawLists* lists = world.try_resource<const EyeDrawLists>();
@@ -111,6 +136,7 @@ bool draw_particle_lists(ecs::World& world) {
   const size_t views = std::min({view.eyes.size(), frame.eyes.size(), lists->eyes.size()});
   if (settings.particles == ParticleShape::gaussian) {
     BillboardRenderer& renderer = world.resource<BillboardRenderer>();
+    measure_sort_devices(world, renderer, *lists, settings);
     renderer.reset_cost();
     for (size_t v = 0; v < views; ++v)
       draw_particles_for_view(renderer, *lists, v, view.eyes[v], frame.eyes[v],
@@ -146,8 +172,8 @@ ecs::SystemDesc billboard_render_system() {
           .phase = ecs::Phase::render,
           .access = ecs::Access::of<
               ecs::Reads<EyeDrawLists, View, RenderSettings, FrameClock, ExplosionShading,
-                         AnisotropicCloud>,
-              ecs::Writes<GpuFrame>, Renderers>(),
+                         AnisotropicCloud, SortScratch>,
+              ecs::Writes<GpuFrame, SortDeviceChoice>, Renderers>(),
           .run = draw_billboards,
           .setup = make_particle_renderer,
           // Blends over what the opaque and flipbook passes drew.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -76,21 +77,36 @@ void pack_records(const DrawList& list, glm::vec4* records, uint32_t* order) {
                     });
 }
 
+// Every pool's ids, one after another (the GPU order's tie-break).
+void copy_ids(const std::vector<const ParticlePool*>& pools, uint32_t* ids) {
+  for (const ParticlePool* p : pools) {
+    parallel_copy(ids, p->id.data(), p->size() * sizeof(uint32_t));
+    ids += p->size();
+  }
+}
+
+std::size_t particles_in(const std::vector<const ParticlePool*>& pools) {
+  std::size_t particles = 0;
+  for (const ParticlePool* p : pools) particles += p->size();
+  return particles;
+}
+
 }  // namespace
 
 void BillboardRenderer::upload(const DrawList& list, const std::vector<const ParticlePool*>& pools) {
-  std::size_t particles = list.size();
-  if (list.indexed()) {
-    particles = 0;
-    for (const ParticlePool* p : pools) particles += p->size();
-  }
+  const bool from_pools = list.indexed() || list.on_gpu;
+  const std::size_t particles = from_pools ? particles_in(pools) : list.size();
   const std::size_t record_bytes = aligned(2 * particles * sizeof(glm::vec4));
-  const std::size_t order_bytes = list.size() * sizeof(uint32_t);
+  // The order, or for the GPU to make it, the particles' ids.
+  const std::size_t order_bytes = (list.on_gpu ? particles : list.size()) * sizeof(uint32_t);
   unsigned char* slot = ring_.next(record_bytes + order_bytes);
   const auto start = std::chrono::steady_clock::now();
   auto* records = reinterpret_cast<glm::vec4*>(slot);
   auto* order = reinterpret_cast<uint32_t*>(slot + record_bytes);
-  if (list.indexed()) {
+  if (list.on_gpu) {
+    pack_records(pools, records);
+    copy_ids(pools, order);
+  } else if (list.indexed()) {
     pack_records(pools, records);
     parallel_copy(order, list.order.data(), order_bytes);
   } else {
@@ -99,17 +115,54 @@ void BillboardRenderer::upload(const DrawList& list, const std::vector<const Par
   copy_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   bytes_ += 2 * particles * sizeof(glm::vec4) + order_bytes;
   const auto offset = static_cast<GLintptr>(ring_.offset());
-  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, ring_.buffer(), offset,
-                    static_cast<GLsizeiptr>(std::max<std::size_t>(record_bytes, 32)));
-  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, ring_.buffer(), offset + static_cast<GLintptr>(record_bytes),
-                    static_cast<GLsizeiptr>(std::max<std::size_t>(order_bytes, 4)));
+  uploaded_ = {ring_.buffer(), offset, static_cast<GLsizeiptr>(std::max<std::size_t>(record_bytes, 32)),
+               offset + static_cast<GLintptr>(record_bytes),
+               static_cast<GLsizeiptr>(std::max<std::size_t>(order_bytes, 4)), particles};
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, ring_.buffer(), uploaded_.records_offset,
+                    uploaded_.records_bytes);
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, ring_.buffer(), uploaded_.second_offset,
+                    uploaded_.second_bytes);
 }
+
+void BillboardRenderer::order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools) {
+  if (!gpu_sort_) gpu_sort_ = std::make_unique<GpuDepthSort>();
+  GpuParticles in;
+  in.records = in.ids = uploaded_.buffer;
+  in.records_offset = uploaded_.records_offset;
+  in.records_bytes = uploaded_.records_bytes;
+  in.ids_offset = uploaded_.second_offset;
+  in.ids_bytes = uploaded_.second_bytes;
+  in.set_starts.push_back(0);
+  for (const ParticlePool* p : pools) in.set_starts.push_back(in.set_starts.back() + uint32_t(p->size()));
+  in.layout = gpu_key_layout(pools);
+  gpu_sort_->order(in, *list.gpu_request);
+}
+
+double BillboardRenderer::time_gpu_order(const DrawList& list, const std::vector<const ParticlePool*>& pools) {
+  if (!list.gpu_request) throw std::invalid_argument("time_gpu_order: the list has no GPU order request");
+  DrawList ids_only;
+  ids_only.on_gpu = true;
+  ids_only.gpu_request = list.gpu_request;
+  upload(ids_only, pools);
+  order_on_gpu(ids_only, pools);  // warm-up: the driver may finish compiling on first use
+  glFinish();
+  const auto start = std::chrono::steady_clock::now();
+  order_on_gpu(ids_only, pools);
+  glFinish();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+uint32_t BillboardRenderer::gpu_kept() const { return gpu_sort_ ? gpu_sort_->read_kept() : 0; }
 
 void BillboardRenderer::draw(const DrawList& list, const std::vector<const ParticlePool*>& pools,
                              const CameraFrame& frame, const gpu::RenderTarget& target,
                              BillboardAlignment alignment, BillboardShading shading) {
-  if (list.size() == 0) return;
+  if (list.size() == 0 && !list.on_gpu) return;
   upload(list, pools);
+  if (list.on_gpu) {
+    order_on_gpu(list, pools);
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, gpu_sort_->order_buffer(), 0, gpu_sort_->order_bytes());
+  }
   const gpu::Program& program =
       shading == BillboardShading::kernel ? kernel_program_ : trivial_program_;
   target.bind();
@@ -128,7 +181,15 @@ void BillboardRenderer::draw(const DrawList& list, const std::vector<const Parti
   glBindTextureUnit(0, kernel_texture_.get());
   glBindVertexArray(empty_vao_.get());  // no attributes: the shader pulls its instance
   const auto start = std::chrono::steady_clock::now();
-  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(list.size()));
+  glUniform2ui(gpu::uniform_location(program, "u_order_stride_offset"),
+               list.on_gpu ? GpuDepthSort::kOrderStride : 1u, list.on_gpu ? GpuDepthSort::kOrderOffset : 0u);
+  if (list.on_gpu) {
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, gpu_sort_->command_buffer());
+    glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+  } else {
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(list.size()));
+  }
   draw_call_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   glBindVertexArray(0);
   glDepthMask(GL_TRUE);

@@ -2,6 +2,7 @@
 // GPU state of the particle pass: the kernel texture made from the footprint table, the
 // mapped buffer the particles are read from, and the programs (the real one and a trivial one used as a fill-rate
 // baseline by `pyro bench render`).
+#include <memory>
 #include <vector>
 
 #include "components/draw_list.h"
@@ -12,6 +13,7 @@
 #include "engine/math/footprint.h"
 #include "engine/gpu/mapped_ring.h"
 #include "systems/billboard_render/instance_buffer.h"  // UploadCost
+#include "systems/gpu_sorting/gpu_depth_sort.h"
 
 namespace pyro {
 
@@ -32,11 +34,19 @@ class BillboardRenderer {
   // Packs the particles and copies the list's order into the next slot of a persistently mapped
   // ring and blends the billboards over `target` (depth tested, not written), the vertex shader
   // reading each instance's record through the order (vertex pulling). An indexed
-  // list (components/draw_list.h) points into `pools`; a gathered one is drawn as it is.
+  // list (components/draw_list.h) points into `pools`; a gathered one is drawn as it is; one
+  // left to the GPU is ordered there first (systems/gpu_sorting) and drawn indirectly.
   void draw(const DrawList& list, const std::vector<const ParticlePool*>& pools,
             const CameraFrame& frame, const gpu::RenderTarget& target,
             BillboardAlignment alignment = BillboardAlignment::viewplane,
             BillboardShading shading = BillboardShading::kernel);
+
+  // The GPU's order of `list` (its gpu_request) timed to completion, after a warm-up run and
+  // with the GPU idle before: what SortDevice::automatic weighs against the CPU's order. Draws
+  // nothing.
+  double time_gpu_order(const DrawList& list, const std::vector<const ParticlePool*>& pools);
+  // The particles the last GPU order kept (reads back: waits for the GPU).
+  uint32_t gpu_kept() const;
 
   const FootprintTable& table() const { return table_; }
   ParticlePassCost cost() const { return {{copy_ms_, ring_.wait_ms(), bytes_}, draw_call_ms_}; }
@@ -53,7 +63,22 @@ class BillboardRenderer {
   // Packs the particles (the pools of an indexed list, or a gathered list's arrays) as two vec4s
   // each and the list's order straight into the next slot of ring_, and binds them (SSBO
   // bindings 0 and 1).
+  // A list the GPU orders gets the particles' ids in place of the order.
   void upload(const DrawList& list, const std::vector<const ParticlePool*>& pools);
+  // The last upload's particles ordered by gpu_sort_ (made on first use).
+  void order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools);
+
+  // Where the last upload put the records and the order (or the ids).
+  struct Uploaded {
+    GLuint buffer = 0;
+    GLintptr records_offset = 0;
+    GLsizeiptr records_bytes = 0;
+    GLintptr second_offset = 0;
+    GLsizeiptr second_bytes = 0;
+    std::size_t particles = 0;
+  };
+  Uploaded uploaded_;
+  std::unique_ptr<GpuDepthSort> gpu_sort_;
 
   gpu::MappedRing ring_;
   gpu::VertexArray empty_vao_ = gpu::make_vertex_array();

@@ -39,6 +39,8 @@ struct RenderDescription {
   // composited over the opaque scene: 1, 0.5, 0.25 or 0.125.
   float layer_scale = 1.0f;
   ParticleShading shading = ParticleShading::color;
+  // Where the Gaussian splats' draw order is made: "auto" (the faster, measured), "cpu", "gpu".
+  SortDevice sort_device = SortDevice::automatic;
   // Motion blur by blending frames (Umenhoffer et al. 2006, section 4): each output frame is
   // (1 - b) times the new frame plus b times the previous output, in linear light; 0 is off.
   float motion_blur = 0.0f;

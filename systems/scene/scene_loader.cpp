@@ -640,6 +640,7 @@ void read_render(ObjectReader& r, RenderDescription& d) {
   d.billboards = read_enum(r, "billboards", d.billboards);
   d.particles = read_enum(r, "particles", d.particles);
   d.shading = read_enum(r, "shading", d.shading);
+  d.sort_device = read_enum(r, "sort_device", d.sort_device);
   if (d.shading == ParticleShading::explosion && d.particles == ParticleShape::gaussian)
     r.at("shading").fail("\"explosion\" shading needs \"particles\": \"spherical\" or \"planar\"");
   r.number("layer_scale", Range{0.0, 1.0, true, false}, d.layer_scale);

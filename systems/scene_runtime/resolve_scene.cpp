@@ -21,6 +21,7 @@ RenderSettings merge_render_settings(const SceneDescription& scene, const Runtim
   s.stereo_mode = options.stereo_mode;
   s.shading = options.shading.value_or(scene.render.shading);
   s.motion_blur = scene.render.motion_blur;
+  s.sort_device = options.sort_device.value_or(scene.render.sort_device);
   return s;
 }
 

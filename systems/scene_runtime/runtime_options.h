@@ -28,6 +28,7 @@ struct RuntimeOptions {
   std::optional<ParticleShape> particles;       // replaces the scene's choice
   std::optional<float> layer_scale;             // replaces the scene's choice (and a quality pick's)
   std::optional<ParticleShading> shading;       // replaces the scene's choice
+  std::optional<SortDevice> sort_device;        // replaces the scene's choice
   float frame_scale = 1.0f;                     // views at this fraction, output upscaled
   std::optional<float> interocular;
   std::optional<float> zero_parallax_distance;

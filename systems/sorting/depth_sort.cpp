@@ -9,8 +9,10 @@
 
 #include "components/particle_set.h"
 #include "components/render_settings.h"
+#include "components/sort_device_choice.h"
 #include "components/view.h"
 #include "engine/ecs/world.h"
+#include "systems/sorting/gpu_key_layout.h"
 
 namespace pyro {
 
@@ -31,10 +33,6 @@ std::vector<std::size_t> set_offsets(const SortScratch& s) {
     offsets[set + 1] = offsets[set] + s.sets[set].second->size();
   return offsets;
 }
-
-// A particle's bounding sphere for culling, in radii: the Gaussian splat's quad reaches sqrt(2)
-// radii from its centre, a spherical billboard's sphere one; twice the radius holds both.
-constexpr float kCullRadii = 2.0f;
 
 // Marks the particles [begin, end) of `p` that can reach a view in `seen`; returns how many.
 size_t mark_seen(const ParticlePool& p, std::span<const ViewFrustum> views, size_t begin,
@@ -208,6 +206,15 @@ void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind
 
 namespace {
 
+// Where this frame's Gaussian lists are ordered: the GPU when asked for or when it measured the
+// faster (SortDevice::automatic), unless the key does not fit its layout; else the CPU.
+// SortDevice::automatic is returned when the CPU orders but the GPU could (to be measured).
+SortDevice gpu_or_cpu(SortDevice asked, const SortDeviceChoice* choice, GpuKeyLayout layout) {
+  if (asked == SortDevice::cpu || !layout.fits()) return SortDevice::cpu;
+  if (asked == SortDevice::gpu || (choice && choice->measured && choice->gpu)) return SortDevice::gpu;
+  return SortDevice::automatic;
+}
+
 // The sorting system's work for one frame: every view's list, indexed for the Gaussian splats
 // (their vertex shader reads the pools) and gathered for the billboards that read arrays.
 void sort_views(const ecs::World& world, const View& view, const RenderSettings* settings,
@@ -232,13 +239,31 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
     collect_particle_sets(world, scratch);
     lists.pools.clear();
     for (const auto& set : scratch.sets) lists.pools.push_back(set.second);
-    for (size_t v = 0; v < orders; ++v)
-      order_draw_list(eyes[v].eye, eyes[v].forward, kind, scratch, lists.eyes[v], views_of(v));
+    const SortDevice device = gpu_or_cpu(rs.sort_device, world.try_resource<const SortDeviceChoice>(),
+                                         gpu_key_layout(lists.pools));
+    for (size_t v = 0; v < orders; ++v) {
+      DrawList& list = lists.eyes[v];
+      GpuOrderRequest request{eyes[v].eye, eyes[v].forward, !shared,
+                              std::vector<ViewFrustum>(views_of(v).begin(), views_of(v).end())};
+      if (device == SortDevice::gpu) {
+        list = DrawList{};
+        list.on_gpu = true;
+      } else {
+        order_draw_list(eyes[v].eye, eyes[v].forward, kind, scratch, list, views_of(v));
+        list.on_gpu = false;
+      }
+      // Kept on a CPU list too, while undecided: billboard_render measures the GPU's order of it.
+      if (device != SortDevice::cpu) list.gpu_request = std::move(request);
+      else list.gpu_request.reset();
+    }
   } else {
     lists.pools.clear();
-    for (size_t v = 0; v < orders; ++v)
+    for (size_t v = 0; v < orders; ++v) {
       build_draw_list(world, eyes[v].eye, eyes[v].forward, kind, scratch, lists.eyes[v],
                       rs.media_layers(), views_of(v));
+      lists.eyes[v].gpu_request.reset();
+      lists.eyes[v].on_gpu = false;
+    }
   }
   for (size_t v = orders; v < eyes.size(); ++v) lists.eyes[v] = lists.eyes[0];
 }
@@ -248,7 +273,7 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
 ecs::SystemDesc sorting_system() {
   return {.name = "sorting",
           .phase = ecs::Phase::sort,
-          .access = ecs::Access::of<ecs::Reads<View, RenderSettings, ParticleSet>,
+          .access = ecs::Access::of<ecs::Reads<View, RenderSettings, ParticleSet, SortDeviceChoice>,
                                     ecs::Writes<EyeDrawLists, SortScratch>>(),
           .run =
               [](ecs::World& world) {

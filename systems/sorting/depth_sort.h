@@ -33,6 +33,10 @@ void sort_back_to_front(std::vector<SortKey>& keys);
 
 enum class SortKeyKind { view_depth, eye_distance };
 
+// A particle's bounding sphere for culling, in radii: the Gaussian splat's quad reaches sqrt(2)
+// radii from its centre, a spherical billboard's sphere one; twice the radius holds both.
+inline constexpr float kCullRadii = 2.0f;
+
 class ParticlePool;
 
 // Milliseconds of the sorting system's stages in its last run, summed over the draw lists it

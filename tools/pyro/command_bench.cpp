@@ -2,6 +2,7 @@
 //
 // Each subcommand parses its options, runs the benchmark (systems/benchmarks; bench ecs:
 // tools/pyro/bench_ecs.h) and prints its result.
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -60,12 +61,14 @@ void add_bench_sort(CLI::App* bench) {
 void print_scale(const nlohmann::json& r) {
   std::printf("%s at %dx%d, %d frames per count\n", r["scene"].get<std::string>().c_str(),
               r["width"].get<int>(), r["height"].get<int>(), r["frames"].get<int>());
-  std::printf("%12s %12s %12s %14s %18s\n", "particles", "ms/frame", "cpu ms", "sort/std::sort",
-              "instances/memcpy");
+  std::printf("%12s %12s %12s %14s %18s %8s\n", "particles", "ms/frame", "cpu ms", "sort/std::sort",
+              "instances/memcpy", "order");
+  const auto number = [](const nlohmann::json& v) { return v.is_null() ? NAN : v.get<double>(); };
   for (const nlohmann::json& c : r["counts"])
-    std::printf("%12llu %12.1f %12.2f %14.3f %18.2f\n", c["particles"].get<unsigned long long>(),
+    std::printf("%12llu %12.1f %12.2f %14.3f %18.2f %8s\n", c["particles"].get<unsigned long long>(),
                 c["ms_per_frame"].get<double>(), c["cpu_ms_per_frame"].get<double>(),
-                c["sort_over_std_sort"].get<double>(), c["instances_over_memcpy"].get<double>());
+                number(c["sort_over_std_sort"]), c["instances_over_memcpy"].get<double>(),
+                c["ordered_on"].get<std::string>().c_str());
   for (const char* slope : {"cpu_slope", "frame_slope"})
     std::printf("%s (log-log, 1e5 to 2e6): %s\n", slope,
                 r[slope].is_null() ? "none (fewer than two counts there)" : r[slope].dump().c_str());
@@ -89,6 +92,8 @@ void add_bench_scale(CLI::App* bench) {
       ->check(CLI::Range(0, 256));
   cmd->add_flag("--no-cull", [scale](std::int64_t) { scale->options.cull = false; },
                 "Sort and draw every particle, also those the view cannot show (to compare)");
+  add_enum_option<SortDevice>(cmd, "--sort-device", [scale](SortDevice d) { scale->options.sort_device = d; },
+                              "Where the draw order is made (default auto: the faster, measured)");
   cmd->add_flag("--json", scale->json, "Print one JSON object");
   cmd->callback([scale] {
     scale->options.progress = terminal_progress();
