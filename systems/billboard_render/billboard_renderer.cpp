@@ -157,7 +157,7 @@ uint32_t BillboardRenderer::gpu_kept() const { return gpu_sort_ ? gpu_sort_->rea
 void BillboardRenderer::draw(const DrawList& list, const std::vector<const ParticlePool*>& pools,
                              const CameraFrame& frame, const gpu::RenderTarget& target,
                              BillboardAlignment alignment, BillboardShading shading) {
-  if (list.size() == 0 && !list.on_gpu) return;
+  if ((list.on_gpu ? particles_in(pools) : list.size()) == 0) return;
   upload(list, pools);
   if (list.on_gpu) {
     order_on_gpu(list, pools);

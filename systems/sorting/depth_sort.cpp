@@ -215,6 +215,17 @@ SortDevice gpu_or_cpu(SortDevice asked, const SortDeviceChoice* choice, GpuKeyLa
   return SortDevice::automatic;
 }
 
+// How the GPU orders `list`, written over the last frame's request (no allocation in steady state).
+void set_gpu_request(const CameraFrame& eye, bool by_eye_distance, std::span<const ViewFrustum> views,
+                     DrawList& list) {
+  if (!list.gpu_request) list.gpu_request.emplace();
+  GpuOrderRequest& r = *list.gpu_request;
+  r.eye = eye.eye;
+  r.forward = eye.forward;
+  r.by_eye_distance = by_eye_distance;
+  r.views.assign(views.begin(), views.end());
+}
+
 // The sorting system's work for one frame: every view's list, indexed for the Gaussian splats
 // (their vertex shader reads the pools) and gathered for the billboards that read arrays.
 void sort_views(const ecs::World& world, const View& view, const RenderSettings* settings,
@@ -243,18 +254,12 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
                                          gpu_key_layout(lists.pools));
     for (size_t v = 0; v < orders; ++v) {
       DrawList& list = lists.eyes[v];
-      GpuOrderRequest request{eyes[v].eye, eyes[v].forward, !shared,
-                              std::vector<ViewFrustum>(views_of(v).begin(), views_of(v).end())};
-      if (device == SortDevice::gpu) {
-        list = DrawList{};
-        list.on_gpu = true;
-      } else {
-        order_draw_list(eyes[v].eye, eyes[v].forward, kind, scratch, list, views_of(v));
-        list.on_gpu = false;
-      }
+      list.on_gpu = device == SortDevice::gpu;
+      if (list.on_gpu) list.order.clear();
+      else order_draw_list(eyes[v].eye, eyes[v].forward, kind, scratch, list, views_of(v));
       // Kept on a CPU list too, while undecided: billboard_render measures the GPU's order of it.
-      if (device != SortDevice::cpu) list.gpu_request = std::move(request);
-      else list.gpu_request.reset();
+      if (device == SortDevice::cpu) list.gpu_request.reset();
+      else set_gpu_request(eyes[v], !shared, views_of(v), list);
     }
   } else {
     lists.pools.clear();
