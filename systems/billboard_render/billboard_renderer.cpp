@@ -115,23 +115,18 @@ void BillboardRenderer::upload(const DrawList& list, const std::vector<const Par
   copy_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   bytes_ += 2 * particles * sizeof(glm::vec4) + order_bytes;
   const auto offset = static_cast<GLintptr>(ring_.offset());
-  uploaded_ = {ring_.buffer(), offset, static_cast<GLsizeiptr>(std::max<std::size_t>(record_bytes, 32)),
-               offset + static_cast<GLintptr>(record_bytes),
-               static_cast<GLsizeiptr>(std::max<std::size_t>(order_bytes, 4)), particles};
-  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, ring_.buffer(), uploaded_.records_offset,
-                    uploaded_.records_bytes);
-  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, ring_.buffer(), uploaded_.second_offset,
-                    uploaded_.second_bytes);
+  uploaded_records_ = {ring_.buffer(), offset, static_cast<GLsizeiptr>(std::max<std::size_t>(record_bytes, 32))};
+  uploaded_order_ = {ring_.buffer(), offset + static_cast<GLintptr>(record_bytes),
+                     static_cast<GLsizeiptr>(std::max<std::size_t>(order_bytes, 4))};
+  uploaded_records_.bind(GL_SHADER_STORAGE_BUFFER, 0);
+  uploaded_order_.bind(GL_SHADER_STORAGE_BUFFER, 1);
 }
 
 void BillboardRenderer::order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools) {
   if (!gpu_sort_) gpu_sort_ = std::make_unique<GpuDepthSort>();
   GpuParticles in;
-  in.records = in.ids = uploaded_.buffer;
-  in.records_offset = uploaded_.records_offset;
-  in.records_bytes = uploaded_.records_bytes;
-  in.ids_offset = uploaded_.second_offset;
-  in.ids_bytes = uploaded_.second_bytes;
+  in.records = uploaded_records_;
+  in.ids = uploaded_order_;
   in.set_starts.push_back(0);
   for (const ParticlePool* p : pools) in.set_starts.push_back(in.set_starts.back() + uint32_t(p->size()));
   in.layout = gpu_key_layout(pools);

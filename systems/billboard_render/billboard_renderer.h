@@ -7,6 +7,7 @@
 
 #include "components/draw_list.h"
 #include "systems/scene/scene_description.h"
+#include "engine/gpu/buffer_range.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
@@ -68,16 +69,8 @@ class BillboardRenderer {
   // The last upload's particles ordered by gpu_sort_ (made on first use).
   void order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools);
 
-  // Where the last upload put the records and the order (or the ids).
-  struct Uploaded {
-    GLuint buffer = 0;
-    GLintptr records_offset = 0;
-    GLsizeiptr records_bytes = 0;
-    GLintptr second_offset = 0;
-    GLsizeiptr second_bytes = 0;
-    std::size_t particles = 0;
-  };
-  Uploaded uploaded_;
+  // Where the last upload put the records, and the order (or the ids).
+  gpu::BufferRange uploaded_records_, uploaded_order_;
   std::unique_ptr<GpuDepthSort> gpu_sort_;
 
   gpu::MappedRing ring_;

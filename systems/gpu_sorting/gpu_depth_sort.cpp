@@ -71,8 +71,8 @@ void GpuDepthSort::make_keys(const GpuParticles& in, const GpuOrderRequest& r) {
     glUniform4fv(gpu::uniform_location(keys_, "u_planes"), GLsizei(6 * r.views.size()),
                  glm::value_ptr(r.views[0].planes[0]));
   glUniform1f(gpu::uniform_location(keys_, "u_cull_radii"), kCullRadii);
-  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, in.records, in.records_offset, in.records_bytes);
-  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, in.ids, in.ids_offset, in.ids_bytes);
+  in.records.bind(GL_SHADER_STORAGE_BUFFER, 0);
+  in.ids.bind(GL_SHADER_STORAGE_BUFFER, 1);
   bind(2, set_starts_);
   bind(3, command_);
   bind(4, buffers_[0]);

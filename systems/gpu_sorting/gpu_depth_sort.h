@@ -14,6 +14,7 @@
 #include <epoxy/gl.h>
 
 #include "components/draw_list.h"
+#include "engine/gpu/buffer_range.h"
 #include "engine/gpu/gl_objects.h"
 #include "systems/sorting/gpu_key_layout.h"
 
@@ -23,12 +24,7 @@ namespace pyro {
 // then colour and density: the billboard renderer's records), every pool after the one before,
 // and each particle's id.
 struct GpuParticles {
-  GLuint records = 0;
-  GLintptr records_offset = 0;
-  GLsizeiptr records_bytes = 0;
-  GLuint ids = 0;
-  GLintptr ids_offset = 0;
-  GLsizeiptr ids_bytes = 0;
+  gpu::BufferRange records, ids;
   std::vector<uint32_t> set_starts;  // where each set's particles begin, then the total
   GpuKeyLayout layout;
   uint32_t count() const { return set_starts.empty() ? 0u : set_starts.back(); }

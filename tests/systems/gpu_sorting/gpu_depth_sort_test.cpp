@@ -79,10 +79,8 @@ std::vector<uint32_t> gpu_order(const Case& c) {
   glNamedBufferStorage(record_buffer.get(), GLsizeiptr(records.size() * sizeof(glm::vec4)) + 32,
                        records.data(), 0);
   glNamedBufferStorage(id_buffer.get(), GLsizeiptr(ids.size() * sizeof(uint32_t)) + 4, ids.data(), 0);
-  in.records = record_buffer.get();
-  in.records_bytes = GLsizeiptr(records.size() * sizeof(glm::vec4)) + 32;
-  in.ids = id_buffer.get();
-  in.ids_bytes = GLsizeiptr(ids.size() * sizeof(uint32_t)) + 4;
+  in.records = {record_buffer.get(), 0, GLsizeiptr(records.size() * sizeof(glm::vec4)) + 32};
+  in.ids = {id_buffer.get(), 0, GLsizeiptr(ids.size() * sizeof(uint32_t)) + 4};
   in.layout = gpu_key_layout(pointers(c));
   GpuDepthSort sort;
   sort.order(in, c.request);
