@@ -115,7 +115,10 @@ ScaleRun run_count(const SceneDescription& scene, const ScaleBenchOptions& o, Pr
   SceneRuntime runtime(scene, options);
   runtime.world().resource<RenderSettings>().cull_particles = o.cull;
   runtime.world().resource<RenderSettings>().sort_device = o.sort_device;
-  runtime.step();  // warm-up: shaders, tables, first allocations
+  // Warm-up: shaders, tables, first allocations; the second frame is where SortDevice::automatic
+  // measures both devices.
+  runtime.step();
+  runtime.step();
   glFinish();
   ScaleRun run;
   for (const CloudDescription& c : scene.clouds) run.particles += c.count;

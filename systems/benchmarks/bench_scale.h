@@ -20,7 +20,7 @@ namespace pyro {
 struct ScaleBenchOptions {
   std::string scene;
   std::vector<uint64_t> counts{100000, 200000, 500000, 1000000, 1500000, 2000000};
-  int frames = 5;   // timed frames per count, after one warm-up frame
+  int frames = 5;   // timed frames per count, after two warm-up frames
   int width = 0, height = 0;  // 0: the scene's size
   int threads = 0;  // the schedule's threads (0: one per core)
   bool cull = true;  // false: every particle sorted and drawn (RenderSettings::cull_particles)

@@ -106,7 +106,8 @@ void draw_anisotropic_clouds(ecs::World& world, bool layers_prepared) {
 
 // SortDevice::automatic: while the CPU orders a list the GPU could, and the choice was not
 // measured at this many particles, time the GPU's order of the first list against the sorting
-// system's CPU time per order this frame (its keys and radix order) and keep the faster.
+// system's CPU time per order this frame (its keys and radix order) and keep the faster; on the
+// second frame at this count (SortDeviceChoice::steady).
 void measure_sort_devices(ecs::World& world, BillboardRenderer& renderer, const EyeDrawLists& lists,
                           const RenderSettings& settings) {
   if (settings.sort_device != SortDevice::automatic || lists.eyes.empty()) return;
@@ -116,7 +117,9 @@ void measure_sort_devices(ecs::World& world, BillboardRenderer& renderer, const 
   uint64_t particles = 0;
   for (const ParticlePool* p : lists.pools) particles += p->size();
   SortDeviceChoice& choice = world.resource<SortDeviceChoice>();
-  if (particles == 0 || !choice.needs_measuring(particles)) return;
+  const bool steady = choice.steady(particles);
+  choice.last_frame_particles = particles;
+  if (particles == 0 || !steady || !choice.needs_measuring(particles)) return;
   // One order serves every eye facing the viewplane; facing the viewpoint, one per eye.
   const size_t orders = settings.alignment == BillboardAlignment::viewplane ? 1 : lists.eyes.size();
   choice.cpu_ms = (scratch->times.keys_ms + scratch->times.order_ms) / double(orders);
