@@ -19,6 +19,12 @@ std::string number(double v) {
   return text;
 }
 
+// A benchmark figure, or nan where the benchmark has none (an order made on the GPU has no
+// std::sort baseline).
+std::string number(const nlohmann::json& v) {
+  return v.is_null() ? "nan" : number(v.get<double>());
+}
+
 std::string slope_text(const nlohmann::json& slope) {
   return slope.is_null() ? "none (fewer than two counts from 1e5 to 2e6)" : number(slope.get<double>());
 }
@@ -45,13 +51,14 @@ ScaleChart chart_scale(const ScaleChartOptions& o) {
          std::to_string(o.frames) + " --json; cpu = simulation, camera, sorting, instance copy and "
          "draw submission; the frame adds the GL driver's work\n";
   csv += "particles,ms_per_frame,cpu_ms_per_frame,keys_ms,sort_ms,pack_ms,instance_write_ms,"
-         "draw_calls_ms,sort_over_std_sort,instances_over_memcpy\n";
+         "draw_calls_ms,sort_over_std_sort,instances_over_memcpy,ordered_on_gpu\n";
   for (const nlohmann::json& c : r["counts"]) {
     const nlohmann::json& st = c["stage_ms"];
     csv += number(c["particles"].get<double>()) + "," + number(c["ms_per_frame"]) + "," +
            number(c["cpu_ms_per_frame"]) + "," + number(st["keys"]) + "," + number(st["sort"]) + "," +
            number(st["pack"]) + "," + number(st["instance_write"]) + "," + number(st["draw_calls"]) +
-           "," + number(c["sort_over_std_sort"]) + "," + number(c["instances_over_memcpy"]) + "\n";
+           "," + number(c["sort_over_std_sort"]) + "," + number(c["instances_over_memcpy"]) + "," +
+           (c["ordered_on"] == "gpu" ? "1" : "0") + "\n";
   }
   return {csv, r};
 }
