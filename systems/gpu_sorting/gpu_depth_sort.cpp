@@ -55,6 +55,8 @@ void GpuDepthSort::make_keys(const GpuParticles& in, const GpuOrderRequest& r) {
   if (r.views.size() > size_t(kMaxViews))
     throw std::invalid_argument("GpuDepthSort: at most 8 views cull one list, got " +
                                 std::to_string(r.views.size()));
+  // The last draw from these buffers (another eye's, or the last frame's) reads them first.
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   const uint32_t initial[4] = {4, 0, 0, 0};  // 4 vertices, no instance kept yet
   glNamedBufferSubData(command_.get(), 0, sizeof(initial), initial);
   glNamedBufferSubData(set_starts_.get(), 0, GLsizeiptr(in.set_starts.size() * sizeof(uint32_t)),
