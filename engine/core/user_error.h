@@ -22,9 +22,10 @@ class UserError : public std::runtime_error {
  private:
   static std::string compose(const std::string& file, const std::string& place,
                              const std::string& expected) {
+    // No empty fields: an argument's error has no file ("at --error: ...").
     std::string s = file;
-    if (!place.empty()) s += ": at " + place;
-    s += ": " + expected;
+    if (!place.empty()) s += (s.empty() ? "at " : ": at ") + place;
+    s += (s.empty() ? "" : ": ") + expected;
     return s;
   }
   std::string file_, place_, expected_;

@@ -136,6 +136,7 @@ struct EmitterDescription {
 
 struct SceneDescription {
   std::string file;                          // where it was read from
+  std::string content_digest;                // SHA-256 of the parsed JSON (canonical form)
   std::string name;
   uint64_t seed = 1;
   int width = 800;                           // 1 .. 8192

@@ -9,6 +9,10 @@
 // that involve several fields.
 #include "systems/scene/scene_loader.h"
 
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -28,7 +32,10 @@
 #include <vector>
 
 #include "components/stereo_camera.h"
+#include "engine/core/edit_distance.h"
+#include "engine/core/file_kind.h"
 #include "engine/core/long_json_string.h"
+#include "engine/core/sha256.h"
 #include "engine/core/user_error.h"
 
 namespace pyro {
@@ -156,43 +163,10 @@ std::string escape_pointer_token(std::string_view token) {
   return out;
 }
 
-// Optimal string alignment distance (Levenshtein plus adjacent transpositions, so that
-// "raduis" is one edit from "radius"). Wagner & Fischer's recurrence (J. ACM 21(1), 1974) kept
-// in three rows over the shorter string: O(min(m, n)) memory, O(m n) time.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  if (a.size() < b.size()) std::swap(a, b);  // b is the shorter: rows of b.size() + 1
-  const std::size_t n = a.size(), m = b.size();
-  std::vector<std::size_t> before(m + 1), previous(m + 1), row(m + 1);
-  for (std::size_t j = 0; j <= m; ++j) previous[j] = j;
-  for (std::size_t i = 1; i <= n; ++i) {
-    row[0] = i;
-    for (std::size_t j = 1; j <= m; ++j) {
-      const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-      row[j] = std::min({previous[j] + 1, row[j - 1] + 1, previous[j - 1] + cost});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-        row[j] = std::min(row[j], before[j - 2] + 1);
-    }
-    std::swap(before, previous);
-    std::swap(previous, row);
-  }
-  return previous[m];
-}
-
-// Keys and names longer than this get no "did you mean" (no scene key is near that long): the
-// cost of a suggestion stays bounded whatever the input.
-constexpr std::size_t kSuggestLimit = 64;
-
 // "; did you mean "radius"?" when a candidate is within two edits, else the full list.
 std::string suggest(std::string_view wrong, const std::vector<std::string_view>& candidates) {
-  std::string_view best;
-  std::size_t best_distance = 3;
-  for (std::string_view c : candidates) {
-    const std::size_t gap = wrong.size() > c.size() ? wrong.size() - c.size() : c.size() - wrong.size();
-    if (wrong.size() > kSuggestLimit || gap >= best_distance) continue;  // distance >= gap
-    const std::size_t dist = edit_distance(wrong, c);
-    if (dist < best_distance) best_distance = dist, best = c;
-  }
-  if (best_distance <= 2) return "; did you mean " + in_quotes(best) + "?";
+  const std::string_view best = closest_candidate(wrong, candidates);
+  if (!best.empty()) return "; did you mean " + in_quotes(best) + "?";
   return "; expected one of " + quoted_list(candidates);
 }
 
@@ -750,16 +724,17 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
   } else if (has_fallback) {
     const std::string fallback_path = resolve_against(scene_file, v.fallback);
     if (!is_regular_file(fallback_path)) {
-      r.at("file").fail("expected an existing volume file, found neither " + in_quotes(file_path) +
-                        " nor its fallback " + in_quotes(fallback_path) +
-                        " (paths are relative to the scene file's folder)");
+      r.at("file").fail("expected an existing volume file, found " +
+                        non_regular_file_kind(file_path) + " at " + in_quotes(file_path) +
+                        " and " + non_regular_file_kind(fallback_path) + " at its fallback " +
+                        in_quotes(fallback_path) + " (paths are relative to the scene file's folder)");
     }
     v.path = fallback_path;
     v.kind = fallback_kind;
     v.used_fallback = true;
   } else {
-    r.at("file").fail("expected an existing volume file, found no file at " + in_quotes(file_path) +
-                      " (paths are relative to the scene file's folder)");
+    r.at("file").fail("expected an existing volume file, found " + non_regular_file_kind(file_path) +
+                      " at " + in_quotes(file_path) + " (paths are relative to the scene file's folder)");
   }
 }
 
@@ -1089,30 +1064,73 @@ SceneDescription parse_scene(const std::string& text, const std::string& file_na
   ObjectReader reader(root, Where{&file, ""});
   SceneDescription scene = read_scene(reader);
   scene.file = file;
+  // The scene as parsed, not its bytes: key order, spacing and number spelling do not count.
+  scene.content_digest = sha256_hex(root.dump());
   return scene;
 }
 
-SceneDescription load_scene(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw UserError(path, "", "cannot open scene file: expected a file, found a directory");
-  }
-  errno = 0;
-  struct Closer {
-    void operator()(std::FILE* f) const { std::fclose(f); }
-  };
-  std::unique_ptr<std::FILE, Closer> file(std::fopen(path.c_str(), "rb"));
-  if (!file)
-    throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
+namespace {
+
+// Everything `fd` holds until its end. Throws UserError naming `path` on a read error.
+std::string read_all(int fd, const std::string& path) {
   std::string text;
-  if (const auto size = std::filesystem::file_size(path, ec); !ec) text.reserve(size);
   char buffer[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, n);
-  if (std::ferror(file.get())) {
-    throw UserError(path, "", std::string("cannot read scene file: ") + std::strerror(errno));
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw UserError(path, "", std::string("cannot read scene file: ") + std::strerror(errno));
+    if (n == 0) return text;
+    text.append(buffer, static_cast<std::size_t>(n));
   }
-  return parse_scene(text, path);
+}
+
+// A pipe (bash's <(...), standard input) is read once; a named FIFO that no program writes to
+// would block the open and every read forever, so it is opened without blocking and refused when
+// nothing arrives within a second.
+std::string read_fifo(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
+  struct pollfd p {fd, POLLIN, 0};
+  int ready;
+  do ready = ::poll(&p, 1, 1000);
+  while (ready < 0 && errno == EINTR);
+  if (ready == 0) {
+    ::close(fd);
+    throw UserError(path, "", "expected a scene file, found a FIFO (named pipe) that no program "
+                              "wrote to within 1 s");
+  }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  try {
+    std::string text = read_all(fd, path);
+    ::close(fd);
+    return text;
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+}
+
+std::string read_scene_text(const std::string& path) {
+  if (path == "-") return read_all(STDIN_FILENO, "<standard input>");
+  if (is_fifo(path)) return read_fifo(path);
+  if (const std::string kind = non_regular_file_kind(path); !kind.empty())
+    throw UserError(path, "", "expected a scene file, found " + kind);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
+  try {
+    std::string text = read_all(fd, path);
+    ::close(fd);
+    return text;
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+}
+
+}  // namespace
+
+SceneDescription load_scene(const std::string& path) {
+  return parse_scene(read_scene_text(path), path == "-" ? "<standard input>" : path);
 }
 
 }  // namespace pyro
