@@ -48,11 +48,6 @@ nlohmann::json read_json(const fs::path& file) {
   return nlohmann::json::parse(text, nullptr, false);
 }
 
-// The settings a manifest or a run record names; null where it names none.
-nlohmann::json settings_in(const nlohmann::json& j) {
-  return j.is_object() && j.contains("settings") ? j.at("settings") : nlohmann::json();
-}
-
 nlohmann::json read_manifest(const fs::path& file) {
   nlohmann::json m = read_json(file);
   if (m.is_discarded() || !m.is_object() || !m["files"].is_array())
@@ -61,32 +56,45 @@ nlohmann::json read_manifest(const fs::path& file) {
   return m;
 }
 
+// The digest an identity, a manifest or a run record names; empty where it names none.
+std::string digest_in(const nlohmann::json& j) {
+  if (!j.is_object()) return {};
+  const nlohmann::json& id = j.contains("identity") ? j.at("identity") : j;
+  return id.is_object() && id.contains("digest") && id.at("digest").is_string() ? id.at("digest").get<std::string>()
+                                                                               : std::string();
+}
+
+nlohmann::json parts_in(const nlohmann::json& j) {
+  if (!j.is_object() || !j.contains("identity") || !j.at("identity").is_object()) return nullptr;
+  return j.at("identity").value("parts", nlohmann::json());
+}
+
+nlohmann::json choices_in(const nlohmann::json& j) {
+  return j.is_object() && j.contains("choices") && j.at("choices").is_object() ? j.at("choices")
+                                                                               : nlohmann::json::object();
+}
+
 }  // namespace
 
-OutputFolder::OutputFolder(const std::string& out, const std::string& scene,
-                           const std::string& settings_json, OutputFolderOptions options)
-    : out_(out), scene_(scene), settings_json_(settings_json) {
+OutputFolder::OutputFolder(const std::string& out, const std::string& identity_json,
+                           Difference describe, OutputFolderOptions options)
+    : out_(out), identity_json_(identity_json), describe_(describe), resume_(options.resume) {
+  digest_ = digest_in(nlohmann::json::parse(identity_json_));
   std::error_code ec;
-  if (fs::exists(out_, ec) && !fs::is_directory(out_, ec))
-    throw UserError(out_, "--out", "expected a folder for the output, found a file");
-  const bool created = !fs::exists(out_, ec);
-  fs::create_directories(out_, ec);
-  if (ec) throw UserError(out_, "--out", "cannot create the output folder: " + ec.message());
+  created_ = create_output_folder(out_, "--out");
   try {
     lock(options.wait);
-    check_manifest(options.overwrite);
-    staging_ = std::make_unique<StagingFolder>(out_, /*remove_stale=*/false);
-    write_run_record();
-    take_killed_runs_files(options.resume);
-    remove_stale_staging(out_);
+    check_manifest(options);
   } catch (...) {
-    if (created && fs::is_empty(out_, ec)) fs::remove(out_, ec);
+    if (created_ && fs::is_empty(out_, ec)) fs::remove(out_, ec);
     throw;
   }
 }
 
 OutputFolder::~OutputFolder() {
   staging_.reset();
+  std::error_code ec;
+  if (created_ && fs::is_empty(out_, ec)) fs::remove(out_, ec);  // a run that wrote nothing
   if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the flock
 }
 
@@ -110,47 +118,73 @@ void OutputFolder::lock(bool wait) {
   }
 }
 
-void OutputFolder::check_manifest(bool overwrite) {
+void OutputFolder::check_manifest(OutputFolderOptions options) {
   const fs::path file = fs::path(out_) / kOutputManifestName;
   std::error_code ec;
   std::vector<std::string> listed;
   std::string why;
-  if (fs::exists(file, ec)) {
+  const bool has_manifest = fs::exists(file, ec);
+  if (has_manifest) {
     const nlohmann::json m = read_manifest(file);
     for (const auto& f : m["files"])
-      if (f.is_string()) listed.push_back(f.get<std::string>());
-    const nlohmann::json settings = nlohmann::json::parse(settings_json_);
-    if (m.value("scene", "") != scene_)
-      why = "holds frames of " + m.value("scene", std::string("another scene"));
-    else if (settings_in(m) != settings)
-      why = "holds frames of this scene with other settings: " + settings_in(m).dump();
+      if (f.is_string() && f.get<std::string>().find('/') == std::string::npos)
+        listed.push_back(f.get<std::string>());
+    if (digest_in(m) == digest_) {
+      // A run killed while moving its files in wrote the manifest first: keep what is there.
+      for (const std::string& name : listed)
+        if (fs::exists(fs::path(out_) / name, ec)) held_.push_back(name);
+      manifest_choices_ = choices_in(m).dump();
+      return;
+    }
+    const nlohmann::json now = nlohmann::json::parse(identity_json_).value("parts", nlohmann::json());
+    why = "holds " + std::to_string(listed.size()) + " file(s) of another run, which differs from "
+          "this one in " + describe_(parts_in(m).dump(), now.dump());
   } else {
     listed = unaccounted_frames(out_);
-    if (!listed.empty()) why = "holds " + std::to_string(listed.size()) + " frame files no manifest accounts for";
+    if (listed.empty()) return;
+    why = "holds " + std::to_string(listed.size()) + " frame files no manifest accounts for";
   }
-  if (why.empty()) {
-    // A run killed while moving its files in wrote the manifest first: keep what is there.
-    for (const std::string& name : listed)
-      if (name.find('/') == std::string::npos && fs::exists(fs::path(out_) / name, ec))
-        held_.push_back(name);
+  if (options.overwrite || (options.resume && has_manifest)) {
+    if (has_manifest) stale_ = listed;  // files no manifest names are not this engine's to remove
+    replaced_because_ = why;
     return;
   }
-  if (!overwrite)
-    throw UserError(out_, "--out", "an empty folder or one holding this scene's frames with the "
-                                   "same settings; the folder " + why.substr(0, 300) +
-                                       " (pass --overwrite to replace them)");
-  stale_ = listed;
+  throw UserError(out_, "--out", "an empty folder or one holding this run's frames; the folder " +
+                                     why.substr(0, 400) +
+                                     (has_manifest ? " (pass --resume to draw them again for this "
+                                                     "run, or --overwrite to replace them)"
+                                                   : " (pass --overwrite to write over them)"));
 }
 
-void OutputFolder::write_run_record() {
-  const nlohmann::json record = {{"scene", scene_}, {"settings", nlohmann::json::parse(settings_json_)}};
+std::string OutputFolder::recorded(const std::string& key) const {
+  nlohmann::json choices = manifest_choices_.empty() ? nlohmann::json::object()
+                                                      : nlohmann::json::parse(manifest_choices_);
+  if (!choices.contains(key)) {
+    for (const fs::path& stale : stale_staging_folders(out_)) {
+      const nlohmann::json r = read_json(stale / kStagingRecordName);
+      if (digest_in(r) == digest_ && choices_in(r).contains(key)) {
+        choices = choices_in(r);
+        break;
+      }
+    }
+  }
+  return choices.contains(key) ? choices.at(key).dump() : std::string();
+}
+
+void OutputFolder::begin(const std::string& choices_json) {
+  choices_json_ = choices_json;
+  staging_ = std::make_unique<StagingFolder>(out_, /*remove_stale=*/false);
+  const nlohmann::json record = {{"identity", nlohmann::json::parse(identity_json_)},
+                                 {"choices", nlohmann::json::parse(choices_json_)}};
   write_file_durably((staging_->path() / kStagingRecordName).string(), record.dump() + "\n");
+  take_killed_runs_files(resume_);
+  removed_leftovers_ = remove_stale_staging(out_);
 }
 
 bool OutputFolder::same_run(const fs::path& record) const {
   const nlohmann::json r = read_json(record);
-  return !r.is_discarded() && r.is_object() && r.value("scene", "") == scene_ &&
-         settings_in(r) == nlohmann::json::parse(settings_json_);
+  return !r.is_discarded() && digest_in(r) == digest_ &&
+         choices_in(r) == nlohmann::json::parse(choices_json_);
 }
 
 void OutputFolder::take_killed_runs_files(bool resume) {
@@ -180,17 +214,17 @@ void OutputFolder::commit() {
   // The manifest first: a run killed while the files move in leaves a manifest naming them
   // (check_manifest keeps those that arrived; --resume adopts the rest from the staging folder,
   // whose record goes last).
-  nlohmann::json manifest = {{"scene", scene_},
-                             {"settings", nlohmann::json::parse(settings_json_)},
+  nlohmann::json manifest = {{"identity", nlohmann::json::parse(identity_json_)},
+                             {"choices", nlohmann::json::parse(choices_json_)},
                              {"files", std::vector<std::string>(files.begin(), files.end())}};
   write_file_durably((fs::path(out_) / kOutputManifestName).string(), manifest.dump(1) + "\n");
   staging_->commit();
-  // With --overwrite: the other run's files this one did not rewrite.
+  // The replaced run's files this one did not rewrite.
   for (const std::string& name : stale_)
-    if (!files.count(name) && name.find('/') == std::string::npos)
-      fs::remove(fs::path(out_) / name, ec);
+    if (!files.count(name)) fs::remove(fs::path(out_) / name, ec);
   stale_.clear();
   held_.assign(files.begin(), files.end());
+  created_ = false;
 }
 
 }  // namespace pyro

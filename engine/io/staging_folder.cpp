@@ -86,14 +86,23 @@ int remove_stale_staging(const fs::path& out) {
          remove_all_of(stale_in(target.parent_path(), "." + target.filename().string() + ".partial-"));
 }
 
+bool create_output_folder(const std::string& out, const std::string& option) {
+  std::error_code ec;
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
+    throw UserError(out, option, "expected a folder for the output, found a file");
+  if (fs::is_directory(out, ec)) return false;
+  fs::create_directories(out, ec);
+  if (!ec) return true;
+  if (ec == std::errc::no_such_file_or_directory || ec == std::errc::not_a_directory ||
+      ec == std::errc::file_exists)
+    throw UserError(out, option, "cannot create the output folder: " + ec.message());
+  throw IoError(out, "create the output folder", ec.value());
+}
+
 StagingFolder::StagingFolder(const std::string& out, bool remove_stale) : out_(normalized(out)) {
   std::error_code ec;
-  if (fs::exists(out_, ec) && !fs::is_directory(out_, ec))
-    throw UserError(out, "--out", "expected a folder for the output, found a file");
-  created_out_ = !fs::exists(out_, ec);
-  fs::create_directories(out_, ec);
-  if (ec) throw UserError(out, "--out", "cannot create the output folder: " + ec.message());
-  if (remove_stale) remove_stale_staging(out_);
+  created_out_ = create_output_folder(out, "--out");
+  if (remove_stale) removed_leftovers_ = remove_stale_staging(out_);
   staging_ = out_ / (".partial-" + std::to_string(::getpid()));
   fs::remove_all(staging_, ec);  // left by an earlier process with the same id, killed
   if (::mkdir(staging_.c_str(), 0755) != 0) {

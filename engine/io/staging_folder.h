@@ -23,6 +23,8 @@ class StagingFolder {
   StagingFolder& operator=(const StagingFolder&) = delete;
 
   const std::filesystem::path& path() const { return staging_; }
+  // How many leftovers of killed runs the constructor removed (remove_stale_staging).
+  int removed_leftovers() const { return removed_leftovers_; }
 
   // Renames every file of the staging folder into `out` (replacing a file of the same name),
   // but for those whose names start with '.' (the staging folder's own records, removed last),
@@ -36,7 +38,13 @@ class StagingFolder {
  private:
   std::filesystem::path out_, staging_;
   bool created_out_ = false;
+  int removed_leftovers_ = 0;
 };
+
+// Creates the output folder `out` (and its parents) unless it exists; returns whether it did.
+// Throws UserError(out, option, ...) when `out` is a file or its parent is missing or a file
+// (the user's to fix), IoError when the file system refuses (read-only, full, no permission).
+bool create_output_folder(const std::string& out, const std::string& option);
 
 // The process id a staging folder's name ends with (`.partial-PID`, `.NAME.partial-PID`), or 0.
 int staging_owner(const std::string& name);

@@ -1,14 +1,17 @@
 // pyro render SCENE --out DIR [--width W] [--height H] [--frames N | --frames A:B] [--json]
 //                  [--wait] [--overwrite | --resume]
 //
-// DIR has one writer at a time and a manifest (engine/io/output_folder.h). Frames are rendered
-// into a temporary folder inside DIR and moved into place only when every frame has been
-// written: a failure (or a refusal) leaves DIR as it was. With --resume, the frames a killed run
-// of the same scene and settings finished, and those DIR already holds, are kept and only the
-// others drawn (still simulated from frame 0: the same bytes as an uninterrupted run). Which
+// DIR has one writer at a time and a manifest keyed on the run's identity (its content:
+// systems/scene_runtime/run_identity.h; engine/io/output_folder.h). Frames are rendered into a
+// temporary folder inside DIR and moved into place only when every frame has been written: a
+// failure (or a refusal) leaves DIR as it was. With --resume, the frames a killed run of the same
+// identity finished, and those DIR already holds, are kept and only the others drawn (still
+// simulated from frame 0: the same bytes as an uninterrupted run); frames of another identity
+// (an edited scene or asset) are drawn again and counted. Which
 // steps make which frames (substeps, the motion-blur prefix, ranges) is the runtime's
 // FrameSequencer.
 #include <chrono>
+#include <limits>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -19,6 +22,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/cache_folder.h"
+#include "engine/core/same_file.h"
 #include "engine/core/trace_events.h"
 #include "engine/core/user_error.h"
 #include "engine/io/output_folder.h"
@@ -27,10 +32,13 @@
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/frame_range.h"
 #include "systems/scene_runtime/particle_counts.h"
+#include "systems/scene_runtime/resolve_scene.h"
+#include "systems/scene_runtime/run_identity.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/render_options.h"
+#include "tools/pyro/stdout_text.h"
 #include "tools/pyro/trace_path.h"
 
 namespace pyro::cli {
@@ -83,26 +91,42 @@ nlohmann::json render_summary(const RenderArgs& a, SceneRuntime& runtime, const 
   return summary;
 }
 
-// What the output folder's manifest records besides the scene: whatever changes the pixels.
-nlohmann::json pixel_settings(SceneRuntime& runtime, const RuntimeOptions& o) {
-  const RenderSettings& rs = runtime.settings();
+// What changes the pixels besides the scene and its assets, as the run resolves them before any
+// quality pick (a pick is recorded with the run instead: OutputFolder::recorded).
+nlohmann::json pixel_settings(const SceneDescription& scene, const RuntimeOptions& o) {
+  RuntimeOptions requested = o;
+  requested.quality.reset();
+  const RenderSettings rs =
+      resolve_scene(scene, requested, std::numeric_limits<int>::max()).settings;
   nlohmann::json s = {{"width", rs.width},
                       {"height", rs.height},
                       {"stereo", name_of(rs.stereo_mode)},
                       {"billboards", name_of(rs.alignment)},
+                      {"particles", name_of(rs.particles)},
                       {"layer_scale", rs.layer_scale},
                       {"frame_scale", o.frame_scale}};
-  if (o.particles) s["particles"] = name_of(*o.particles);
   if (o.shading) s["shading"] = name_of(*o.shading);
   if (o.interocular) s["interocular"] = *o.interocular;
   if (o.zero_parallax_distance) s["zero_parallax"] = *o.zero_parallax_distance;
   if (o.swap_eyes) s["swap_eyes"] = *o.swap_eyes;
-  if (o.quality) s["quality"] = to_json(*o.quality);
   return s;
 }
 
-// What a resumed run need not draw again: the files the folder holds for this scene and
-// settings and those adopted from killed runs.
+std::string describe_difference(const std::string& before, const std::string& now) {
+  return identity_difference(nlohmann::json::parse(before), nlohmann::json::parse(now));
+}
+
+// The files a render reads, which no output of it may replace.
+std::vector<NamedPath> render_inputs(const std::string& scene_arg, const SceneDescription& scene) {
+  std::vector<NamedPath> inputs;
+  if (scene_arg != "-") inputs.push_back({scene_arg, "the scene file"});
+  for (const VolumeDescription& v : scene.volumes)
+    inputs.push_back({v.path, "the volume file of " + scene_arg + " at " + v.pointer});
+  return inputs;
+}
+
+// What a resumed run need not draw again: the files the folder holds for this run and those
+// adopted from killed runs of it.
 std::set<std::string> finished_files(const OutputFolder& folder, bool resume) {
   std::set<std::string> done;
   if (!resume) return done;
@@ -116,13 +140,24 @@ struct DrawnFrames {
   int drawn = 0;                                   // frames drawn by this run (the rest kept)
 };
 
+void say_what_the_folder_held(const OutputFolder& folder, const RenderArgs& a) {
+  if (folder.discarded_files() > 0)
+    print_note("removed " + std::to_string(folder.discarded_files()) + " finished frame file(s) a "
+               "killed run of this render had left in " + a.out + " (--resume keeps them)");
+  else if (folder.removed_leftovers() > 0)
+    print_note("removed " + std::to_string(folder.removed_leftovers()) +
+               " leftover(s) of killed runs from " + a.out);
+  if (folder.replaced_files() > 0)
+    print_note(std::string(a.folder.resume ? "resuming: " : "") + "replacing " +
+               std::to_string(folder.replaced_files()) + " file(s) of " + a.out + ": it " +
+               folder.replaced_because());
+}
+
 // Draws the frames of `range` that `folder` does not already hold finished (all of them unless
 // --resume) into its staging folder.
 DrawnFrames draw_into(SceneRuntime& runtime, OutputFolder& folder, const FrameRange& range,
                       const RenderArgs& a) {
-  if (folder.discarded_files() > 0)
-    print_note("removed " + std::to_string(folder.discarded_files()) + " finished frame file(s) a "
-               "killed run of this render had left in " + a.out + " (--resume keeps them)");
+  say_what_the_folder_held(folder, a);
   const std::set<std::string> done = finished_files(folder, a.folder.resume);
   DrawnFrames result;
   std::vector<int> to_draw;
@@ -148,36 +183,91 @@ DrawnFrames draw_into(SceneRuntime& runtime, OutputFolder& folder, const FrameRa
   return result;
 }
 
-void run_render(const RenderArgs& a) {
-  // Everything the user can get wrong is checked before anything is written.
-  const FrameRange range = parse_frame_range(a.frames, "--frames");
-  const SceneDescription scene = load_scene(a.scene);
+// Everything the user can get wrong that needs no reading of the scene.
+void check_render_arguments(const RenderArgs& a) {
   std::error_code ec;
   if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
     throw UserError(a.out, "--out", "expected a folder for the frames, found a file");
   if (!a.trace.empty()) check_trace_path(a.trace, "--trace");
   if (a.folder.resume && a.folder.overwrite)
-    throw UserError("--resume", "", "either --resume (keep this render's finished frames) or "
-                                    "--overwrite (replace another render's), not both");
+    throw UserError("--resume", "", "either --resume (keep this run's finished frames, draw the "
+                                    "rest) or --overwrite (replace another run's), not both");
+}
+
+// The run's quality pick: the one recorded with the folder's run (every range of a run draws
+// with the same pick, cache or no cache), else the cache's or one measured now.
+std::optional<QualityPick> run_quality(const SceneDescription& scene, const RuntimeOptions& options,
+                                       const OutputFolder& folder, const std::string& out) {
+  if (!scene.quality.given()) return std::nullopt;
+  if (const std::string recorded = folder.recorded("quality"); !recorded.empty()) {
+    try {
+      QualityPick pick = quality_pick_from_json(nlohmann::json::parse(recorded), scene);
+      pick.from_cache = true;
+      pick.cache_file = (std::filesystem::path(out) / kOutputManifestName).string();
+      return pick;
+    } catch (const std::exception& e) {
+      print_note(std::string("quality: the pick recorded with the folder's run is damaged (") +
+                 e.what() + "); picking again");
+    }
+  }
+  return pick_scene_quality(scene, options, shared_headless_context().description(), print_note);
+}
+
+nlohmann::json render_identity_json(const SceneDescription& scene, const RuntimeOptions& options,
+                                    const RenderArgs& a) {
+  DigestCache digests(cache_folder());
+  const RunIdentity id = run_identity(scene, pixel_settings(scene, options), PYRO_VERSION, digests, print_note);
+  return {{"digest", id.digest}, {"parts", id.parts}, {"scene_file", a.scene}};
+}
+
+void print_render_result(const RenderArgs& a, const SceneDescription& scene, const FrameRange& range,
+                         const DrawnFrames& drawn, const nlohmann::json& summary, double seconds) {
+  if (a.json) {
+    write_stdout(summary.dump() + "\n");
+    return;
+  }
+  const std::string kept =
+      drawn.drawn < range.count()
+          ? ", " + std::to_string(range.count() - drawn.drawn) + " kept from an earlier run"
+          : "";
+  // (The particle count is the last drawn frame's: none when every frame was kept.)
+  const std::string particles =
+      drawn.drawn > 0 ? ", " + std::to_string(summary["particles"].get<size_t>()) + " particles" : "";
+  char line[1024];
+  std::snprintf(line, sizeof line, "rendered %d frame(s) of %s (%dx%d %s%s%s) into %s in %.2f s\n",
+                drawn.drawn, scene.file.c_str(), summary["width"].get<int>(),
+                summary["height"].get<int>(), summary["stereo"].get<std::string>().c_str(),
+                particles.c_str(), kept.c_str(), a.out.c_str(), seconds);
+  write_stdout(line);
+}
+
+void run_render(const RenderArgs& a) {
+  // Everything the user can get wrong is checked before anything is written.
+  const FrameRange range = parse_frame_range(a.frames, "--frames");
+  check_render_arguments(a);
+  const SceneDescription scene = load_scene(a.scene);
+  if (!a.trace.empty()) {
+    refuse_output_over_inputs(a.trace, "--trace", render_inputs(a.scene, scene));
+    refuse_output_inside(a.trace, "--trace", a.out, "--out's frames and manifest");
+  }
 
   RuntimeOptions options = a.runtime;
   options.readback = false;
   options.width_override = a.width;
   options.height_override = a.height;
   options.profile = !a.trace.empty();
+  const auto t0 = std::chrono::steady_clock::now();
+  OutputFolder folder(a.out, render_identity_json(scene, options, a).dump(), describe_difference, a.folder);
   // A quality target (scene key quality.max_rmse) picks the layer scale, footprint size and time
-  // step: from the cache, or measured now and cached.
-  const std::optional<QualityPick> quality =
-      pick_scene_quality(scene, options, shared_headless_context().description(), print_note);
+  // step once for the run.
+  const std::optional<QualityPick> quality = run_quality(scene, options, folder, a.out);
   if (quality) {
     options.quality = quality->settings;
     print_note(quality_pick_note(*quality, scene));
   }
+  folder.begin(nlohmann::json{{"quality", quality ? quality->to_json() : nlohmann::json()}}.dump());
 
-  const auto t0 = std::chrono::steady_clock::now();
   SceneRuntime runtime(scene, options);  // refuses a scene over its budget (scene_budget.h)
-  const std::string scene_id = std::filesystem::weakly_canonical(a.scene, ec).string();
-  OutputFolder folder(a.out, scene_id, pixel_settings(runtime, options).dump(), a.folder);
   const DrawnFrames drawn = draw_into(runtime, folder, range, a);
   folder.commit();
   if (!a.trace.empty())
@@ -187,6 +277,7 @@ void run_render(const RenderArgs& a) {
   nlohmann::json summary = render_summary(a, runtime, range, drawn.files, seconds);
   summary["drawn_frames"] = drawn.drawn;
   summary["kept_frames"] = range.count() - drawn.drawn;
+  summary["replaced_files"] = folder.replaced_files();
   if (quality) {
     summary["quality"] = {{"max_rmse", quality->max_rmse},
                           {"settings", to_json(quality->settings)},
@@ -195,21 +286,7 @@ void run_render(const RenderArgs& a) {
                           {"ground_truth", quality->ground_truth},
                           {"from_cache", quality->from_cache}};
   }
-  if (a.json) {
-    std::printf("%s\n", summary.dump().c_str());
-  } else {
-    const std::string kept =
-        drawn.drawn < range.count()
-            ? ", " + std::to_string(range.count() - drawn.drawn) + " kept from an earlier run"
-            : "";
-    // (The particle count is the last drawn frame's: none when every frame was kept.)
-    const std::string particles =
-        drawn.drawn > 0 ? ", " + std::to_string(summary["particles"].get<size_t>()) + " particles" : "";
-    std::printf("rendered %d frame(s) of %s (%dx%d %s%s%s) into %s in %.2f s\n", drawn.drawn,
-                scene.file.c_str(), summary["width"].get<int>(), summary["height"].get<int>(),
-                summary["stereo"].get<std::string>().c_str(), particles.c_str(), kept.c_str(),
-                a.out.c_str(), seconds);
-  }
+  print_render_result(a, scene, range, drawn, summary, seconds);
 }
 
 }  // namespace
@@ -217,7 +294,7 @@ void run_render(const RenderArgs& a) {
 void add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render a scene file to PNG frames");
-  cmd->add_option("scene", args->scene, "Scene file (JSON), e.g. content/scenes/fog.json")->required();
+  cmd->add_option("scene", args->scene, "Scene file (JSON), e.g. content/scenes/fog.json; - reads it from standard input")->required();
   cmd->add_option("--out", args->out, "Folder for frame_0000.png, frame_0001.png, ...")->required();
   cmd->add_option("--width", args->width, "Image width in pixels (default: the scene's)")
       ->check(CLI::Range(1, 8192));
@@ -233,10 +310,10 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--wait", args->folder.wait,
                 "Wait for another run writing into --out to finish (default: refuse)");
   cmd->add_flag("--overwrite", args->folder.overwrite,
-                "Replace --out's frames of another scene or other settings");
+                "Replace --out's frames of another run (another scene, asset or settings)");
   cmd->add_flag("--resume", args->folder.resume,
-                "Finish a killed run: keep the frames it (and --out) already hold for this scene "
-                "and settings, draw the others");
+                "Finish a killed run: keep the frames it (and --out) already hold for this run "
+                "(same scene, assets, settings and engine), draw the others");
   add_render_options(cmd, args->runtime);
   cmd->callback([args] { run_render(*args); });
 }
