@@ -6,7 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "engine/core/user_error.h"
+#include "engine/core/cache_folder.h"
+#include "engine/core/file_kind.h"
 #include "engine/io/text_file.h"
 
 namespace pyro {
@@ -20,13 +21,8 @@ uint64_t fnv1a64(const std::string& bytes, uint64_t hash) {
 }
 
 std::string quality_cache_path() {
-  namespace fs = std::filesystem;
-  if (const char* d = std::getenv("PYRO_CACHE_DIR"); d && *d) return (fs::path(d) / "quality.json").string();
-  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d)
-    return (fs::path(d) / "pyrocumulus" / "quality.json").string();
-  if (const char* d = std::getenv("HOME"); d && *d)
-    return (fs::path(d) / ".cache" / "pyrocumulus" / "quality.json").string();
-  return {};
+  const std::string folder = cache_folder();
+  return folder.empty() ? std::string() : (std::filesystem::path(folder) / "quality.json").string();
 }
 
 std::string engine_build_identity() {
@@ -56,19 +52,35 @@ std::string quality_cache_key(const std::string& scene_bytes, int width, int hei
 }
 
 namespace {
-nlohmann::json read_all(const std::string& path) {
+
+// The cache's entries; an empty object for a missing file. `damage` says why a file that exists
+// was not read (not a regular file, not a JSON object).
+nlohmann::json read_all(const std::string& path, std::string& damage) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec) && !std::filesystem::is_symlink(path, ec))
+    return nlohmann::json::object();
+  if (const std::string kind = non_regular_file_kind(path); !kind.empty()) {
+    damage = "expected a regular file, found " + kind;
+    return nlohmann::json::object();
+  }
   std::ifstream in(path, std::ios::binary);
-  if (!in) return nlohmann::json::object();
   std::stringstream text;
   text << in.rdbuf();
   nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
-  return j.is_object() ? j : nlohmann::json::object();
+  if (j.is_object()) return j;
+  damage = "not a JSON object";
+  return nlohmann::json::object();
 }
+
 }  // namespace
 
-std::optional<nlohmann::json> read_quality_cache(const std::string& path, const std::string& key) {
+std::optional<nlohmann::json> read_quality_cache(const std::string& path, const std::string& key,
+                                                 const std::function<void(const std::string&)>& on_note) {
   if (path.empty()) return std::nullopt;
-  const nlohmann::json all = read_all(path);
+  std::string damage;
+  const nlohmann::json all = read_all(path, damage);
+  if (!damage.empty() && on_note)
+    on_note("quality: ignored the cache \"" + path + "\" (" + damage + ")");
   const auto it = all.find(key);
   if (it == all.end() || !it->is_object()) return std::nullopt;
   return *it;
@@ -78,12 +90,14 @@ bool write_quality_cache(const std::string& path, const std::string& key, const 
   if (path.empty()) return false;
   std::error_code ec;
   std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
-  nlohmann::json all = read_all(path);
+  std::string damage;
+  nlohmann::json all = read_all(path, damage);
+  if (!damage.empty() && !non_regular_file_kind(path).empty()) return false;  // never replace a non-file
   all[key] = entry;
   try {
     write_text_file(path, all.dump(1) + "\n");
-  } catch (const UserError&) {
-    return false;
+  } catch (const std::exception&) {
+    return false;  // a cache that cannot be written never fails the command
   }
   return true;
 }

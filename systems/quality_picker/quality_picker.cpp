@@ -1,10 +1,10 @@
 #include "systems/quality_picker/quality_picker.h"
 
+#include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <stdexcept>
 #include <limits>
 #include <optional>
-#include <sstream>
 
 #include "engine/core/user_error.h"
 #include "systems/quality/quality_cache.h"
@@ -14,15 +14,7 @@ namespace pyro {
 
 namespace {
 
-std::string file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UserError(path, "", "cannot read the scene file to key the quality cache");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-QualityPick pick_from_json(const nlohmann::json& j) {
+QualityPick pick_from_json_unchecked(const nlohmann::json& j) {
   QualityPick p;
   p.max_rmse = j.at("max_rmse").get<double>();
   p.settings = quality_settings_from_json(j.at("settings"));
@@ -37,7 +29,30 @@ QualityPick pick_from_json(const nlohmann::json& j) {
   return p;
 }
 
+bool same_settings(const QualitySettings& a, const QualitySettings& b) {
+  return a.layer_scale == b.layer_scale && a.footprint_size == b.footprint_size && a.substeps == b.substeps;
+}
+
 }  // namespace
+
+QualityPick quality_pick_from_json(const nlohmann::json& j, const SceneDescription& scene) {
+  QualityPick p;
+  try {
+    p = pick_from_json_unchecked(j);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(std::string("not a quality pick: ") + e.what());
+  }
+  // A pick is one of the candidates this scene would measure (a damaged or hand-edited entry,
+  // e.g. a footprint of 0 or 1e9, would otherwise reach the renderer).
+  bool candidate = false;
+  for (const QualitySettings& q : quality_candidates(scene)) candidate = candidate || same_settings(q, p.settings);
+  if (!candidate)
+    throw std::runtime_error("settings " + pyro::to_json(p.settings).dump() +
+                             " are none of the scene's candidates");
+  for (double v : {p.max_rmse, p.expected_rmse, p.ms_per_frame})
+    if (!std::isfinite(v) || v < 0.0) throw std::runtime_error("a value that is not a finite number >= 0");
+  return p;
+}
 
 nlohmann::json QualityPick::to_json() const {
   return {{"max_rmse", max_rmse},
@@ -78,17 +93,23 @@ std::vector<QualitySettings> quality_candidates(const SceneDescription& scene) {
 
 namespace {
 
-std::optional<QualityPick> cached_pick(const std::string& path, const std::string& key) {
-  const auto cached = read_quality_cache(path, key);
+// The cached pick under `key`, checked like any input: a damaged entry is dropped with a note and
+// measured again.
+std::optional<QualityPick> cached_pick(const std::string& path, const std::string& key,
+                                       const SceneDescription& scene, const NoteSink& on_note) {
+  const auto cached = read_quality_cache(path, key, on_note);
   if (!cached) return std::nullopt;
   try {
-    QualityPick p = pick_from_json(*cached);
+    QualityPick p = quality_pick_from_json(*cached, scene);
     p.from_cache = true;
     p.cache_file = path;
     p.cache_key = key;
     return p;
-  } catch (const nlohmann::json::exception&) {
-    return std::nullopt;  // a damaged entry is measured again and replaced
+  } catch (const std::runtime_error& e) {
+    if (on_note)
+      on_note("quality: discarded a damaged entry of the cache \"" + path + "\" (" + e.what() +
+              "); measuring again");
+    return std::nullopt;
   }
 }
 
@@ -125,10 +146,10 @@ QualityPick pick_quality(const SceneDescription& scene, int width, int height, d
                          const std::string& renderer, bool use_cache, const QualitySearch& search,
                          const NoteSink& on_note) {
   const std::string key =
-      quality_cache_key(file_bytes(scene.file), width, height, max_rmse, renderer);
+      quality_cache_key(scene.content_digest, width, height, max_rmse, renderer);
   const std::string path = use_cache ? quality_cache_path() : std::string();
   if (use_cache)
-    if (std::optional<QualityPick> p = cached_pick(path, key)) return *p;
+    if (std::optional<QualityPick> p = cached_pick(path, key, scene, on_note)) return *p;
 
   const std::vector<QualitySettings> candidates = quality_candidates(scene);
   if (on_note)

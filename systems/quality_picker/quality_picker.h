@@ -44,9 +44,13 @@ struct QualityPick {
 };
 
 std::vector<QualitySettings> quality_candidates(const SceneDescription& scene);
+
+// A pick read back (from the cache or an output folder's manifest) and checked: its settings are
+// one of quality_candidates(scene), its numbers finite. Throws std::runtime_error saying why not.
+QualityPick quality_pick_from_json(const nlohmann::json& j, const SceneDescription& scene);
 QualitySettings full_resolution_defaults(const SceneDescription& scene);
 
-// The scene's file bytes (read from scene.file) key the cache with `renderer`, the size and the
+// The scene as parsed (SceneDescription::content_digest) keys the cache with `renderer`, the size and the
 // target. `max_rmse` > 0. Measures (and caches) when the cache has no entry; `use_cache` false
 // measures and writes nothing. Notes (a measurement starting, a cache that cannot be written)
 // go to `on_note`.
