@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "engine/core/progress_sink.h"
+#include "tools/pyro/interrupt.h"
 
 namespace pyro::cli {
 
@@ -29,9 +30,14 @@ class Progress {
 
   bool enabled() const { return enabled_; }
 
-  void update(size_t done) { draw(done, false); }
+  // Each step is also where a SIGINT or SIGTERM ends the command (tools/pyro/interrupt.h).
+  void update(size_t done) {
+    throw_if_interrupted();
+    draw(done, false);
+  }
   // `done` steps finished, and the one now running is called `stage` ("read", "import", ...).
   void stage(size_t done, const std::string& stage) {
+    throw_if_interrupted();
     const bool changed = stage != stage_;
     stage_ = stage;
     draw(done, changed);
@@ -75,6 +81,7 @@ class TerminalProgress : public ProgressSink {
  public:
   void begin(const std::string& label, size_t total) override { bar_.emplace(label, total); }
   void update(size_t done, const std::string& stage) override {
+    throw_if_interrupted();
     if (!bar_) return;
     if (stage.empty()) bar_->update(done);
     else bar_->stage(done, stage);
