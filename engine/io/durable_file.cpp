@@ -8,6 +8,7 @@
 
 #include "engine/core/user_error.h"
 #include "engine/io/io_error.h"
+#include "engine/io/rename_fault.h"
 
 namespace pyro {
 
@@ -18,10 +19,32 @@ std::string folder_of(const std::string& path) {
   return parent.empty() ? "." : parent.string();
 }
 
+bool process_gone(const std::string& digits) {
+  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+    return false;
+  std::error_code ec;
+  return !std::filesystem::exists("/proc/" + digits, ec);
+}
+
 }  // namespace
+
+int remove_stale_temporaries(const std::string& path) {
+  namespace fs = std::filesystem;
+  const std::string prefix = fs::path(path).filename().string() + ".partial-";
+  int removed = 0;
+  std::error_code ec;
+  for (fs::directory_iterator it(folder_of(path), ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) != 0 || !process_gone(name.substr(prefix.size()))) continue;
+    std::error_code rm;
+    if (it->is_regular_file(rm) && fs::remove(it->path(), rm)) ++removed;
+  }
+  return removed;
+}
 
 DurableFile::DurableFile(std::string path)
     : path_(std::move(path)), temp_(path_ + ".partial-" + std::to_string(::getpid())) {
+  remove_stale_temporaries(path_);
   fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0 && (errno == ENOENT || errno == ENOTDIR))
     throw UserError(path_, "", "an existing folder to write the file into, found none");
@@ -59,6 +82,7 @@ void DurableFile::commit() {
   const int fd = fd_;
   fd_ = -1;
   if (::close(fd) != 0) fail("close the file", errno);
+  before_output_rename();
   if (::rename(temp_.c_str(), path_.c_str()) != 0) fail("rename the finished file into place", errno);
   committed_ = true;
   sync_folder(folder_of(path_));

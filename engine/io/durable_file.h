@@ -30,6 +30,10 @@ class DurableFile {
   bool committed_ = false;
 };
 
+// Removes the temporary files (`NAME.partial-PID`) of `path` that killed processes left (no
+// /proc/PID); returns how many. DurableFile's constructor calls it for its own destination.
+int remove_stale_temporaries(const std::string& path);
+
 // DurableFile in one call.
 void write_file_durably(const std::string& path, std::string_view bytes);
 

@@ -11,10 +11,11 @@ class IoError : public std::runtime_error {
  public:
   IoError(const std::string& file, const std::string& action, int os_error);
   const std::string& file() const { return file_; }
+  const std::string& action() const { return action_; }
   int os_error() const { return os_error_; }
 
  private:
-  std::string file_;
+  std::string file_, action_;
   int os_error_ = 0;
 };
 

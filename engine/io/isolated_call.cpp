@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <chrono>
 #include <cstring>
 #include <fstream>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "engine/core/user_error.h"
+#include "engine/io/io_error.h"
 
 // Present only when a sanitizer runtime is linked (the asan-ubsan preset, the fuzz build): the
 // child clears the death callback that libFuzzer registers, so a report in the child is the
@@ -168,6 +170,11 @@ std::string tail_of(const std::string& text) {
     put_string(out, e.file());
     put_string(out, e.place());
     put_string(out, e.expected());
+  } catch (const IoError& e) {
+    out.push_back('I');
+    put_string(out, e.file());
+    put_string(out, e.action());
+    put_string(out, std::to_string(e.os_error()));
   } catch (const std::bad_alloc&) {
     out.assign("A");
   } catch (const std::exception& e) {
@@ -221,6 +228,36 @@ IsolationLimits& vdb_isolation_limits() {
   static IsolationLimits limits;
   return limits;
 }
+
+namespace {
+
+// The error a child recorded instead of a result (child_main), thrown in the parent.
+[[noreturn]] void throw_child_error(std::string_view bytes, const std::string& file, const std::string& what,
+                                    const std::string& memory_note) {
+  size_t pos = 1;
+  const char tag = bytes[0];
+  if (tag == 'U') {
+    std::string f, place, expected;
+    if (!get_string(bytes, pos, f) || !get_string(bytes, pos, place) ||
+        !get_string(bytes, pos, expected))
+      throw std::runtime_error("run_isolated: short error");
+    throw UserError(f.empty() ? file : f, place, expected);
+  }
+  if (tag == 'I') {  // the file system refused a write: not the user's mistake (exit status 1)
+    std::string f, action, os_error;
+    if (!get_string(bytes, pos, f) || !get_string(bytes, pos, action) || !get_string(bytes, pos, os_error))
+      throw std::runtime_error("run_isolated: short error");
+    throw IoError(f, action, std::atoi(os_error.c_str()));
+  }
+  if (tag == 'A')
+    throw UserError(file, "", what + ": it asks for more memory than allowed" + memory_note +
+                                  " (damaged file, or a grid too large for this machine)");
+  std::string message;
+  get_string(bytes, pos, message);
+  throw UserError(file, "", what + ": " + message);
+}
+
+}  // namespace
 
 void run_isolated(const std::string& file, const std::string& what,
                   const std::function<void(ResultWriter&)>& work,
@@ -281,26 +318,12 @@ void run_isolated(const std::string& file, const std::string& what,
                                   std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
                                   "): the file is damaged, or asks for more memory than allowed" +
                                   memory_note + tail_of(err));
-  size_t pos = 1;
-  const char tag = bytes[0];
-  if (tag == 'R') {
+  if (bytes[0] == 'R') {
     if (!err.empty()) std::fputs(err.c_str(), stderr);  // the reader's own warnings
     take(bytes.substr(1));
     return;
   }
-  if (tag == 'U') {
-    std::string f, place, expected;
-    if (!get_string(bytes, pos, f) || !get_string(bytes, pos, place) ||
-        !get_string(bytes, pos, expected))
-      throw std::runtime_error("run_isolated: short error");
-    throw UserError(f.empty() ? file : f, place, expected);
-  }
-  if (tag == 'A')
-    throw UserError(file, "", what + ": it asks for more memory than allowed" + memory_note +
-                                  " (damaged file, or a grid too large for this machine)");
-  std::string message;
-  get_string(bytes, pos, message);
-  throw UserError(file, "", what + ": " + message);
+  throw_child_error(bytes, file, what, memory_note);
 }
 
 }  // namespace pyro

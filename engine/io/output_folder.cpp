@@ -137,8 +137,12 @@ void OutputFolder::check_manifest(OutputFolderOptions options) {
       return;
     }
     const nlohmann::json now = nlohmann::json::parse(identity_json_).value("parts", nlohmann::json());
-    why = "holds " + std::to_string(listed.size()) + " file(s) of another run, which differs from "
-          "this one in " + describe_(parts_in(m).dump(), now.dump());
+    const nlohmann::json& identity = m.value("identity", nlohmann::json::object());
+    const std::string of = identity.is_object() && identity.value("scene_file", nlohmann::json()).is_string()
+                               ? " of " + identity.at("scene_file").get<std::string>()
+                               : std::string();
+    why = "holds " + std::to_string(listed.size()) + " file(s) of another run" + of +
+          ", which differs from this one in " + describe_(parts_in(m).dump(), now.dump());
   } else {
     listed = unaccounted_frames(out_);
     if (listed.empty()) return;

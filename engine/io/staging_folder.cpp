@@ -10,6 +10,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/durable_file.h"
 #include "engine/io/io_error.h"
+#include "engine/io/rename_fault.h"
 
 namespace pyro {
 
@@ -129,6 +130,7 @@ void StagingFolder::commit() {
       continue;
     }
     const fs::path to = out_ / it->path().filename();
+    before_output_rename();
     if (::rename(it->path().c_str(), to.c_str()) != 0)
       throw IoError(to.string(), "move the finished file into the output folder", errno);
   }

@@ -7,15 +7,19 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <cerrno>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <vector>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "engine/core/user_error.h"
+#include "engine/io/io_error.h"
 #include "engine/io/isolated_call.h"
+#include "engine/io/vdb_file_check.h"
 
 namespace pyro {
 
@@ -125,6 +129,16 @@ void say(int fd, const std::string& line) {
   }
 }
 
+// fsync of a written file: a full disk or an I/O error that the writer did not see shows here.
+void flush_to_disk(const std::string& file) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw IoError(file, "open the written file", errno);
+  const int rc = ::fsync(fd);
+  const int error = errno;
+  ::close(fd);
+  if (rc != 0) throw IoError(file, "flush the file to disk (fsync)", error);
+}
+
 // Builds the fine grid one layer of leaves at a time (the layer's leaves made on TBB's threads,
 // then added to the tree in order), then writes it.
 void write_in_this_process(const std::string& path, const std::string& grid_name, const DenseGrid& source,
@@ -156,7 +170,16 @@ void write_in_this_process(const std::string& path, const std::string& grid_name
     file.write({grid});
     file.close();
   }
+  // OpenVDB's writer does not report a failed write (a full disk leaves a truncated file): the
+  // file is flushed and its structure checked before it takes the destination's name.
   std::error_code ec;
+  try {
+    flush_to_disk(tmp);
+    check_vdb_file_structure(tmp);
+  } catch (...) {
+    std::filesystem::remove(tmp, ec);
+    throw;
+  }
   std::filesystem::rename(tmp, path, ec);
   if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
   out.append(&active, sizeof active);

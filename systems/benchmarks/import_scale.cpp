@@ -9,7 +9,10 @@
 #include <unistd.h>
 
 #include "engine/core/content_path.h"
+#include "engine/core/file_kind.h"
+#include "engine/core/same_file.h"
 #include "engine/core/user_error.h"
+#include "engine/io/vdb_file_check.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/io/vdb_resampled_volume.h"
 #include "engine/volume/procedural_cloud.h"
@@ -78,10 +81,38 @@ nlohmann::json make_file(const ImportScaleOptions& o, const std::string& file) {
           {"writer_peak_rss_bytes", r.child_peak_rss_bytes}};
 }
 
+// --keep FILE is refused before any work when it would replace the source or cannot be written.
+void check_kept_file(const ImportScaleOptions& o) {
+  if (o.keep.empty()) return;
+  std::error_code ec;
+  if (fs::is_directory(o.keep, ec)) throw UserError(o.keep, "--keep", "a file name, found a folder");
+  const fs::path parent = fs::path(o.keep).parent_path();
+  if (!parent.empty() && !fs::is_directory(parent, ec))
+    throw UserError(o.keep, "--keep", "an existing folder for the file, found none at \"" + parent.string() + "\"");
+  if (!o.source.empty()) refuse_output_over_inputs(o.keep, "--keep", {{o.source, "the --source file"}});
+}
+
+// A kept file is an input like any other: one cut short (a full disk, a killed writer) or damaged
+// is removed with a note and written again, never read as if whole.
+void discard_damaged_kept_file(const ImportScaleOptions& o, const std::string& file) {
+  std::error_code ec;
+  if (!fs::exists(file, ec)) return;
+  try {
+    if (const std::string kind = non_regular_file_kind(file); !kind.empty())
+      throw UserError(file, "--keep", "a regular file, found " + kind);
+    check_vdb_file_structure(file);
+  } catch (const UserError& e) {
+    if (!non_regular_file_kind(file).empty()) throw;  // never remove what is not a file
+    note(o, std::string("discarding the kept file (") + e.what() + "); writing it again");
+    fs::remove(file, ec);
+  }
+}
+
 }  // namespace
 
 nlohmann::json bench_import_scale(const ImportScaleOptions& o) {
-  if (o.voxels == 0) throw UserError("command line", "--voxels", "a positive number of active voxels");
+  if (o.voxels == 0) throw UserError("", "--voxels", "a positive number of active voxels");
+  check_kept_file(o);
   ProgressTask task(o.progress, "bench import-scale", 3);
   const bool temporary = o.keep.empty();
   const fs::path folder = temporary ? fs::temp_directory_path() / ("pyro_import_scale_" + std::to_string(::getpid())) : fs::path();
@@ -97,6 +128,7 @@ nlohmann::json bench_import_scale(const ImportScaleOptions& o) {
   } cleanup{folder};
   std::error_code ec;
   if (temporary) fs::create_directories(folder, ec);
+  if (!temporary) discard_damaged_kept_file(o, file);
   if (temporary || !fs::exists(file, ec)) {
     task.stage(0, "write the file");
     out.update(make_file(o, file));

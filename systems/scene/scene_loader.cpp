@@ -724,10 +724,10 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
   } else if (has_fallback) {
     const std::string fallback_path = resolve_against(scene_file, v.fallback);
     if (!is_regular_file(fallback_path)) {
-      r.at("file").fail("expected an existing volume file, found " +
-                        non_regular_file_kind(file_path) + " at " + in_quotes(file_path) +
-                        " and " + non_regular_file_kind(fallback_path) + " at its fallback " +
-                        in_quotes(fallback_path) + " (paths are relative to the scene file's folder)");
+      r.at("file").fail("expected an existing volume file, found neither one at " + in_quotes(file_path) +
+                        " (" + non_regular_file_kind(file_path) + " there) nor at its fallback " +
+                        in_quotes(fallback_path) + " (" + non_regular_file_kind(fallback_path) +
+                        " there; paths are relative to the scene file's folder)");
     }
     v.path = fallback_path;
     v.kind = fallback_kind;
@@ -1113,8 +1113,9 @@ std::string read_fifo(const std::string& path) {
 std::string read_scene_text(const std::string& path) {
   if (path == "-") return read_all(STDIN_FILENO, "<standard input>");
   if (is_fifo(path)) return read_fifo(path);
-  if (const std::string kind = non_regular_file_kind(path); !kind.empty())
-    throw UserError(path, "", "expected a scene file, found " + kind);
+  const std::string kind = non_regular_file_kind(path);
+  if (kind == "no file") throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(ENOENT));
+  if (!kind.empty()) throw UserError(path, "", "expected a scene file, found " + kind);
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
   try {

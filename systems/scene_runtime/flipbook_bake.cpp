@@ -12,7 +12,7 @@
 #include "engine/core/user_error.h"
 #include "systems/scene/scene_loader.h"
 #include "engine/io/png_file.h"
-#include "engine/io/staging_folder.h"
+#include "engine/io/folder_replacement.h"
 #include "engine/math/color.h"
 #include "engine/io/text_file.h"
 #include "systems/scene_runtime/scene_runtime.h"
@@ -30,7 +30,7 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
   if (fs::exists(out, ec) && !fs::is_directory(out, ec))
     throw UserError(out, "--out", "expected a folder for the flipbook frames, found a file");
   if (options.loop_blend < 0 || options.loop_blend >= options.frames)
-    throw UserError("command line", "--loop-blend",
+    throw UserError("", "--loop-blend",
                     "expected a cross-fade shorter than the flipbook (0 to " +
                         std::to_string(options.frames - 1) + " frames), found " +
                         std::to_string(options.loop_blend));
@@ -40,7 +40,7 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
   runtime_options.width_override = options.width;
   runtime_options.height_override = options.height;
   SceneRuntime runtime(scene, runtime_options);
-  StagingFolder staging(out);
+  FolderReplacement staging(out);
   std::vector<std::vector<uint8_t>> simulated;  // RGBA8 sRGB, frames + loop_blend of them
   int width = 0, height = 0;
   for (int f = 0; f < options.frames + options.loop_blend; ++f) {
@@ -51,6 +51,8 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
     simulated.push_back(std::move(image.rgba));
   }
   FlipbookBakeResult result;
+  result.removed_leftovers = staging.removed_leftovers();
+  result.restored_old_folder = staging.restored_old_folder();
   const size_t pixels = static_cast<size_t>(width) * height;
   for (int f = 0; f < options.frames; ++f) {
     std::vector<uint8_t> rgb(pixels * 3);

@@ -4,8 +4,9 @@
 // fire column on black, seen from the side) is rendered mono into `frames` PNG frames
 // (frame_0000.png, ...; cross-faded over the wrap so that the loop does not jump; borders
 // faded to black, Rose's chapter 4 preparation) plus
-// `flipbook.json` (frame count, size, source scene), all written into
-// a staging folder and moved into place only when complete (engine/io/staging_folder.h).
+// `flipbook.json` (frame count, size, source scene), all written into a new folder beside `out`
+// that replaces it as a whole only when complete (engine/io/folder_replacement.h): a kill leaves
+// the old bake or the new one, and a bake of fewer frames leaves exactly its own.
 #include <string>
 #include <vector>
 
@@ -32,6 +33,8 @@ struct FlipbookBakeOptions {
 struct FlipbookBakeResult {
   std::vector<std::string> files;  // in `out`, frames then the manifest
   double seconds = 0.0;
+  int removed_leftovers = 0;         // what killed bakes had left beside `out` (removed)
+  bool restored_old_folder = false;  // a killed bake's old folder put back before this one
 };
 
 // Throws UserError naming the scene when it has `fires` (a bake renders simulated fire, not

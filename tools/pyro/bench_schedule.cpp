@@ -19,6 +19,7 @@
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -117,7 +118,7 @@ void add_bench_schedule_command(CLI::App& bench) {
   cmd->callback([args] {
     const nlohmann::json r = bench_schedule(*args);
     if (args->json) {
-      std::printf("%s\n", r.dump().c_str());
+      write_stdout(r.dump() + "\n");
       return;
     }
     std::printf(

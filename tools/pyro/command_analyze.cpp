@@ -10,6 +10,7 @@
 #include "engine/core/user_error.h"
 #include "engine/math/footprint.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -44,7 +45,7 @@ void run_footprint(const FootprintArgs& a) {
       {"max_entry_raw", table.max_raw},
       {"closed_form_peak", footprint_closed_form(0.0, 0.0, table.extent)}};
   if (a.json) {
-    std::printf("%s\n", out.dump().c_str());
+    write_stdout(out.dump() + "\n");
     return;
   }
   std::printf("footprint table %dx%d, %d %s intervals over [-%g, %g]\n", a.size, a.size,

@@ -22,6 +22,7 @@
 #include "tools/pyro/progress.h"
 #include "tools/pyro/external_tool_error.h"
 #include "tools/pyro/plot_script.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -89,7 +90,7 @@ void run_point(const ProjectionErrorArgs& a) {
                               {"horizontal_parallax_error_paper", parallax_paper.horizontal},
                               {"vertical_parallax_error_paper", parallax_paper.vertical}};
   if (a.json) {
-    std::printf("%s\n", out.dump().c_str());
+    write_stdout(out.dump() + "\n");
     return;
   }
   std::printf("billboard centre C = (%g, %g, %g), radius r = %g, viewplane N = %g\n", a.cx, a.cy,
@@ -175,7 +176,7 @@ void run_surfaces(const ProjectionErrorArgs& a) {
   report["manifest"] = manifest_path.string();
   report["png"] = !a.csv_only;
   if (a.json) {
-    std::printf("%s\n", report.dump().c_str());
+    write_stdout(report.dump() + "\n");
     return;
   }
   for (const auto& e : report["figures"]) {

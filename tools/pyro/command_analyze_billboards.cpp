@@ -14,6 +14,7 @@
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
+#include "tools/pyro/stdout_text.h"
 #include "systems/benchmarks/frame_timing.h"
 
 namespace pyro::cli {
@@ -72,7 +73,7 @@ void run(const Args& a) {
       {"viewplane_ms_per_stereo_frame", plane.ms_per_frame},
       {"viewpoint_ms_per_stereo_frame", point.ms_per_frame}};
   if (a.json) {
-    std::printf("%s\n", out.dump().c_str());
+    write_stdout(out.dump() + "\n");
     return;
   }
   std::printf("%s: viewplane vs viewpoint billboards, %dx%d per eye\n", scene.file.c_str(),

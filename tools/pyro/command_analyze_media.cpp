@@ -12,6 +12,7 @@
 #include "engine/math/blackbody.h"
 #include "engine/math/phase_function.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -32,7 +33,7 @@ void run_blackbody(const BlackbodyArgs& a) {
                               {"in_srgb_gamut", c.in_gamut},
                               {"luminance_cd_m2", c.luminance}};
   if (a.json) {
-    std::printf("%s\n", out.dump().c_str());
+    write_stdout(out.dump() + "\n");
     return;
   }
   std::printf("black body at %g K (Planck, CIE 1931 2 deg observer)\n", a.temperature);
@@ -69,7 +70,7 @@ void run_phase(const PhaseArgs& a) {
                               {"cos_intervals", a.cos_intervals},
                               {"azimuth_steps", a.azimuth_steps}};
   if (a.json) {
-    std::printf("%s\n", out.dump().c_str());
+    write_stdout(out.dump() + "\n");
     return;
   }
   std::printf("%s, g = %g, quadrature over the sphere (%d x %d)\n", phase_function_name(f), a.g,

@@ -19,6 +19,7 @@
 #include "engine/math/stereo_parallax_analysis.h"
 #include "engine/math/stereo_projection.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -102,7 +103,7 @@ void run_stereo(const StereoArgs& a) {
       {"left", eye_json(left)},
       {"right", eye_json(right)}};
   if (a.json) {
-    std::printf("%s\n", out.dump().c_str());
+    write_stdout(out.dump() + "\n");
     return;
   }
   std::printf("stereo pair: %dx%d, fov %g deg, near %g, far %g, I = %g, Z0 = %g\n", a.width,

@@ -20,6 +20,7 @@
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/render_options.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -27,7 +28,7 @@ namespace {
 
 void print(const nlohmann::json& result, bool json) {
   if (json) {
-    std::printf("%s\n", result.dump().c_str());
+    write_stdout(result.dump() + "\n");
   } else {
     for (const auto& [key, value] : result.items()) std::printf("  %-30s %s\n", key.c_str(), value.dump().c_str());
   }
@@ -99,7 +100,7 @@ void add_bench_scale(CLI::App* bench) {
     scale->options.progress = terminal_progress();
     const nlohmann::json r = bench_scale(scale->options);
     if (scale->json)
-      std::printf("%s\n", r.dump().c_str());
+      write_stdout(r.dump() + "\n");
     else
       print_scale(r);
   });

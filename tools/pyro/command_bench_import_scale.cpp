@@ -12,6 +12,7 @@
 #include "systems/benchmarks/import_scale.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -60,7 +61,7 @@ void add_bench_import_scale_command(CLI::App& bench) {
     args->options.progress_fd = STDERR_FILENO;
     const nlohmann::json j = bench_import_scale(args->options);
     if (args->json)
-      std::printf("%s\n", j.dump().c_str());
+      write_stdout(j.dump() + "\n");
     else
       print_import_scale(j);
   });

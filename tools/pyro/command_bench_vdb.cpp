@@ -9,6 +9,7 @@
 #include "systems/benchmarks/bench_vdb.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -23,7 +24,7 @@ void run_bench_vdb(VdbBenchOptions options, bool json) {
   options.on_note = print_bench_vdb_note;
   const nlohmann::json j = bench_vdb(options);
   if (json) {
-    std::printf("%s\n", j.dump().c_str());
+    write_stdout(j.dump() + "\n");
     return;
   }
   const double splat = j["splat_ms"].get<double>(), vdb = j["vdb_render_ms"].get<double>();

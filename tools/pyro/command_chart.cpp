@@ -16,6 +16,7 @@
 #include "tools/pyro/commands.h"
 #include "tools/pyro/plot_script.h"
 #include "tools/pyro/progress.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -96,7 +97,7 @@ void run_scale_chart(const ChartArgs& a) {
   nlohmann::json report = {{"chart", "scale"}, {"csv", csv.string()}, {"summary", chart.bench}};
   if (!a.csv_only) report["png"] = png.string();
   if (a.json) {
-    std::printf("%s\n", report.dump().c_str());
+    write_stdout(report.dump() + "\n");
     return;
   }
   std::printf("scale: cpu slope %s, frame slope %s\n  %s\n", chart.bench["cpu_slope"].dump().c_str(),
@@ -126,7 +127,7 @@ void run_chart(const ChartArgs& a) {
                            {"summary", table.summary}};
   if (!a.csv_only) report["png"] = png.string();
   if (a.json) {
-    std::printf("%s\n", report.dump().c_str());
+    write_stdout(report.dump() + "\n");
     return;
   }
   std::printf("%s: %zu points\n  %s\n", table.title.c_str(), table.rows.size(), csv.string().c_str());

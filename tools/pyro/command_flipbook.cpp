@@ -4,17 +4,22 @@
 // fire simulation, and measuring how much a frame pattern marches or circles
 // (systems/flipbook_fire/flipbook_pattern.h).
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/same_file.h"
+#include "engine/core/user_error.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/flipbook_bake.h"
 #include "systems/flipbook_fire/flipbook_layout.h"
 #include "systems/flipbook_fire/flipbook_pattern.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/print_note.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -27,16 +32,34 @@ struct BakeArgs {
   bool json = false;
 };
 
+// The bake replaces --out as a whole: it may not hold (or be) the scene it reads.
+void check_bake_destination(const BakeArgs& a) {
+  std::filesystem::path folder = std::filesystem::path(a.scene).parent_path();
+  if (folder.empty()) folder = ".";
+  for (std::filesystem::path at = std::filesystem::absolute(folder).lexically_normal(); !at.empty();
+       at = at.parent_path()) {
+    if (same_file(at.string(), a.out))
+      throw UserError(a.out, "--out", "a folder that does not hold the scene file \"" + a.scene +
+                                          "\": the bake replaces the folder as a whole");
+    if (at == at.parent_path()) break;
+  }
+}
+
 void run_bake(const BakeArgs& a) {
   const SceneDescription scene = load_scene(a.scene);
+  if (a.scene != "-") check_bake_destination(a);
   const FlipbookBakeResult r = bake_flipbook(scene, a.options, a.out);
+  if (r.restored_old_folder)
+    print_note("put back " + a.out + ", which a killed bake had moved aside");
+  if (r.removed_leftovers > 0)
+    print_note("removed " + std::to_string(r.removed_leftovers) + " leftover(s) of killed bakes of " + a.out);
   const nlohmann::json summary = {{"scene", scene.file}, {"out", a.out},
                                   {"frames", a.options.frames}, {"width", a.options.width},
                                   {"height", a.options.height}, {"loop_blend", a.options.loop_blend},
                                   {"files", r.files},
                                   {"seconds", r.seconds}};
   if (a.json)
-    std::printf("%s\n", summary.dump().c_str());
+    write_stdout(summary.dump() + "\n");
   else
     std::printf("baked %d flame frame(s) %dx%d from %s into %s in %.2f s\n", a.options.frames,
                 a.options.width, a.options.height, scene.file.c_str(), a.out.c_str(), r.seconds);
@@ -94,7 +117,7 @@ void run_pattern(const PatternArgs& a) {
   }
   const nlohmann::json out = {{"frames", a.frames}, {"patterns", patterns}};
   if (a.json) {
-    std::printf("%s\n", out.dump().c_str());
+    write_stdout(out.dump() + "\n");
     return;
   }
   std::printf("apparent motion of flipbook frame patterns over a loop of %d frames\n", a.frames);

@@ -5,6 +5,9 @@
 // drawn by the real GL renderer, offscreen, against the CPU reference render of the grid from
 // seven views around it), and only then writes the particle file (engine/io/particle_file.h: checked as the loader checks it, then
 // written durably).
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -12,12 +15,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/file_kind.h"
+#include "engine/core/same_file.h"
 #include "engine/core/user_error.h"
+#include "engine/io/durable_file.h"
+#include "engine/io/io_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/volume/sparse_grid.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
+#include "tools/pyro/stdout_text.h"
 #include "systems/benchmarks/fitted_import.h"
 
 namespace pyro::cli {
@@ -50,7 +58,7 @@ void list_grids(const ImportArgs& a) {
                   static_cast<unsigned long long>(g.active_voxels), g.voxel_size[0], g.voxel_size[1],
                   g.voxel_size[2], g.is_float() && g.affine ? "" : "  [cannot be imported]");
   }
-  if (a.json) std::printf("%s\n", nlohmann::json{{"file", a.file}, {"grids", out}}.dump().c_str());
+  if (a.json) write_stdout(nlohmann::json{{"file", a.file}, {"grids", out}}.dump() + "\n");
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -71,7 +79,7 @@ void finish_import(const ImportArgs& a, const GridHeader& grid, ParticleFile pf,
   summary.update({{"grid", grid.name}, {"read_seconds", read_seconds}, {"seconds", seconds},
                   {"voxels_per_second", grid.active_voxels / std::max(1e-9, seconds)}, {"out", a.out}});
   if (a.json) {
-    std::printf("%s\n", summary.dump().c_str());
+    write_stdout(summary.dump() + "\n");
   } else if (summary["measured"].get<bool>()) {
     std::printf("%s: %llu active voxels -> %llu particles, image RMSE over %d views mean %.4f, max %.4f "
                 "(target %g %s), %.3f s; wrote %s\n",
@@ -90,14 +98,34 @@ void say(const ImportArgs& a, const std::string& what) {
   std::fprintf(stderr, "pyro import-vdb: %s: %s\n", a.file.c_str(), what.c_str());
 }
 
+// Everything about the output that can be wrong is found before the import (seconds to minutes).
+void check_destination(const ImportArgs& a) {
+  if (a.out.empty()) throw UserError("", "--out", "the particle file to write (.pyrop)");
+  char found[64];
+  std::snprintf(found, sizeof found, "%g", a.error);
+  if (!(a.error > 0.0 && a.error <= 1.0))
+    throw UserError("", "--error", std::string("a number in (0, 1], found ") + found);
+  std::error_code ec;
+  if (std::filesystem::is_directory(a.out, ec))
+    throw UserError(a.out, "--out", "a file name for the particles, found a folder");
+  const std::filesystem::path parent = std::filesystem::path(a.out).parent_path();
+  const std::string folder = parent.empty() ? "." : parent.string();
+  if (!std::filesystem::is_directory(folder, ec))
+    throw UserError(a.out, "--out", "an existing folder to write the file into, found none at \"" + folder + "\"");
+  refuse_output_over_inputs(a.out, "--out", {{a.file, "the VDB file being imported"}});
+  if (::access(folder.c_str(), W_OK) != 0) throw IoError(folder, "write into the folder", errno);
+  if (const int removed = remove_stale_temporaries(a.out); removed > 0)
+    say(a, "removed " + std::to_string(removed) + " temporary file(s) of " + a.out + " that killed runs had left");
+}
+
 void run_import(const ImportArgs& a) {
+  if (const std::string kind = non_regular_file_kind(a.file); !kind.empty())
+    throw UserError(a.file, "", "expected an OpenVDB file, found " + kind);
   if (a.list) {
     list_grids(a);
     return;
   }
-  if (a.out.empty()) throw UserError("command line", "--out", "the particle file to write (.pyrop)");
-  if (!(a.error > 0.0 && a.error <= 1.0))
-    throw UserError("", "--error", "a number in (0, 1], found " + std::to_string(a.error));
+  check_destination(a);
   // Stages: read, reference views, import and measure (refined until the target is met).
   Progress progress("import-vdb " + std::filesystem::path(a.file).filename().string(), 3);
   progress.stage(0, "read");

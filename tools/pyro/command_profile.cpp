@@ -21,7 +21,9 @@
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/render_options.h"
+#include "tools/pyro/scene_inputs.h"
 #include "tools/pyro/trace_path.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -72,6 +74,7 @@ void print_report(const nlohmann::json& r) {
 void run_profile(const ProfileArgs& a) {
   if (!a.trace.empty()) check_trace_path(a.trace, "--trace");
   const SceneDescription scene = load_scene(a.scene);
+  if (!a.trace.empty()) refuse_output_over_inputs(a.trace, "--trace", scene_inputs(a.scene, scene));
   RuntimeOptions options = a.runtime;
   options.readback = false;
   options.width_override = a.width;
@@ -94,7 +97,7 @@ void run_profile(const ProfileArgs& a) {
     summary["trace"] = a.trace;
   }
   print_report(summary);
-  if (a.json) std::printf("%s\n", summary.dump().c_str());
+  if (a.json) write_stdout(summary.dump() + "\n");
 }
 
 }  // namespace

@@ -19,6 +19,7 @@
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/print_note.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -80,7 +81,7 @@ void run_quality(const QualityArgs& a) {
                 rmse <= target ? "meets" : "MISSES", target, defaults_rmse, ms, defaults_ms,
                 ms > 0.0 ? defaults_ms / ms : 0.0);
   }
-  if (a.json) std::printf("%s\n", summary.dump().c_str());
+  if (a.json) write_stdout(summary.dump() + "\n");
 }
 
 }  // namespace

@@ -38,6 +38,7 @@
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/render_options.h"
+#include "tools/pyro/scene_inputs.h"
 #include "tools/pyro/stdout_text.h"
 #include "tools/pyro/trace_path.h"
 
@@ -114,15 +115,6 @@ nlohmann::json pixel_settings(const SceneDescription& scene, const RuntimeOption
 
 std::string describe_difference(const std::string& before, const std::string& now) {
   return identity_difference(nlohmann::json::parse(before), nlohmann::json::parse(now));
-}
-
-// The files a render reads, which no output of it may replace.
-std::vector<NamedPath> render_inputs(const std::string& scene_arg, const SceneDescription& scene) {
-  std::vector<NamedPath> inputs;
-  if (scene_arg != "-") inputs.push_back({scene_arg, "the scene file"});
-  for (const VolumeDescription& v : scene.volumes)
-    inputs.push_back({v.path, "the volume file of " + scene_arg + " at " + v.pointer});
-  return inputs;
 }
 
 // What a resumed run need not draw again: the files the folder holds for this run and those
@@ -247,7 +239,7 @@ void run_render(const RenderArgs& a) {
   check_render_arguments(a);
   const SceneDescription scene = load_scene(a.scene);
   if (!a.trace.empty()) {
-    refuse_output_over_inputs(a.trace, "--trace", render_inputs(a.scene, scene));
+    refuse_output_over_inputs(a.trace, "--trace", scene_inputs(a.scene, scene));
     refuse_output_inside(a.trace, "--trace", a.out, "--out's frames and manifest");
   }
 

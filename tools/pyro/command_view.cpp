@@ -19,6 +19,7 @@
 #include "systems/viewer/viewer_keys.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/render_options.h"
+#include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
 
@@ -103,7 +104,7 @@ void run_view(const ViewArgs& a) {
   options.on_note = print_view_note;
   const nlohmann::json summary = run_viewer(options, load_scene(a.scene));
   if (a.json) {
-    std::printf("%s\n", summary.dump().c_str());
+    write_stdout(summary.dump() + "\n");
   } else {
     std::printf("viewed %s: %llu frame(s) at %.1f fps (%dx%d)%s%s\n", a.scene.c_str(),
                 summary["frames"].get<unsigned long long>(), summary["fps"].get<double>(),

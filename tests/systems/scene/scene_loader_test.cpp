@@ -246,7 +246,7 @@ TEST(SceneLoader, DirectoryInsteadOfFile) {
     EXPECT_EQ(e.place(), "");
     const std::string what = e.what();
     EXPECT_NE(what.find(path), std::string::npos) << what;
-    EXPECT_NE(what.find("found a directory"), std::string::npos) << what;
+    EXPECT_NE(what.find("found a folder"), std::string::npos) << what;
   }
 }
 

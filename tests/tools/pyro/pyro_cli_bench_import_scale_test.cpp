@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/support/file_bytes.h"
 #include "tests/support/json_output.h"
 #include "tests/support/test_paths.h"
 
@@ -52,13 +53,37 @@ TEST(PyroCliBenchImportScale, ReportsVoxelsPerSecondAndPeakMemory) {
   EXPECT_NE(text.out.find("peak resident memory"), std::string::npos) << text.out;
 }
 
-TEST(PyroCliBenchImportScale, ADamagedKeptFileIsRefused) {
+// A kept file is validated like any input: one that is damaged or cut short (a full disk, a
+// killed writer) is discarded with a note and written again, never read as if whole.
+TEST(PyroCliBenchImportScale, ADamagedOrTruncatedKeptFileIsDiscardedAndWrittenAgain) {
   const fs::path dir = test::scratch_dir("bench_import_scale_damaged");
   const std::string keep = (dir / "bad.vdb").string();
   { std::FILE* f = std::fopen(keep.c_str(), "wb"); std::fputs("not a vdb file", f); std::fclose(f); }
-  const auto r = test::run_pyro({"bench", "import-scale", "--keep", keep});
+  const auto r = test::run_pyro({"bench", "import-scale", "--voxels", "20000", "--keep", keep, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("discarding the kept file"), std::string::npos) << r.err;
+  EXPECT_TRUE(nlohmann::json::parse(r.out).at("generated").get<bool>());
+  // Cut the now valid file short: the next run discards it too.
+  const auto size = fs::file_size(keep);
+  fs::resize_file(keep, size / 2);
+  const auto again = test::run_pyro({"bench", "import-scale", "--voxels", "20000", "--keep", keep, "--json"});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("discarding the kept file"), std::string::npos) << again.err;
+  EXPECT_TRUE(nlohmann::json::parse(again.out).at("generated").get<bool>());
+  EXPECT_EQ(fs::file_size(keep), size);
+}
+
+TEST(PyroCliBenchImportScale, KeepOverTheSourceIsRefusedBeforeAnyWork) {
+  const fs::path dir = test::scratch_dir("bench_import_scale_keep_source");
+  const fs::path source = dir / "source.vdb";
+  fs::copy_file(content_path("volumes/sample_cloud.vdb"), source);
+  const std::string before = test::read_bytes(source);
+  const auto r = test::run_pyro({"bench", "import-scale", "--voxels", "20000", "--source", source.string(),
+                                 "--keep", source.string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find(keep), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--keep"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("writing"), std::string::npos) << "refused before the work: " << r.err;
+  EXPECT_EQ(test::read_bytes(source), before);
 }
 
 }  // namespace

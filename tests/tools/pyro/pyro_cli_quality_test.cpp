@@ -19,6 +19,7 @@
 #include "systems/reference/particle_reference.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "systems/reference/world_snapshot.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/json_output.h"
 #include "tests/support/test_paths.h"
 
@@ -133,6 +134,63 @@ TEST(PyroCliQuality, PickIsCachedAndMeasuredAgainWhenTheSceneChanges) {
   EXPECT_FALSE(c["from_cache"].get<bool>());
   EXPECT_EQ(c["measured_candidates"], 12);
   EXPECT_NE(c["cache_key"], a["cache_key"]);
+}
+
+// The cache is an input like any other: an entry whose pick is none of the scene's candidates
+// (a footprint of 0 or 1e9 would reach the renderer) or a cache that is not a file is discarded
+// with a note, and the pick measured again.
+TEST(PyroCliQuality, ADamagedCacheIsDiscardedWithANote) {
+  const fs::path dir = test::scratch_dir("quality_damaged_cache");
+  const CacheDir cache(dir / "cache");
+  const fs::path scene_file = dir / "tiny.json";
+  write(scene_file, tiny_scene());
+  const std::vector<std::string> args = {"render", scene_file.string(), "--out", (dir / "out").string(), "--json"};
+  ASSERT_EQ(test::run_pyro(args).exit_code, 0);
+  const fs::path cache_file = dir / "cache" / "quality.json";
+  for (const double footprint : {1e9, 0.0}) {
+    json all = json::parse(test::read_bytes(cache_file));
+    ASSERT_EQ(all.size(), 1u);
+    for (auto& [key, entry] : all.items()) entry["settings"]["footprint_size"] = footprint;
+    write(cache_file, all.dump());
+    fs::remove_all(dir / "out");
+    const auto r = test::run_pyro(args);
+    ASSERT_EQ(r.exit_code, 0) << footprint << ": " << r.err;
+    EXPECT_NE(r.err.find("discarded a damaged entry"), std::string::npos) << r.err;
+    EXPECT_FALSE(test::last_json_line(r.out)["quality"]["from_cache"].get<bool>());
+  }
+  // A folder where the cache file should be: ignored, and the render still succeeds.
+  fs::remove(cache_file);
+  fs::create_directories(cache_file);
+  fs::remove_all(dir / "out");
+  const auto r = test::run_pyro(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("ignored the cache"), std::string::npos) << r.err;
+}
+
+// A pick is part of the run: every range of one output folder draws with the pick recorded in
+// its manifest, whatever the cache says (or when there is none to write).
+TEST(PyroCliQuality, EveryRangeOfARunUsesThePickRecordedWithIt) {
+  const fs::path dir = test::scratch_dir("quality_recorded_pick");
+  const CacheDir cache(dir / "not_writable" / "quality.json" / "cache");  // under a file: no cache
+  fs::create_directories(dir / "not_writable");
+  write(dir / "not_writable" / "quality.json", "a file, so no cache folder can be made under it");
+  const fs::path scene_file = dir / "tiny.json", out = dir / "out";
+  write(scene_file, tiny_scene());
+  auto range = [&](const std::string& frames) {
+    return test::run_pyro({"render", scene_file.string(), "--out", out.string(), "--frames", frames, "--json"});
+  };
+  const auto first = range("0:0");
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  // Another valid candidate recorded in the manifest: the next range must take it, not measure.
+  json manifest = json::parse(test::read_bytes(out / ".pyro_manifest.json"));
+  json& settings = manifest["choices"]["quality"]["settings"];
+  const int other_footprint = settings["footprint_size"].get<int>() == 16 ? 32 : 16;
+  settings["footprint_size"] = other_footprint;
+  write(out / ".pyro_manifest.json", manifest.dump());
+  const auto second = range("1:1");
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_EQ(second.err.find("measuring"), std::string::npos) << second.err;
+  EXPECT_EQ(test::last_json_line(second.out)["quality"]["settings"]["footprint_size"], other_footprint);
 }
 
 TEST(PyroCliQuality, BadTargetsExitTwoNamingThePointer) {

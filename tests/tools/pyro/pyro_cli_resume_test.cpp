@@ -138,11 +138,21 @@ TEST(PyroCliResume, ResumeKeepsOnlyThisRendersFrames) {
               EXPECT_EQ(test::render("fog.json", dir / "whole", "5", 32).exit_code, 0);
               return dir / "whole";
             }()));
-  // Other settings: refused as without --resume, nothing changed.
+  // Other settings: another run, whose frames are stale. Refused without --resume, nothing
+  // changed; with it every frame is drawn again and the count said.
   const auto before = test::contents(out);
-  const auto other = test::render("fog.json", out, "5", 40, {"--resume"});
-  EXPECT_EQ(other.exit_code, 2) << other.err;
+  const auto refused = test::render("fog.json", out, "5", 40);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
   EXPECT_EQ(test::contents(out), before);
+  const auto other = test::render("fog.json", out, "5", 40, {"--resume"});
+  ASSERT_EQ(other.exit_code, 0) << other.err;
+  EXPECT_EQ(frames_kept(other.err), 0) << other.err;
+  EXPECT_NE(other.err.find("replacing 5 file(s)"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("width 32 -> 40"), std::string::npos) << other.err;
+  EXPECT_EQ(test::contents(out), test::contents([&] {
+              EXPECT_EQ(test::render("fog.json", dir / "whole40", "5", 40).exit_code, 0);
+              return dir / "whole40";
+            }()));
   // A killed run of other settings: its finished frames are not taken.
   const fs::path fresh = dir / "fresh";
   const pid_t other_run = test::spawn_pyro(test::render_args("fog.json", fresh, "200", 40));

@@ -1,0 +1,140 @@
+// No command overwrites its own inputs, and inputs that are not regular files are refused at
+// once with what they are: every output path is compared with every input by file identity
+// before any work (engine/core/same_file.h), and a FIFO, folder or link loop where a file is
+// expected is named as such (engine/core/file_kind.h).
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/support/cli_render.h"
+#include "tests/support/test_paths.h"
+
+namespace pyro {
+namespace {
+
+namespace fs = std::filesystem;
+using test::read_bytes;
+
+void write_text(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+TEST(PyroCliInputs, ImportOverItsOwnVdbIsRefusedBeforeAnyWork) {
+  const fs::path dir = test::scratch_dir("inputs_import");
+  const fs::path vdb = dir / "box.vdb";
+  fs::copy_file(content_path("volumes/sample_cloud.vdb"), vdb);
+  const std::string before = read_bytes(vdb);
+  auto r = test::run_pyro({"import-vdb", vdb.string(), "--out", vdb.string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the VDB file being imported"), std::string::npos) << r.err;
+  // Through a symbolic link: the same file.
+  fs::create_symlink(vdb, dir / "link.pyrop");
+  r = test::run_pyro({"import-vdb", vdb.string(), "--out", (dir / "link.pyrop").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(read_bytes(vdb), before);
+}
+
+// A damaged VDB: had the import started, its error would name the file's damage, not --out.
+TEST(PyroCliInputs, ImportDestinationsAreCheckedBeforeTheImport) {
+  const fs::path dir = test::scratch_dir("inputs_import_destination");
+  const fs::path vdb = dir / "damaged.vdb";
+  write_text(vdb, "not a vdb at all");
+  auto r = test::run_pyro({"import-vdb", vdb.string(), "--out", (dir / "missing" / "x.pyrop").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("at --out: an existing folder"), std::string::npos) << r.err;
+  fs::create_directory(dir / "folder.pyrop");
+  r = test::run_pyro({"import-vdb", vdb.string(), "--out", (dir / "folder.pyrop").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("found a folder"), std::string::npos) << r.err;
+}
+
+TEST(PyroCliInputs, ImportRemovesWhatKilledRunsLeft) {
+  const fs::path dir = test::scratch_dir("inputs_import_leftovers");
+  const fs::path out = dir / "cloud.pyrop";
+  write_text(dir / "cloud.pyrop.partial-999999999", "cut short by a kill");  // no such process
+  const auto r = test::run_pyro({"import-vdb", content_path("volumes/sample_cloud.vdb"), "--out",
+                                 out.string(), "--error", "0.2", "--width", "48", "--height", "48"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("removed 1 temporary file(s)"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "cloud.pyrop.partial-999999999"));
+  EXPECT_TRUE(fs::exists(out));
+}
+
+TEST(PyroCliInputs, TraceOverTheSceneOrIntoTheFramesIsRefused) {
+  const fs::path dir = test::scratch_dir("inputs_trace");
+  const fs::path scene = dir / "fog.json", out = dir / "out";
+  fs::copy_file(test::scene_path("fog.json"), scene);
+  const std::string before = read_bytes(scene);
+  for (const char* command : {"render", "profile"}) {
+    std::vector<std::string> args = {command, scene.string(), "--trace", scene.string(), "--width", "24",
+                                     "--height", "24"};
+    if (std::string(command) == "render") args.insert(args.end(), {"--out", out.string()});
+    const auto r = test::run_pyro(args);
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("the scene file"), std::string::npos) << r.err;
+    EXPECT_EQ(read_bytes(scene), before) << command;
+  }
+  ASSERT_EQ(test::render("fog.json", out, "1", 24).exit_code, 0);
+  const auto frames = test::contents(out);
+  const auto r = test::render("fog.json", out, "1", 24, {"--trace", (out / "frame_0000.png").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(test::contents(out), frames);
+}
+
+// A FIFO that no program writes to would block an open forever: refused within a second.
+TEST(PyroCliInputs, AFifoSceneIsRefusedAtOnce) {
+  const fs::path dir = test::scratch_dir("inputs_fifo");
+  const fs::path fifo = dir / "scene.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  const std::vector<std::vector<std::string>> commands = {
+      {"render", fifo.string(), "--out", (dir / "out").string()},
+      {"bake-flipbook", fifo.string(), "--out", (dir / "flipbook").string()},
+      {"quality", fifo.string()},
+      {"profile", fifo.string()}};
+  for (const auto& args : commands) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto r = test::run_pyro_with("timeout 20", args);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.err;
+    EXPECT_NE(r.err.find("FIFO"), std::string::npos) << r.err;
+    EXPECT_LT(seconds, 15.0) << args[0] << " waited on the FIFO";
+  }
+}
+
+TEST(PyroCliInputs, VolumePathsThatAreNotFilesSayWhatTheyAre) {
+  const fs::path dir = test::scratch_dir("inputs_volume_kinds");
+  fs::create_directory(dir / "folder.vdb");
+  ASSERT_EQ(::mkfifo((dir / "fifo.vdb").c_str(), 0644), 0);
+  fs::create_symlink(dir / "loop_b.vdb", dir / "loop_a.vdb");
+  fs::create_symlink(dir / "loop_a.vdb", dir / "loop_b.vdb");
+  const std::pair<const char*, const char*> cases[] = {
+      {"folder.vdb", "a folder"}, {"fifo.vdb", "a FIFO"}, {"loop_a.vdb", "a symbolic link loop"}};
+  for (const auto& [file, kind] : cases) {
+    const fs::path scene = dir / "scene.json";
+    write_text(scene, std::string(R"({"volumes": [{"file": ")") + file + "\"}]}");
+    const auto r = test::run_pyro_with("timeout 20", {"render", scene.string(), "--out", (dir / "out").string()});
+    EXPECT_EQ(r.exit_code, 2) << file << ": " << r.err;
+    EXPECT_NE(r.err.find(kind), std::string::npos) << r.err;
+    const auto i = test::run_pyro_with("timeout 20", {"import-vdb", (dir / file).string(), "--list"});
+    EXPECT_EQ(i.exit_code, 2) << file << ": " << i.err;
+    EXPECT_NE(i.err.find(kind), std::string::npos) << i.err;
+  }
+}
+
+// Bytes from a file reach the terminal escaped: an escape sequence in a scene key is printed as
+// \x1b, not acted on.
+TEST(PyroCliInputs, BytesFromFilesAreEscapedInMessages) {
+  const fs::path dir = test::scratch_dir("inputs_escaped");
+  const fs::path scene = dir / "scene.json";
+  write_text(scene, "{\"\\u001b[2Jcloudz\": 1}");
+  const auto r = test::run_pyro({"render", scene.string(), "--out", (dir / "out").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << "a raw escape reached stderr";
+  EXPECT_NE(r.err.find("\\x1b[2Jcloudz"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace pyro
