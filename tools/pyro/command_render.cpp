@@ -140,7 +140,7 @@ void say_what_the_folder_held(const OutputFolder& folder, const RenderArgs& a) {
     print_note("removed " + std::to_string(folder.removed_leftovers()) +
                " leftover(s) of killed runs from " + a.out);
   if (folder.replaced_files() > 0)
-    print_note(std::string(a.folder.resume ? "resuming: " : "") + "replacing " +
+    print_note("replacing " +
                std::to_string(folder.replaced_files()) + " file(s) of " + a.out + ": it " +
                folder.replaced_because());
 }

@@ -129,7 +129,7 @@ const std::map<std::string, std::vector<std::string>>& cheap_json_runs() {
                         "--frames", "1", "--repeats", "1"}},
       {"bench layers", {"bench", "layers", test::scene_path("explosion.json"), "--width", "16", "--height", "16",
                         "--frames", "1", "--scales", "1"}},
-      {"bench table1", {"bench", "table1", "--frames", "1"}},
+      {"bench table1", {"bench", "table1", "--scene", test::scene_path("explosion.json"), "--frames", "1"}},
       {"bench soak", {"bench", "soak", test::scene_path("fog.json"), "--frames", "10", "--width", "16",
                       "--height", "16"}},
       {"bench schedule", {"bench", "schedule", test::scene_path("fog.json"), "--frames", "1", "--width", "16",

@@ -63,6 +63,13 @@ TEST(PyroCliFault, ReadOnlyFileSystemFailsNamingTheErrorAndKeepsTheFolder) {
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_NE(r.err.find("Read-only file system"), std::string::npos) << r.err;
   EXPECT_EQ(contents(out), before);
+  // However --out is written (a new folder, a trailing slash), the file system's refusal is 1.
+  for (const std::string& other : {(disk.dir() / "new_folder").string(), (disk.dir() / "a" / "b").string(),
+                                   out.string() + "/"}) {
+    const auto refused = test::run_pyro(test::render_args("fog.json", other, "3", 64));
+    EXPECT_EQ(refused.exit_code, 1) << other << ": " << refused.err;
+    EXPECT_NE(refused.err.find("Read-only file system"), std::string::npos) << refused.err;
+  }
   const auto trace = render("fog.json", dir / "frames", "1", 32, {"--trace", (out / "t.json").string()});
   EXPECT_NE(trace.exit_code, 0) << "a trace that cannot be written is no success";
   EXPECT_NE(trace.err.find("Read-only file system"), std::string::npos) << trace.err;
