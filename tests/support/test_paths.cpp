@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -40,6 +41,12 @@ std::string slurp(const std::filesystem::path& p) {
   return s.str();
 }
 }  // namespace
+
+std::string preload_for_pyro_only(const std::string& tool) {
+  const char* preload = std::getenv("LD_PRELOAD");
+  if (!preload || !*preload) return tool;
+  return "env -u LD_PRELOAD " + tool + " env LD_PRELOAD=" + quote(preload);
+}
 
 CommandResult run_pyro(const std::vector<std::string>& args) { return run_pyro_with("", args); }
 

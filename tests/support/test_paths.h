@@ -24,6 +24,10 @@ CommandResult run_pyro(const std::vector<std::string>& args);
 // Runs `pyro` behind a launcher: `launcher` is shell text put before the binary as is (e.g.
 // "env -u DISPLAY" or an xvfb-run line); the arguments are quoted.
 CommandResult run_pyro_with(const std::string& launcher, const std::vector<std::string>& args);
+// `tool` (shell text, e.g. "timeout 20") run without this process's LD_PRELOAD, which then
+// applies to pyro alone: a sanitizer preload (the asan-ubsan preset) would otherwise check the
+// tool's own leaks at its exit and replace pyro's exit status with its report's.
+std::string preload_for_pyro_only(const std::string& tool);
 // Quotes `s` for the shell.
 std::string shell_quote(const std::string& s);
 

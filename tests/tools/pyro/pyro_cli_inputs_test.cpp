@@ -96,7 +96,7 @@ TEST(PyroCliInputs, AFifoSceneIsRefusedAtOnce) {
       {"profile", fifo.string()}};
   for (const auto& args : commands) {
     const auto t0 = std::chrono::steady_clock::now();
-    const auto r = test::run_pyro_with("timeout 20", args);
+    const auto r = test::run_pyro_with(test::preload_for_pyro_only("timeout 20"), args);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     EXPECT_EQ(r.exit_code, 2) << args[0] << ": " << r.err;
     EXPECT_NE(r.err.find("FIFO"), std::string::npos) << r.err;
@@ -115,10 +115,11 @@ TEST(PyroCliInputs, VolumePathsThatAreNotFilesSayWhatTheyAre) {
   for (const auto& [file, kind] : cases) {
     const fs::path scene = dir / "scene.json";
     write_text(scene, std::string(R"({"volumes": [{"file": ")") + file + "\"}]}");
-    const auto r = test::run_pyro_with("timeout 20", {"render", scene.string(), "--out", (dir / "out").string()});
+    const std::string timeout = test::preload_for_pyro_only("timeout 20");
+    const auto r = test::run_pyro_with(timeout, {"render", scene.string(), "--out", (dir / "out").string()});
     EXPECT_EQ(r.exit_code, 2) << file << ": " << r.err;
     EXPECT_NE(r.err.find(kind), std::string::npos) << r.err;
-    const auto i = test::run_pyro_with("timeout 20", {"import-vdb", (dir / file).string(), "--list"});
+    const auto i = test::run_pyro_with(timeout, {"import-vdb", (dir / file).string(), "--list"});
     EXPECT_EQ(i.exit_code, 2) << file << ": " << i.err;
     EXPECT_NE(i.err.find(kind), std::string::npos) << i.err;
   }

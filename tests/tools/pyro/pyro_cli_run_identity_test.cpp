@@ -132,8 +132,12 @@ int render_piped(const std::string& scene, const fs::path& out, const std::strin
   const std::string scene_file = test::shell_quote(test::scene_path(scene));
   const std::string pyro = test::shell_quote(test::pyro_binary());
   const std::string rest = " --out " + test::shell_quote(out.string()) + " --width 24 --height 24 2>/dev/null";
-  const std::string cmd = how == "stdin" ? pyro + " render -" + rest + " < " + scene_file
-                                         : "bash -c " + test::shell_quote(pyro + " render <(cat " + scene_file + ")" + rest);
+  const char* preload = std::getenv("LD_PRELOAD");  // for pyro alone: test_paths.h
+  const std::string for_pyro = preload && *preload ? "env LD_PRELOAD=" + test::shell_quote(preload) + " " : "";
+  const std::string cmd =
+      how == "stdin" ? pyro + " render -" + rest + " < " + scene_file
+                     : "env -u LD_PRELOAD bash -c " +
+                           test::shell_quote(for_pyro + pyro + " render <(cat " + scene_file + ")" + rest);
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
