@@ -19,12 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path normalized(const std::string& out) {
-  fs::path target = fs::absolute(fs::path(out)).lexically_normal();
-  if (target.filename().empty()) target = target.parent_path();  // "out/" names "out"
-  return target;
-}
-
 // Where the fallback keeps the old folder while the new one moves in.
 fs::path aside_name(const fs::path& out, int pid) {
   return out.parent_path() / ("." + out.filename().string() + ".replaced-" + std::to_string(pid));
@@ -55,7 +49,7 @@ bool restore_or_remove_aside(const fs::path& out) {
 }  // namespace
 
 FolderReplacement::FolderReplacement(const std::string& out, const std::string& option)
-    : out_(normalized(out)) {
+    : out_(normalized_output_path(out)) {
   std::error_code ec;
   if (fs::exists(out_, ec) && !fs::is_directory(out_, ec))
     throw UserError(out, option, "expected a folder for the output, found a file");

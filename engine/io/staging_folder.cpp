@@ -18,12 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path normalized(const std::string& out) {
-  fs::path target = fs::absolute(fs::path(out)).lexically_normal();
-  if (target.filename().empty()) target = target.parent_path();  // "out/" names "out"
-  return target;
-}
-
 dev_t device_of(const fs::path& p) {
   struct stat st {};
   if (::stat(p.c_str(), &st) != 0) throw IoError(p.string(), "stat", errno);
@@ -61,6 +55,12 @@ int remove_all_of(const std::vector<fs::path>& folders) {
 
 }  // namespace
 
+fs::path normalized_output_path(const std::string& out) {
+  fs::path target = fs::absolute(fs::path(out)).lexically_normal();
+  if (target.filename().empty()) target = target.parent_path();  // "out/" names "out"
+  return target;
+}
+
 int staging_owner(const std::string& name) {
   const size_t at = name.rfind(".partial-");
   if (name.empty() || name[0] != '.' || at == std::string::npos) return 0;
@@ -73,13 +73,13 @@ int staging_owner(const std::string& name) {
 std::vector<fs::path> stale_staging_folders(const fs::path& out) {
   std::vector<fs::path> folders;
   std::error_code ec;
-  for (const fs::path& p : stale_in(normalized(out.string()), ".partial-"))
+  for (const fs::path& p : stale_in(normalized_output_path(out.string()), ".partial-"))
     if (fs::is_directory(p, ec)) folders.push_back(p);
   return folders;
 }
 
 int remove_stale_staging(const fs::path& out) {
-  const fs::path target = normalized(out.string());
+  const fs::path target = normalized_output_path(out.string());
   // Inside `out`: staging folders (`.partial-PID`) and a durable file's temporary file cut by the
   // kill (`.pyro_manifest.json.partial-PID`). Beside `out`: the name older versions used
   // (`.NAME.partial-PID`).
@@ -100,7 +100,7 @@ bool create_output_folder(const std::string& out, const std::string& option) {
   throw IoError(out, "create the output folder", ec.value());
 }
 
-StagingFolder::StagingFolder(const std::string& out, bool remove_stale) : out_(normalized(out)) {
+StagingFolder::StagingFolder(const std::string& out, bool remove_stale) : out_(normalized_output_path(out)) {
   std::error_code ec;
   created_out_ = create_output_folder(out, "--out");
   if (remove_stale) removed_leftovers_ = remove_stale_staging(out_);

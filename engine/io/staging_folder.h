@@ -41,6 +41,9 @@ class StagingFolder {
   int removed_leftovers_ = 0;
 };
 
+// `out` as an absolute, normal path naming the folder itself ("out/" names "out").
+std::filesystem::path normalized_output_path(const std::string& out);
+
 // Creates the output folder `out` (and its parents) unless it exists; returns whether it did.
 // Throws UserError(out, option, ...) when `out` is a file or its parent is missing or a file
 // (the user's to fix), IoError when the file system refuses (read-only, full, no permission).

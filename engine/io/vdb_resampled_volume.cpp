@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include "engine/core/user_error.h"
@@ -176,6 +177,12 @@ void write_in_this_process(const std::string& path, const std::string& grid_name
   try {
     flush_to_disk(tmp);
     check_vdb_file_structure(tmp);
+  } catch (const UserError&) {
+    // Cut short by the file system (the writer saw no error): the environment's failure.
+    struct statvfs space {};
+    const bool full = ::statvfs(std::filesystem::path(tmp).parent_path().c_str(), &space) == 0 && space.f_bavail == 0;
+    std::filesystem::remove(tmp, ec);
+    throw IoError(tmp, "write the whole OpenVDB file (it came out incomplete)", full ? ENOSPC : EIO);
   } catch (...) {
     std::filesystem::remove(tmp, ec);
     throw;

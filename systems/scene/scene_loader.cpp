@@ -1084,30 +1084,29 @@ std::string read_all(int fd, const std::string& path) {
   }
 }
 
+// A file descriptor closed when it goes out of scope.
+struct OpenFile {
+  int fd = -1;
+  ~OpenFile() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
 // A pipe (bash's <(...), standard input) is read once; a named FIFO that no program writes to
 // would block the open and every read forever, so it is opened without blocking and refused when
 // nothing arrives within a second.
 std::string read_fifo(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
-  struct pollfd p {fd, POLLIN, 0};
+  const OpenFile file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+  if (file.fd < 0) throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
+  struct pollfd p {file.fd, POLLIN, 0};
   int ready;
   do ready = ::poll(&p, 1, 1000);
   while (ready < 0 && errno == EINTR);
-  if (ready == 0) {
-    ::close(fd);
+  if (ready == 0)
     throw UserError(path, "", "expected a scene file, found a FIFO (named pipe) that no program "
                               "wrote to within 1 s");
-  }
-  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-  try {
-    std::string text = read_all(fd, path);
-    ::close(fd);
-    return text;
-  } catch (...) {
-    ::close(fd);
-    throw;
-  }
+  ::fcntl(file.fd, F_SETFL, ::fcntl(file.fd, F_GETFL) & ~O_NONBLOCK);
+  return read_all(file.fd, path);
 }
 
 std::string read_scene_text(const std::string& path) {
@@ -1116,16 +1115,9 @@ std::string read_scene_text(const std::string& path) {
   const std::string kind = non_regular_file_kind(path);
   if (kind == "no file") throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(ENOENT));
   if (!kind.empty()) throw UserError(path, "", "expected a scene file, found " + kind);
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
-  try {
-    std::string text = read_all(fd, path);
-    ::close(fd);
-    return text;
-  } catch (...) {
-    ::close(fd);
-    throw;
-  }
+  const OpenFile file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (file.fd < 0) throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
+  return read_all(file.fd, path);
 }
 
 }  // namespace

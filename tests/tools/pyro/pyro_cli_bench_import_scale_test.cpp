@@ -10,6 +10,7 @@
 
 #include "tests/support/file_bytes.h"
 #include "tests/support/json_output.h"
+#include "tests/support/scratch_mount.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -71,6 +72,19 @@ TEST(PyroCliBenchImportScale, ADamagedOrTruncatedKeptFileIsDiscardedAndWrittenAg
   EXPECT_NE(again.err.find("discarding the kept file"), std::string::npos) << again.err;
   EXPECT_TRUE(nlohmann::json::parse(again.out).at("generated").get<bool>());
   EXPECT_EQ(fs::file_size(keep), size);
+}
+
+// A full disk while the kept file is written: OpenVDB's writer sees no error, the check of the
+// written file does; status 1 naming the OS error, and nothing is moved into place.
+TEST(PyroCliBenchImportScale, AFullDiskLeavesNoTruncatedKeptFile) {
+  const fs::path dir = test::scratch_dir("bench_import_scale_full_disk");
+  test::ScratchMount disk(dir / "disk", "size=300k");
+  if (!disk.mounted()) GTEST_SKIP() << disk.why();
+  const std::string keep = (disk.dir() / "kept.vdb").string();
+  const auto r = test::run_pyro({"bench", "import-scale", "--voxels", "200000", "--keep", keep});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(disk.dir())) << "no truncated file, no temporary file";
 }
 
 TEST(PyroCliBenchImportScale, KeepOverTheSourceIsRefusedBeforeAnyWork) {
