@@ -3,6 +3,9 @@
 // marked (the scale chart: ms against particles, log-log). The data come from
 // systems/charts/chart_<name>.cpp (charts.h); DIR/NAME.csv is written
 // atomically, then tools/plots/plot_pareto.py draws DIR/NAME.png from it.
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -11,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/user_error.h"
+#include "engine/io/io_error.h"
 #include "engine/io/text_file.h"
 #include "systems/charts/charts.h"
 #include "tools/pyro/commands.h"
@@ -75,6 +79,20 @@ ChartTable make_chart(const ChartArgs& a) {
                                           "particle-budget, integrators; found \"" + a.name + "\"");
 }
 
+// Before any measuring: --out must be a folder or creatable as one, in a folder that can be
+// written (a mistake found after minutes of work wastes them).
+void check_out_dir(const ChartArgs& a) {
+  std::error_code ec;
+  if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
+    throw UserError(a.out, "--out", "a folder for the chart's files, found a file");
+  fs::path existing = fs::absolute(a.out, ec);
+  while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (!fs::is_directory(existing, ec))
+    throw UserError(a.out, "--out", "a folder path, found a file at \"" + existing.string() + "\"");
+  if (::access(existing.c_str(), W_OK) != 0) throw IoError(existing.string(), "write into the folder", errno);
+}
+
 void make_out_dir(const ChartArgs& a) {
   std::error_code ec;
   fs::create_directories(a.out, ec);
@@ -106,6 +124,7 @@ void run_scale_chart(const ChartArgs& a) {
 }
 
 void run_chart(const ChartArgs& a) {
+  check_out_dir(a);
   if (a.name == "scale") {
     run_scale_chart(a);
     return;

@@ -84,6 +84,18 @@ TEST(PyroCliInputs, TraceOverTheSceneOrIntoTheFramesIsRefused) {
   EXPECT_EQ(test::contents(out), frames);
 }
 
+// A chart's --out that cannot be its folder is refused before the measuring (minutes for some).
+TEST(PyroCliInputs, ChartDestinationsAreCheckedBeforeMeasuring) {
+  const fs::path dir = test::scratch_dir("inputs_chart");
+  write_text(dir / "a_file", "not a folder");
+  for (const fs::path& out : {dir / "a_file", dir / "a_file" / "sub"}) {
+    const auto r = test::run_pyro({"chart", "layer-resolution", "--out", out.string()});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("at --out"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("found a file"), std::string::npos) << r.err;
+  }
+}
+
 // A FIFO that no program writes to would block an open forever: refused within a second.
 TEST(PyroCliInputs, AFifoSceneIsRefusedAtOnce) {
   const fs::path dir = test::scratch_dir("inputs_fifo");
