@@ -185,6 +185,8 @@ const char* phase_name(Phase phase) {
       return "spawn";
     case Phase::simulate:
       return "simulate";
+    case Phase::light:
+      return "light";
     case Phase::camera:
       return "camera";
     case Phase::sort:

@@ -25,13 +25,16 @@ namespace pyro::ecs {
 
 class World;
 
-// The order data flows through a frame: particles are spawned and simulated, the camera makes
-// this frame's eye frames, the sort orders particles for those eyes, the renderers draw them,
-// the views are composited into the output image, and the output is read back.
-enum class Phase { spawn, simulate, camera, sort, render, composite, output };
+// The order data flows through a frame: particles are spawned and simulated, the lights are
+// gathered and what the renderers need of them is made in light space (once per frame, whatever
+// the number of eyes), the camera makes this frame's eye frames, the sort orders particles for
+// those eyes, the renderers draw them, the views are composited into the output image, and the
+// output is read back.
+enum class Phase { spawn, simulate, light, camera, sort, render, composite, output };
 
-inline constexpr Phase all_phases[] = {Phase::spawn,  Phase::simulate,  Phase::camera, Phase::sort,
-                                       Phase::render, Phase::composite, Phase::output};
+inline constexpr Phase all_phases[] = {Phase::spawn,  Phase::simulate, Phase::light,
+                                       Phase::camera, Phase::sort,     Phase::render,
+                                       Phase::composite, Phase::output};
 
 const char* phase_name(Phase phase);
 
@@ -106,7 +109,7 @@ class Schedule {
   // advance the simulation without sorting or rendering), timing each like run_frame.
   void run_phases_through(World& world, Phase last);
 
-  // Runs, in order(), only the systems whose phase lies in [first, last] (e.g. Phase::camera to
+  // Runs, in order(), only the systems whose phase lies in [first, last] (e.g. Phase::light to
   // Phase::output: draw the current state again without advancing the simulation, as the
   // viewer does while paused), timing each like run_frame.
   void run_phases(World& world, Phase first, Phase last);

@@ -62,7 +62,8 @@ double memcpy_ms(std::size_t bytes) {
 }
 
 bool cpu_phase(const std::string& phase) {
-  return phase == "spawn" || phase == "simulate" || phase == "camera" || phase == "sort";
+  return phase == "spawn" || phase == "simulate" || phase == "light" || phase == "camera" ||
+         phase == "sort";
 }
 
 // The per-frame means of one count's run.

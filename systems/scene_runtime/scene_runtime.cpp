@@ -90,7 +90,7 @@ void SceneRuntime::redraw() {
   FrameClock& clock = world_.resource<FrameClock>();
   const uint64_t next = clock.frame;
   if (next > 0) clock.frame = next - 1;
-  schedule_.run_phases(world_, ecs::Phase::camera, ecs::Phase::output);
+  schedule_.run_phases(world_, ecs::Phase::light, ecs::Phase::output);
   world_.resource<FrameClock>().frame = next;
 }
 

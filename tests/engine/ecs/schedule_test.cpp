@@ -45,6 +45,7 @@ SystemDesc logger(std::string name, Phase phase, std::vector<std::string>* log, 
 TEST(Schedule, PhaseNames) {
   EXPECT_STREQ(pyro::ecs::phase_name(Phase::spawn), "spawn");
   EXPECT_STREQ(pyro::ecs::phase_name(Phase::simulate), "simulate");
+  EXPECT_STREQ(pyro::ecs::phase_name(Phase::light), "light");
   EXPECT_STREQ(pyro::ecs::phase_name(Phase::sort), "sort");
   EXPECT_STREQ(pyro::ecs::phase_name(Phase::camera), "camera");
   EXPECT_STREQ(pyro::ecs::phase_name(Phase::render), "render");
