@@ -44,9 +44,8 @@ struct RenderSettings {
   int width = 800;
   int height = 600;
   glm::vec3 background{0.62f, 0.68f, 0.76f};  // linear RGB
-  glm::vec3 light_direction{-0.4f, -1.0f, -0.3f};
-  glm::vec3 light_color{1.0f, 1.0f, 1.0f};
-  glm::vec3 ambient{0.35f, 0.38f, 0.45f};
+  // The lights are entities (components/directional_light.h, ambient_light.h), gathered each
+  // frame by the light phase into SceneLighting (components/scene_lighting.h).
   BillboardAlignment alignment = BillboardAlignment::viewplane;
   ParticleShape particles = ParticleShape::gaussian;
   float layer_scale = 1.0f;  // particle layer size as a fraction of the rendered views

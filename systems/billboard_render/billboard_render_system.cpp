@@ -10,6 +10,7 @@
 #include "components/render_settings.h"
 #include "components/sort_device_choice.h"
 #include "components/view.h"
+#include "components/scene_lighting.h"
 #include "engine/ecs/world.h"
 #include "engine/gpu/gpu_pass_timer.h"
 #include "systems/billboard_render/billboard_renderer.h"
@@ -84,8 +85,11 @@ void draw_media(ecs::World& world, const EyeDrawLists& lists, const View& view, 
     explosion = &world.set_resource<ExplosionRenderer>(shading);
   const FrameClock* clock = world.try_resource<const FrameClock>();
   const double time = clock ? clock->time() : 0.0;
+  // The light phase's gathering; a world run without it is lit by the default light.
+  const SceneLighting* lit = world.try_resource<const SceneLighting>();
+  const SceneLighting lighting = lit ? *lit : SceneLighting{};
   for (size_t v = 0; v < views; ++v)
-    explosion->draw(lists.eyes[v], view.eyes[v], settings, time, *frame.eyes[v].media_atlas,
+    explosion->draw(lists.eyes[v], view.eyes[v], settings, lighting, time, *frame.eyes[v].media_atlas,
                     frame.eyes[v].media_combined->width(), *frame.eyes[v].scene);
 }
 
@@ -174,8 +178,8 @@ ecs::SystemDesc billboard_render_system() {
   return {.name = "billboard_render",
           .phase = ecs::Phase::render,
           .access = ecs::Access::of<
-              ecs::Reads<EyeDrawLists, View, RenderSettings, FrameClock, ExplosionShading,
-                         AnisotropicCloud, SortScratch>,
+              ecs::Reads<EyeDrawLists, View, RenderSettings, SceneLighting, FrameClock,
+                         ExplosionShading, AnisotropicCloud, SortScratch>,
               ecs::Writes<GpuFrame, SortDeviceChoice>, Renderers>(),
           .run = draw_billboards,
           .setup = make_particle_renderer,

@@ -66,8 +66,8 @@ void ExplosionRenderer::upload_detail_slice(double time) {
 }
 
 void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
-                             const RenderSettings& settings, double time,
-                             const gpu::RenderTarget& atlas, int cell_width,
+                             const RenderSettings& settings, const SceneLighting& lighting,
+                             double time, const gpu::RenderTarget& atlas, int cell_width,
                              const gpu::RenderTarget& scene) {
   const int scene_width = scene.width(), scene_height = scene.height();
   const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -84,8 +84,8 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
                              GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   }
   atlas.bind();
-  const glm::vec3 light = glm::normalize(glm::vec3(frame.view * glm::vec4(settings.light_direction, 0.0f)));
-  const glm::vec3 irradiance = settings.light_color * shading_.light_irradiance;
+  const glm::vec3 light = glm::normalize(glm::vec3(frame.view * glm::vec4(lighting.sun_direction, 0.0f)));
+  const glm::vec3 irradiance = lighting.sun_color * shading_.light_irradiance;
   for (int m = 0; m < 3; ++m) {
     const DrawList& l = split_[m];
     if (l.size() == 0) continue;
@@ -101,7 +101,7 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     set_sphere_billboard_depth_scale(program, cell, scene_width, scene_height);
     glUniform3fv(loc("u_light_view"), 1, glm::value_ptr(light));
     glUniform3fv(loc("u_light_irradiance"), 1, glm::value_ptr(irradiance));
-    glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(settings.ambient));
+    glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(lighting.ambient));
     glUniform1f(loc("u_detail_frequency"), shading_.detail_frequency);
     glUniform4f(loc("u_fire"), shading_.fire_t_min, shading_.fire_t_max, shading_.fire_scale, shading_.fire_bias);
     glUniform1f(loc("u_fire_detail_range"), shading_.fire_detail_range);

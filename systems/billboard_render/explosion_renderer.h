@@ -9,6 +9,7 @@
 #include "components/draw_list.h"
 #include "components/explosion_shading.h"
 #include "components/render_settings.h"
+#include "components/scene_lighting.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
@@ -29,8 +30,8 @@ class ExplosionRenderer {
   // `scene` holds the opaque scene's colour and depth (the spherical shader clips against its
   // full-resolution depth; planar billboards are depth tested against a point-sampled copy).
   void draw(const DrawList& list, const CameraFrame& frame, const RenderSettings& settings,
-            double time, const gpu::RenderTarget& atlas, int cell_width,
-            const gpu::RenderTarget& scene);
+            const SceneLighting& lighting, double time, const gpu::RenderTarget& atlas,
+            int cell_width, const gpu::RenderTarget& scene);
   const ExplosionShading& shading() const { return shading_; }
 
  private:

@@ -53,13 +53,14 @@ namespace {
 
 // Everything the opaque image depends on, as numbers.
 std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
-                               const RenderSettings& settings, const gpu::RenderTarget& target) {
+                               const RenderSettings& settings, const SceneLighting& lighting,
+                               const gpu::RenderTarget& target) {
   std::vector<float> k;
   auto put = [&](const float* v, size_t n) { k.insert(k.end(), v, v + n); };
   put(glm::value_ptr(frame.view_projection), 16);
-  put(glm::value_ptr(settings.light_direction), 3);
-  put(glm::value_ptr(settings.light_color), 3);
-  put(glm::value_ptr(settings.ambient), 3);
+  put(glm::value_ptr(lighting.sun_direction), 3);
+  put(glm::value_ptr(lighting.sun_color), 3);
+  put(glm::value_ptr(lighting.ambient), 3);
   put(glm::value_ptr(settings.background), 3);
   k.push_back(static_cast<float>(target.width()));
   k.push_back(static_cast<float>(target.height()));
@@ -82,8 +83,9 @@ void copy_image(GLuint from, GLuint to, const gpu::RenderTarget& target) {
 }  // namespace
 
 void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
-                        const RenderSettings& settings, const gpu::RenderTarget& target) {
-  std::vector<float> inputs = draw_inputs(instances, frame, settings, target);
+                        const RenderSettings& settings, const SceneLighting& lighting,
+                        const gpu::RenderTarget& target) {
+  std::vector<float> inputs = draw_inputs(instances, frame, settings, lighting, target);
   Drawn& last = drawn_[target.serial()];
   if (last.color && last.inputs == inputs) {
     if (target.binds() != last.binds) {
@@ -95,7 +97,7 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
     last.binds = target.binds();
     return;
   }
-  draw_meshes(instances, frame, settings, target);
+  draw_meshes(instances, frame, settings, lighting, target);
   ++meshes_drawn_;
   const glm::ivec3 shape(target.width(), target.height(), static_cast<int>(target.format()));
   if (!last.color || last.shape != shape) {
@@ -129,7 +131,7 @@ void MeshRenderer::leave_state(bool meshes, const RenderSettings& settings,
 
 void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
                                const CameraFrame& frame, const RenderSettings& settings,
-                               const gpu::RenderTarget& target) {
+                               const SceneLighting& lighting, const gpu::RenderTarget& target) {
   target.bind();
   glClearColor(settings.background.x, settings.background.y, settings.background.z, 1.0f);
   glClearDepth(1.0);
@@ -149,10 +151,10 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
   glUseProgram(program.get());
   glUniformMatrix4fv(gpu::uniform_location(program, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(frame.view_projection));
-  const glm::vec3 light = glm::normalize(settings.light_direction);
+  const glm::vec3 light = glm::normalize(lighting.sun_direction);
   glUniform3fv(gpu::uniform_location(program, "u_light_direction"), 1, glm::value_ptr(light));
-  glUniform3fv(gpu::uniform_location(program, "u_light_color"), 1, glm::value_ptr(settings.light_color));
-  glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(settings.ambient));
+  glUniform3fv(gpu::uniform_location(program, "u_light_color"), 1, glm::value_ptr(lighting.sun_color));
+  glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
   const GLint offset = gpu::uniform_location(program, "u_offset");
   const GLint scale = gpu::uniform_location(program, "u_scale");
   const GLint albedo = gpu::uniform_location(program, "u_albedo");

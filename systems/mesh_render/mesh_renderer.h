@@ -7,6 +7,7 @@
 
 #include "components/mesh_instance.h"
 #include "components/render_settings.h"
+#include "components/scene_lighting.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
@@ -24,7 +25,8 @@ class MeshRenderer {
   // and depth are copied back (particles blended into it): the same bytes for a fraction of the
   // cost. The opaque scene of a still camera is drawn once.
   void draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
-            const RenderSettings& settings, const gpu::RenderTarget& target);
+            const RenderSettings& settings, const SceneLighting& lighting,
+            const gpu::RenderTarget& target);
   // How many of the draws so far drew the meshes, and how many copied the last image back (the
   // others found it in place).
   int meshes_drawn() const { return meshes_drawn_; }
@@ -39,7 +41,8 @@ class MeshRenderer {
   };
   const GpuMesh& mesh_for(MeshKind kind);
   void draw_meshes(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
-                   const RenderSettings& settings, const gpu::RenderTarget& target);
+                   const RenderSettings& settings, const SceneLighting& lighting,
+                   const gpu::RenderTarget& target);
   // The GL state a draw leaves, set again after a copy.
   void leave_state(bool meshes, const RenderSettings& settings,
                    const gpu::RenderTarget& target) const;

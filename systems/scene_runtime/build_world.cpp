@@ -2,10 +2,12 @@
 
 #include <cmath>
 
+#include "components/ambient_light.h"
 #include "components/anisotropic_cloud.h"
 #include "components/camera.h"
 #include "components/camera_orbit.h"
 #include "components/cloud_volume.h"
+#include "components/directional_light.h"
 #include "components/emitter.h"
 #include "components/gpu_frame.h"
 #include "components/mesh_instance.h"
@@ -88,6 +90,13 @@ void add_meshes(ecs::World& world, const std::vector<MeshDescription>& meshes) {
     world.emplace<MeshInstance>(world.create(), MeshInstance{m.kind, m.position, m.scale, m.color});
 }
 
+// The scene's lights as entities, created after every other entity: entity indices order the
+// particles' draw and seed the explosion's detail noise, so they must not move.
+void add_lights(ecs::World& world, const LightDescription& light) {
+  world.emplace<DirectionalLight>(world.create(), DirectionalLight{light.direction, light.color, 1.0f});
+  world.emplace<AmbientLight>(world.create(), AmbientLight{light.ambient});
+}
+
 }  // namespace
 
 ecs::World build_world(const ResolvedScene& resolved, SceneAssets assets) {
@@ -103,6 +112,7 @@ ecs::World build_world(const ResolvedScene& resolved, SceneAssets assets) {
   add_emitters(world, scene);
   add_meshes(world, scene.meshes);
   add_flipbook_fires(world, assets.fires, assets.flipbooks);
+  add_lights(world, scene.light);
   world.set_resource<GpuFrame>(make_gpu_frame(resolved.settings));
   world.set_resource<BillboardRenderer>(
       make_footprint_table(scene.footprint.size, scene.footprint.intervals));

@@ -11,9 +11,6 @@ RenderSettings merge_render_settings(const SceneDescription& scene, const Runtim
   s.width = options.width_override > 0 ? options.width_override : scene.width;
   s.height = options.height_override > 0 ? options.height_override : scene.height;
   s.background = scene.background;
-  s.light_direction = scene.light.direction;
-  s.light_color = scene.light.color;
-  s.ambient = scene.light.ambient;
   s.alignment = options.alignment.value_or(scene.render.billboards);
   s.particles = options.particles.value_or(scene.render.particles);
   s.layer_scale = options.layer_scale.value_or(scene.render.layer_scale);

@@ -13,6 +13,7 @@
 #include "systems/emitter/cloud_emitter_system.h"
 #include "systems/emitter/emitter_system.h"
 #include "systems/flipbook_fire/flipbook_render_system.h"
+#include "systems/lighting/lighting_system.h"
 #include "systems/mesh_render/mesh_render_system.h"
 #include "systems/output/frame_readback_system.h"
 #include "systems/sorting/depth_sort.h"
@@ -22,9 +23,10 @@ namespace pyro {
 std::vector<ecs::SystemDesc> standard_systems(bool readback) {
   std::vector<ecs::SystemDesc> systems = {
       cloud_emitter_system(),   emitter_system(),          cloud_drift_system(),
-      animation_system(),       camera_orbit_system(),     stereo_camera_system(),
-      sorting_system(),         flipbook_orient_system(),  mesh_render_system(),
-      flipbook_render_system(), billboard_render_system(), composite_system()};
+      animation_system(),       lighting_system(),         camera_orbit_system(),
+      stereo_camera_system(),   sorting_system(),          flipbook_orient_system(),
+      mesh_render_system(),     flipbook_render_system(),  billboard_render_system(),
+      composite_system()};
   if (readback) systems.push_back(frame_readback_system());
   return systems;
 }

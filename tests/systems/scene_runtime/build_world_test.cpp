@@ -2,8 +2,13 @@
 // asset file) become the expected entities and resources.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
+
+#include "components/ambient_light.h"
 #include "components/camera.h"
 #include "components/cloud_volume.h"
+#include "components/directional_light.h"
 #include "components/emitter.h"
 #include "components/frame_clock.h"
 #include "components/gpu_frame.h"
@@ -63,6 +68,16 @@ TEST(BuildWorld, MakesOneEntityPerDescribedThing) {
   EXPECT_EQ(count<Emitter>(w), 1u);
   EXPECT_EQ(count<MeshInstance>(w), 1u);
   EXPECT_EQ(count<ParticleSet>(w), 4u);  // two clouds, the volume, the emitter
+  EXPECT_EQ(count<DirectionalLight>(w), 1u);
+  EXPECT_EQ(count<AmbientLight>(w), 1u);
+  // The lights come last: the other entities keep the indices they had before lights were
+  // entities (indices order the draw and seed the explosion's noise).
+  uint32_t last_other = 0, first_light = UINT32_MAX;
+  w.each<ParticleSet>([&](ecs::Entity e, ParticleSet&) { last_other = std::max(last_other, e.index); });
+  w.each<MeshInstance>([&](ecs::Entity e, MeshInstance&) { last_other = std::max(last_other, e.index); });
+  w.each<DirectionalLight>([&](ecs::Entity e, DirectionalLight&) { first_light = std::min(first_light, e.index); });
+  w.each<AmbientLight>([&](ecs::Entity e, AmbientLight&) { first_light = std::min(first_light, e.index); });
+  EXPECT_GT(first_light, last_other);
   std::vector<size_t> capacities, sizes;
   w.each<ParticleSet>([&](ParticleSet& s) {
     capacities.push_back(s.pool.capacity());

@@ -38,10 +38,12 @@ TEST_P(StandardSchedule, DeclarationsHoldAndEveryConflictIsOrdered) {
   const auto at = [&](const char* name) {
     return std::find(order.begin(), order.end(), name) - order.begin();
   };
-  for (const char* name : {"cloud_emitter", "emitter", "cloud_drift", "animation", "camera_orbit",
+  for (const char* name : {"cloud_emitter", "emitter", "cloud_drift", "animation", "lighting", "camera_orbit",
                            "stereo_camera", "sorting", "flipbook_orient", "mesh_render",
                            "flipbook_render", "billboard_render", "composite", "frame_readback"})
     EXPECT_LT(at(name), std::ssize(order)) << name;
+  EXPECT_LT(at("animation"), at("lighting"));
+  EXPECT_LT(at("lighting"), at("stereo_camera"));
   EXPECT_LT(at("stereo_camera"), at("sorting"));
   EXPECT_LT(at("stereo_camera"), at("flipbook_orient"));
   for (const ecs::SystemDesc& s : schedule.systems()) {
