@@ -10,6 +10,7 @@
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
 #include "systems/cloud_import/cloud_import.h"
+#include "systems/lighting/lighting_system.h"
 
 namespace pyro {
 
@@ -81,9 +82,11 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
       out.active_voxels = grid.active_voxels;
       CloudImportOptions opt;
       opt.medium.extinction = v.extinction > 0.0f ? double(v.extinction) : default_extinction(grid);
-      opt.medium.light_direction = glm::dvec3(scene.light.direction);
-      opt.medium.light_color = glm::dvec3(scene.light.color);
-      opt.medium.ambient = glm::dvec3(scene.light.ambient);
+      // Lit as the renderers light the scene (systems/lighting), once, at import.
+      const SceneLighting lighting = combine_lights(scene.directional_lights, scene.ambient_lights);
+      opt.medium.light_direction = glm::dvec3(lighting.sun_direction);
+      opt.medium.light_color = glm::dvec3(lighting.sun_color);
+      opt.medium.ambient = glm::dvec3(lighting.ambient);
       opt.medium.background = glm::dvec3(scene.background);
       opt.tau_tolerance = tau_tolerance_for_error(v.error);
       opt.threads = threads;

@@ -1,31 +1,45 @@
 #include "systems/lighting/lighting_system.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 
-#include "components/ambient_light.h"
-#include "components/directional_light.h"
 
 namespace pyro {
 
-SceneLighting gather_lighting(ecs::World& world) {
+SceneLighting combine_lights(const std::vector<DirectionalLight>& directional,
+                             const std::vector<AmbientLight>& ambient) {
   SceneLighting lighting;
-  lighting.directional_lights = 0;
-  uint32_t first = UINT32_MAX;
-  world.each<const DirectionalLight>([&](ecs::Entity e, const DirectionalLight& light) {
-    ++lighting.directional_lights;
-    if (e.index >= first) return;
-    first = e.index;
-    lighting.sun_direction = light.direction;
-    lighting.sun_color = light.color * light.intensity;
-  });
-  if (lighting.directional_lights == 0) lighting.sun_color = glm::vec3(0.0f);
-  bool any_ambient = false;
-  world.each<const AmbientLight>([&](const AmbientLight& light) {
-    lighting.ambient = any_ambient ? lighting.ambient + light.color : light.color;
-    any_ambient = true;
-  });
-  if (!any_ambient) lighting.ambient = glm::vec3(0.0f);
+  lighting.directional_lights = static_cast<int>(directional.size());
+  if (directional.empty()) {
+    lighting.sun_color = glm::vec3(0.0f);
+  } else {
+    lighting.sun_direction = directional.front().direction;
+    lighting.sun_color = directional.front().color * directional.front().intensity;
+  }
+  if (ambient.empty()) lighting.ambient = glm::vec3(0.0f);
+  for (size_t i = 0; i < ambient.size(); ++i)
+    lighting.ambient = i == 0 ? ambient[i].color : lighting.ambient + ambient[i].color;
   return lighting;
+}
+
+namespace {
+
+// A component type's values over the world's entities, in entity-index order.
+template <typename T>
+std::vector<T> in_index_order(ecs::World& world) {
+  std::vector<std::pair<uint32_t, T>> found;
+  world.each<const T>([&](ecs::Entity e, const T& value) { found.emplace_back(e.index, value); });
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<T> values;
+  for (const auto& [index, value] : found) values.push_back(value);
+  return values;
+}
+
+}  // namespace
+
+SceneLighting gather_lighting(ecs::World& world) {
+  return combine_lights(in_index_order<DirectionalLight>(world), in_index_order<AmbientLight>(world));
 }
 
 ecs::SystemDesc lighting_system() {

@@ -7,6 +7,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "components/ambient_light.h"
+#include "components/directional_light.h"
 #include "components/emitter.h"
 #include "components/mesh_instance.h"
 #include "components/render_modes.h"
@@ -52,12 +54,6 @@ struct RenderDescription {
   float fire_t_max = 3200.0f;
   float fire_emission = 6.0f;
   float fire_detail_range = 500.0f;
-};
-
-struct LightDescription {
-  glm::vec3 direction{-0.4f, -1.0f, -0.3f};  // direction the light travels; non-zero
-  glm::vec3 color{1.0f, 1.0f, 1.0f};         // linear RGB, each >= 0
-  glm::vec3 ambient{0.35f, 0.38f, 0.45f};    // linear RGB, each >= 0
 };
 
 // A cloud of identical Gaussian particles placed uniformly at random in a box
@@ -144,7 +140,10 @@ struct SceneDescription {
   float frames_per_second = 30.0f;           // > 0
   glm::vec3 background{0.62f, 0.68f, 0.76f}; // linear RGB sky colour
   CameraDescription camera;
-  LightDescription light;
+  // The scene's lights (the components double as descriptions): `light` gives one directional
+  // and one ambient light, `lights` any number of each; without either key, the defaults.
+  std::vector<DirectionalLight> directional_lights = std::vector<DirectionalLight>(1);
+  std::vector<AmbientLight> ambient_lights = std::vector<AmbientLight>(1);
   FootprintDescription footprint;
   RenderDescription render;
   std::vector<CloudDescription> clouds;

@@ -556,11 +556,32 @@ void read_camera(ObjectReader& r, CameraDescription& c) {
   }
 }
 
-void read_light(ObjectReader& r, LightDescription& l) {
-  r.vec3("direction", kAnyRange, l.direction);
-  r.vec3("color", kNonNegative, l.color);
-  r.vec3("ambient", kNonNegative, l.ambient);
-  require_nonzero(l.direction, r.at("direction"), "light direction");
+// "light": one directional light and the ambient light, the short form.
+void read_light(ObjectReader& r, SceneDescription& s) {
+  DirectionalLight sun;
+  AmbientLight sky;
+  r.vec3("direction", kAnyRange, sun.direction);
+  r.vec3("color", kNonNegative, sun.color);
+  r.vec3("ambient", kNonNegative, sky.color);
+  require_nonzero(sun.direction, r.at("direction"), "light direction");
+  s.directional_lights = {sun};
+  s.ambient_lights = {sky};
+}
+
+// One entry of "lights": {"type": "directional", "direction", "color", "intensity"} or
+// {"type": "ambient", "color"}.
+void read_light_source(ObjectReader& r, SceneDescription& s) {
+  const std::vector<std::string_view> types = {"directional", "ambient"};
+  r.require("type", "the light type, one of " + quoted_list(types));
+  if (read_choice(r, "type", types, 0) == 1) {
+    r.vec3("color", kNonNegative, s.ambient_lights.emplace_back().color);
+    return;
+  }
+  DirectionalLight& sun = s.directional_lights.emplace_back();
+  r.vec3("direction", kAnyRange, sun.direction);
+  r.vec3("color", kNonNegative, sun.color);
+  r.number("intensity", kNonNegative, sun.intensity);
+  require_nonzero(sun.direction, r.at("direction"), "light direction");
 }
 
 void read_cloud(ObjectReader& r, CloudDescription& c) {
@@ -1004,7 +1025,7 @@ SceneDescription read_scene(ObjectReader& r) {
   });
   r.vec3("background", kNonNegative, s.background);
   r.object("camera", [&](ObjectReader& c) { read_camera(c, s.camera); });
-  r.object("light", [&](ObjectReader& l) { read_light(l, s.light); });
+  r.object("light", [&](ObjectReader& l) { read_light(l, s); });
   r.object("footprint", [&](ObjectReader& f) {
     f.integer("size", 2, 4096, s.footprint.size);
     f.integer("intervals", 1, 100000, s.footprint.intervals);
@@ -1034,6 +1055,14 @@ SceneDescription read_scene(ObjectReader& r) {
     const json& v = q.require("max_rmse", "a number in (0, 1], the largest image RMSE accepted");
     s.quality.max_rmse = read_number(v, q.at("max_rmse"), Range{0.0, 1.0, true, false});
   });
+  if (r.find("lights") != nullptr) {
+    if (r.find("light") != nullptr)
+      r.at("lights").fail("expected either \"light\" or \"lights\", found both");
+    s.directional_lights.clear();
+    s.ambient_lights.clear();
+    r.objects("lights", "an object describing a light",
+              [&](ObjectReader& l, std::size_t) { read_light_source(l, s); });
+  }
   r.finish();
   return s;
 }

@@ -92,9 +92,10 @@ void add_meshes(ecs::World& world, const std::vector<MeshDescription>& meshes) {
 
 // The scene's lights as entities, created after every other entity: entity indices order the
 // particles' draw and seed the explosion's detail noise, so they must not move.
-void add_lights(ecs::World& world, const LightDescription& light) {
-  world.emplace<DirectionalLight>(world.create(), DirectionalLight{light.direction, light.color, 1.0f});
-  world.emplace<AmbientLight>(world.create(), AmbientLight{light.ambient});
+void add_lights(ecs::World& world, const SceneDescription& scene) {
+  for (const DirectionalLight& light : scene.directional_lights)
+    world.emplace<DirectionalLight>(world.create(), light);
+  for (const AmbientLight& light : scene.ambient_lights) world.emplace<AmbientLight>(world.create(), light);
 }
 
 }  // namespace
@@ -112,7 +113,7 @@ ecs::World build_world(const ResolvedScene& resolved, SceneAssets assets) {
   add_emitters(world, scene);
   add_meshes(world, scene.meshes);
   add_flipbook_fires(world, assets.fires, assets.flipbooks);
-  add_lights(world, scene.light);
+  add_lights(world, scene);
   world.set_resource<GpuFrame>(make_gpu_frame(resolved.settings));
   world.set_resource<BillboardRenderer>(
       make_footprint_table(scene.footprint.size, scene.footprint.intervals));

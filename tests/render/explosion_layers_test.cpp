@@ -22,9 +22,9 @@ SceneDescription dust_scene(const glm::vec3& at, float radius, float tau) {
   // Cloud particles are dust (medium 0), opacity 1.
   SceneDescription s = test::one_particle_scene(at, radius, tau, 96, 96, 50.0f);
   s.clouds[0].color = CloudDescription{}.color;
-  s.light.direction = {-0.6f, -0.8f, 0.0f};
-  s.light.color = {1.0f, 1.0f, 1.0f};
-  s.light.ambient = {0.1f, 0.1f, 0.1f};
+  s.directional_lights.at(0).direction = {-0.6f, -0.8f, 0.0f};
+  s.directional_lights.at(0).color = {1.0f, 1.0f, 1.0f};
+  s.ambient_lights.at(0).color = {0.1f, 0.1f, 0.1f};
   s.render.particles = ParticleShape::spherical;
   s.render.shading = ParticleShading::explosion;
   return s;
@@ -48,7 +48,7 @@ TEST(ExplosionShading, DustCentrePixelFollowsEquationOne) {
     const int x = img.width / 2, y = img.height / 2;
     // The centre pixel's ray passes within half a pixel of the centre: d ~ 0, ds ~ 2r.
     const float alpha = 1.0f - std::exp(-tau * 2.0f * r);
-    const glm::vec3 light = glm::normalize(s.light.direction);
+    const glm::vec3 light = glm::normalize(s.directional_lights.at(0).direction);
     const double mu = glm::dot(light, glm::vec3(0, 0, 1));  // towards the eye: +z
     const double p = cornette_shanks(mu, g);
     // From the centre towards the light the chord is r.

@@ -27,9 +27,9 @@ TEST(SrgbEncodeRender, OpaqueBytesAreTheExactEncodingAndComposeKeepsThem) {
     s.camera.position = {0.0f, 10.0f, 0.0f};
     s.camera.target = {0.0f, 0.0f, 0.0f};
     s.camera.up = {0.0f, 0.0f, -1.0f};
-    s.light.direction = {-0.3f, -1.0f, 0.2f};
-    s.light.color = {1.0f, 0.9f, 0.7f};
-    s.light.ambient = {0.1f, 0.15f, 0.2f};
+    s.directional_lights.at(0).direction = {-0.3f, -1.0f, 0.2f};
+    s.directional_lights.at(0).color = {1.0f, 0.9f, 0.7f};
+    s.ambient_lights.at(0).color = {0.1f, 0.15f, 0.2f};
     s.render.layer_scale = 0.5f;  // the scene target is then 8-bit sRGB
     MeshDescription ground;
     ground.kind = MeshKind::ground_plane;
@@ -46,8 +46,8 @@ TEST(SrgbEncodeRender, OpaqueBytesAreTheExactEncodingAndComposeKeepsThem) {
     const std::vector<uint8_t> scene = frame.eyes[0].scene->read_rgba8();
     const std::vector<uint8_t> out = frame.output->read_rgba8();
     ASSERT_EQ(scene.size(), out.size());
-    const float lambert = std::max(glm::dot(glm::vec3(0, 1, 0), -glm::normalize(s.light.direction)), 0.0f);
-    const glm::vec3 linear = ground.color * (s.light.ambient + s.light.color * lambert);
+    const float lambert = std::max(glm::dot(glm::vec3(0, 1, 0), -glm::normalize(s.directional_lights.at(0).direction)), 0.0f);
+    const glm::vec3 linear = ground.color * (s.ambient_lights.at(0).color + s.directional_lights.at(0).color * lambert);
     for (size_t i = 0; i < scene.size(); i += 4) {
       for (int c = 0; c < 3; ++c) {
         const int want = to_byte(linear_to_srgb(linear[c]));

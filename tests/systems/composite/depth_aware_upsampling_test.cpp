@@ -39,9 +39,9 @@ SceneDescription dust_over(const MeshDescription& mesh, int size) {
   s.width = s.height = size;
   s.background = {0.1f, 0.1f, 0.1f};
   s.camera.fov_y_deg = 50.0f;
-  s.light.direction = {-0.3f, -1.0f, -0.2f};
-  s.light.color = {1.0f, 1.0f, 1.0f};
-  s.light.ambient = {0.1f, 0.1f, 0.1f};
+  s.directional_lights.at(0).direction = {-0.3f, -1.0f, -0.2f};
+  s.directional_lights.at(0).color = {1.0f, 1.0f, 1.0f};
+  s.ambient_lights.at(0).color = {0.1f, 0.1f, 0.1f};
   s.render.particles = ParticleShape::spherical;
   s.render.shading = ParticleShading::explosion;
   s.meshes.push_back(mesh);
@@ -81,7 +81,7 @@ SceneDescription dust_below_an_edge() {
   s.camera.position = {0.0f, 6.0f, 0.0f};
   s.camera.target = {0.0f, 0.0f, 0.0f};
   s.camera.up = {0.3f, 0.0f, -1.0f};
-  s.light.direction = {0.0f, -1.0f, 0.0f};
+  s.directional_lights.at(0).direction = {0.0f, -1.0f, 0.0f};
   CloudDescription c;
   c.count = 1;
   c.radius = 1.6f;

@@ -112,9 +112,9 @@ TEST(SceneLoader, FullSceneRoundTrip) {
   EXPECT_FLOAT_EQ(s.camera.far, 150.0f);
   EXPECT_FLOAT_EQ(s.camera.orbit_deg_per_second, -12.5f);
 
-  expect_vec3(s.light.direction, 0, -1, 0.2f);
-  expect_vec3(s.light.color, 2, 1.5f, 1);
-  expect_vec3(s.light.ambient, 0.1f, 0.2f, 0.3f);
+  expect_vec3(s.directional_lights.at(0).direction, 0, -1, 0.2f);
+  expect_vec3(s.directional_lights.at(0).color, 2, 1.5f, 1);
+  expect_vec3(s.ambient_lights.at(0).color, 0.1f, 0.2f, 0.3f);
 
   EXPECT_EQ(s.footprint.size, 128);
   EXPECT_EQ(s.footprint.intervals, 400);
@@ -171,9 +171,9 @@ TEST(SceneLoader, EmptyObjectGivesAllDefaults) {
   EXPECT_FLOAT_EQ(s.camera.near, d.camera.near);
   EXPECT_FLOAT_EQ(s.camera.far, d.camera.far);
   EXPECT_FLOAT_EQ(s.camera.orbit_deg_per_second, d.camera.orbit_deg_per_second);
-  EXPECT_EQ(s.light.direction, d.light.direction);
-  EXPECT_EQ(s.light.color, d.light.color);
-  EXPECT_EQ(s.light.ambient, d.light.ambient);
+  EXPECT_EQ(s.directional_lights.at(0).direction, d.directional_lights.at(0).direction);
+  EXPECT_EQ(s.directional_lights.at(0).color, d.directional_lights.at(0).color);
+  EXPECT_EQ(s.ambient_lights.at(0).color, d.ambient_lights.at(0).color);
   EXPECT_EQ(s.footprint.size, d.footprint.size);
   EXPECT_EQ(s.footprint.intervals, d.footprint.intervals);
   EXPECT_TRUE(s.clouds.empty());
@@ -203,6 +203,34 @@ TEST(SceneLoader, PartialObjectsKeepOtherDefaults) {
   EXPECT_EQ(s.meshes[0].position, dm.position);
   EXPECT_FLOAT_EQ(s.meshes[0].scale, dm.scale);
   EXPECT_EQ(s.meshes[0].color, dm.color);
+}
+
+TEST(SceneLoader, LightsListAnyNumberOfLights) {
+  const SceneDescription s = parse_scene(R"({"lights": [
+      {"type": "ambient", "color": [0.1, 0.2, 0.3]},
+      {"type": "directional", "direction": [0, -1, 0], "color": [1, 0.5, 0.25], "intensity": 2},
+      {"type": "directional", "direction": [1, 0, 0]},
+      {"type": "ambient"}]})", kFile);
+  ASSERT_EQ(s.directional_lights.size(), 2u);
+  ASSERT_EQ(s.ambient_lights.size(), 2u);
+  expect_vec3(s.directional_lights[0].direction, 0, -1, 0);
+  expect_vec3(s.directional_lights[0].color, 1, 0.5f, 0.25f);
+  EXPECT_EQ(s.directional_lights[0].intensity, 2.0f);
+  EXPECT_EQ(s.directional_lights[1].color, DirectionalLight{}.color);
+  expect_vec3(s.ambient_lights[0].color, 0.1f, 0.2f, 0.3f);
+  EXPECT_EQ(s.ambient_lights[1].color, AmbientLight{}.color);
+  const SceneDescription dark = parse_scene(R"({"lights": []})", kFile);
+  EXPECT_TRUE(dark.directional_lights.empty());
+  EXPECT_TRUE(dark.ambient_lights.empty());
+}
+
+TEST(SceneLoader, LightsAreCheckedLikeEveryOtherKey) {
+  expect_error(R"({"light": {}, "lights": []})", "/lights", {"either \"light\" or \"lights\""});
+  expect_error(R"({"lights": [{"direction": [0, -1, 0]}]})", "/lights/0", {"type"});
+  expect_error(R"({"lights": [{"type": "spot"}]})", "/lights/0/type", {"\"directional\""});
+  expect_error(R"({"lights": [{"type": "ambient", "direction": [0, -1, 0]}]})", "/lights/0/direction", {"unknown key"});
+  expect_error(R"({"lights": [{"type": "directional", "direction": [0, 0, 0]}]})", "/lights/0/direction", {"non-zero"});
+  expect_error(R"({"lights": [{"type": "directional", "intensity": -1}]})", "/lights/0/intensity", {"found -1"});
 }
 
 TEST(SceneLoader, LoadsFromFile) {
