@@ -181,15 +181,25 @@ TEST(PyroCliExitStatus, NoUsableOpenGlIsThree) {
   EXPECT_EQ(r.err.rfind("pyro: error: no usable OpenGL context", 0), 0u) << r.err;
 }
 
+// A frame is finished in the render's staging folder: the render loop runs.
+bool drawing(const fs::path& out) {
+  std::error_code ec;
+  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec))
+    if (it->path().filename().string().rfind(".partial-", 0) == 0)
+      for (fs::directory_iterator f(it->path(), ec); !ec && f != end; f.increment(ec))
+        if (f->path().extension() == ".png") return true;
+  return false;
+}
+
 // 130 and 143: a signal mid-render unwinds, so the folder it created is gone with its staging.
 TEST(PyroCliExitStatus, SignalsEndARenderCleanlyWith128PlusTheSignal) {
   for (const int sig : {SIGINT, SIGTERM}) {
     const fs::path dir = test::scratch_dir("exit_status_signal_" + std::to_string(sig));
     const fs::path out = dir / "out";
     const pid_t pid = test::spawn_pyro(test::render_args("fog.json", out, "400", 64));
-    // Once frames are being drawn (the staging folder exists), the signal.
-    for (int i = 0; i < 600 && !fs::exists(out); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    // Once frames are being drawn, the signal.
+    for (int i = 0; i < 1200 && !drawing(out); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    ASSERT_TRUE(drawing(out)) << "the render never drew a frame";
     ::kill(pid, sig);
     int status = 0;
     ASSERT_EQ(::waitpid(pid, &status, 0), pid);
