@@ -124,9 +124,4 @@ std::string DigestCache::folder(const std::string& path) {
   return h.hex_digest();
 }
 
-std::string DigestCache::any(const std::string& path) {
-  std::error_code ec;
-  return fs::is_directory(path, ec) ? folder(path) : file(path);
-}
-
 }  // namespace pyro

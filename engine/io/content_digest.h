@@ -28,8 +28,6 @@ class DigestCache {
   // into sub-folders; entries whose names start with '.' (a staging folder's records, temporary
   // files) are not content and are skipped.
   std::string folder(const std::string& path);
-  // file() or folder(), whichever `path` is.
-  std::string any(const std::string& path);
 
   int computed() const { return computed_; }  // digests computed (not found in the cache)
 

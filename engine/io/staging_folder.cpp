@@ -103,7 +103,7 @@ bool create_output_folder(const std::string& out, const std::string& option) {
 StagingFolder::StagingFolder(const std::string& out, bool remove_stale) : out_(normalized_output_path(out)) {
   std::error_code ec;
   created_out_ = create_output_folder(out, "--out");
-  if (remove_stale) removed_leftovers_ = remove_stale_staging(out_);
+  if (remove_stale) remove_stale_staging(out_);
   staging_ = out_ / (".partial-" + std::to_string(::getpid()));
   fs::remove_all(staging_, ec);  // left by an earlier process with the same id, killed
   if (::mkdir(staging_.c_str(), 0755) != 0) {

@@ -23,8 +23,6 @@ class StagingFolder {
   StagingFolder& operator=(const StagingFolder&) = delete;
 
   const std::filesystem::path& path() const { return staging_; }
-  // How many leftovers of killed runs the constructor removed (remove_stale_staging).
-  int removed_leftovers() const { return removed_leftovers_; }
 
   // Renames every file of the staging folder into `out` (replacing a file of the same name),
   // but for those whose names start with '.' (the staging folder's own records, removed last),
@@ -38,7 +36,6 @@ class StagingFolder {
  private:
   std::filesystem::path out_, staging_;
   bool created_out_ = false;
-  int removed_leftovers_ = 0;
 };
 
 // `out` as an absolute, normal path naming the folder itself ("out/" names "out").
