@@ -1,14 +1,8 @@
 #pragma once
 // CPU ground truth for a particle set: the exact sum of Gaussians, integrated in closed form.
 //
-// Particle i (centre c, radius r, density rho, colour col) is the extinction field
-//   sigma_i(p) = k_i exp(-|p - c|^2 / (2 s^2)),  s = r / 3,
-// clamped to the cube |p - c|_inf <= 3 s (engine/math/footprint.h: the kernel is clamped to
-// [-3, 3] on every axis), with k_i chosen so that the optical depth through the centre is
-// tau0 = -ln(1 - rho): the splat's opacity at its centre, 1 - exp(-tau0) = rho, is matched.
-// Along a ray o + t w (|w| = 1) its optical depth over [a, b] is, with tc the closest approach
-// and d the miss distance (Abramowitz & Stegun 7.1.1):
-//   k exp(-d^2 / (2 s^2)) s sqrt(pi / 2) [erf((b - tc) / (s sqrt 2)) - erf((a - tc) / (s sqrt 2))].
+// Particle i (centre c, radius r, density rho, colour col) is a cube-clamped Gaussian extinction
+// field whose optical depth along any ray is in closed form (engine/math/gaussian_line_integral.h).
 // The ray is cut at every particle's entry, exit and closest approach; each piece is split until
 // its optical depth is at most `max_piece_depth`; each piece adds T (1 - exp(-dtau)) times the
 // dtau-weighted mean colour and multiplies T by exp(-dtau). Optical depth is exact; the colour
