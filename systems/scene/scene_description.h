@@ -2,6 +2,7 @@
 // What a scene file says, as plain data: the loader (scene_loader.h) fills it from JSON and
 // checks every value; the scene builder turns it into entities.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "components/render_modes.h"
 #include "components/flipbook_fire.h"
 #include "components/particle_dynamics.h"
+#include "components/shadow_settings.h"
 #include "components/simulation_environment.h"
 #include "systems/scene/scene_budget.h"
 
@@ -144,6 +146,8 @@ struct SceneDescription {
   // and one ambient light, `lights` any number of each; without either key, the defaults.
   std::vector<DirectionalLight> directional_lights = std::vector<DirectionalLight>(1);
   std::vector<AmbientLight> ambient_lights = std::vector<AmbientLight>(1);
+  // Lit media (docs/lighting.md): absent, the splats keep their colours as given, unlit.
+  std::optional<ShadowSettings> shadows;
   FootprintDescription footprint;
   RenderDescription render;
   std::vector<CloudDescription> clouds;

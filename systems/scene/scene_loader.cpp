@@ -584,6 +584,13 @@ void read_light_source(ObjectReader& r, SceneDescription& s) {
   require_nonzero(sun.direction, r.at("direction"), "light direction");
 }
 
+// "shadows": lit media, {"method": "rays" | "map" | "none", "map_size", "map_slices"}.
+void read_shadows(ObjectReader& r, ShadowSettings& s) {
+  s.method = read_enum(r, "method", s.method);
+  r.integer("map_size", 4, 2048, s.map_size);
+  r.integer("map_slices", 4, 1024, s.map_slices);
+}
+
 void read_cloud(ObjectReader& r, CloudDescription& c) {
   r.string("name", c.name);
   c.count = static_cast<std::uint32_t>(
@@ -1055,6 +1062,7 @@ SceneDescription read_scene(ObjectReader& r) {
     const json& v = q.require("max_rmse", "a number in (0, 1], the largest image RMSE accepted");
     s.quality.max_rmse = read_number(v, q.at("max_rmse"), Range{0.0, 1.0, true, false});
   });
+  r.object("shadows", [&](ObjectReader& sh) { read_shadows(sh, s.shadows.emplace()); });
   if (r.find("lights") != nullptr) {
     if (r.find("light") != nullptr)
       r.at("lights").fail("expected either \"light\" or \"lights\", found both");

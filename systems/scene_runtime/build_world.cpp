@@ -12,7 +12,9 @@
 #include "components/gpu_frame.h"
 #include "components/mesh_instance.h"
 #include "components/particle_dynamics.h"
+#include "components/particle_light.h"
 #include "components/particle_set.h"
+#include "components/shadow_settings.h"
 #include "components/simulation_environment.h"
 #include "engine/core/rng.h"
 #include "systems/animation/particle_prewarm.h"
@@ -98,6 +100,16 @@ void add_lights(ecs::World& world, const SceneDescription& scene) {
   for (const AmbientLight& light : scene.ambient_lights) world.emplace<AmbientLight>(world.create(), light);
 }
 
+// Lit media (a "shadows" block): the light phase's settings, and a ParticleLight beside every
+// particle set for it to write.
+void add_shadowing(ecs::World& world, const SceneDescription& scene) {
+  if (!scene.shadows) return;
+  world.set_resource<ShadowSettings>(*scene.shadows);
+  std::vector<ecs::Entity> sets;
+  world.each<const ParticleSet>([&](ecs::Entity e, const ParticleSet&) { sets.push_back(e); });
+  for (const ecs::Entity e : sets) world.emplace<ParticleLight>(e);
+}
+
 }  // namespace
 
 ecs::World build_world(const ResolvedScene& resolved, SceneAssets assets) {
@@ -114,6 +126,7 @@ ecs::World build_world(const ResolvedScene& resolved, SceneAssets assets) {
   add_meshes(world, scene.meshes);
   add_flipbook_fires(world, assets.fires, assets.flipbooks);
   add_lights(world, scene);
+  add_shadowing(world, scene);
   world.set_resource<GpuFrame>(make_gpu_frame(resolved.settings));
   world.set_resource<BillboardRenderer>(
       make_footprint_table(scene.footprint.size, scene.footprint.intervals));

@@ -47,6 +47,8 @@ ResolvedScene resolve_scene(const SceneDescription& scene, const RuntimeOptions&
                             int driver_max_texture) {
   ResolvedScene r;
   r.scene = options.quality ? apply_quality_settings(scene, *options.quality) : scene;
+  if (options.shadows_off) r.scene.shadows.reset();
+  else if (options.shadow_method) r.scene.shadows.emplace(r.scene.shadows.value_or(ShadowSettings{})).method = *options.shadow_method;
   r.quality = options.quality;
   r.substeps = options.quality ? options.quality->substeps : 1;
   r.settings = merge_render_settings(r.scene, options);

@@ -10,6 +10,7 @@
 
 #include "components/render_modes.h"
 #include "components/render_settings.h"
+#include "components/shadow_settings.h"
 #include "engine/ecs/schedule.h"
 #include "systems/quality/quality_settings.h"
 
@@ -29,6 +30,10 @@ struct RuntimeOptions {
   std::optional<float> layer_scale;             // replaces the scene's choice (and a quality pick's)
   std::optional<ParticleShading> shading;       // replaces the scene's choice
   std::optional<SortDevice> sort_device;        // replaces the scene's choice
+  // Lit media (docs/lighting.md): `shadows_off` renders the scene unlit as if it had no
+  // "shadows" block; else `shadow_method` replaces its method (lighting a scene without one).
+  bool shadows_off = false;
+  std::optional<ShadowMethod> shadow_method;
   float frame_scale = 1.0f;                     // views at this fraction, output upscaled
   std::optional<float> interocular;
   std::optional<float> zero_parallax_distance;

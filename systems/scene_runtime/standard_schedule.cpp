@@ -16,6 +16,7 @@
 #include "systems/lighting/lighting_system.h"
 #include "systems/mesh_render/mesh_render_system.h"
 #include "systems/output/frame_readback_system.h"
+#include "systems/shadowing/shadowing_systems.h"
 #include "systems/sorting/depth_sort.h"
 
 namespace pyro {
@@ -23,7 +24,8 @@ namespace pyro {
 std::vector<ecs::SystemDesc> standard_systems(bool readback) {
   std::vector<ecs::SystemDesc> systems = {
       cloud_emitter_system(),   emitter_system(),          cloud_drift_system(),
-      animation_system(),       lighting_system(),         camera_orbit_system(),
+      animation_system(),       lighting_system(),         shadow_map_system(),
+      shadow_ray_system(),      camera_orbit_system(),
       stereo_camera_system(),   sorting_system(),          flipbook_orient_system(),
       mesh_render_system(),     flipbook_render_system(),  billboard_render_system(),
       composite_system()};

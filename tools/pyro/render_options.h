@@ -28,7 +28,7 @@ CLI::Option* add_enum_option(CLI::App* cmd, const std::string& name, std::functi
       ->check(CLI::IsMember(enum_name_map<E>()));
 }
 
-// Adds --stereo, --billboards, --particles, --sort-device, --layer-scale, --frame-scale, --eye-order,
+// Adds --stereo, --billboards, --particles, --sort-device, --shadows, --layer-scale, --frame-scale, --eye-order,
 // --interocular, --zero-parallax. The runtime's notes go to stderr.
 inline void add_render_options(CLI::App* cmd, RuntimeOptions& o) {
   o.on_note = print_note;
@@ -44,6 +44,19 @@ inline void add_render_options(CLI::App* cmd, RuntimeOptions& o) {
   add_enum_option<SortDevice>(
       cmd, "--sort-device", [&o](SortDevice d) { o.sort_device = d; },
       "Where the Gaussian splats' draw order is made (default: the scene's, auto)");
+  cmd->add_option_function<std::string>(
+         "--shadows",
+         [&o](const std::string& v) {
+           o.shadows_off = v == "off";
+           if (!o.shadows_off) o.shadow_method = *enum_from_name<ShadowMethod>(v);
+         },
+         "Lit media and how their shadows are found: off (unlit, as without a \"shadows\" block), " +
+             enum_name_list<ShadowMethod>() + " (default: the scene's)")
+      ->check(CLI::IsMember([] {
+        std::vector<std::string> names = {"off"};
+        for (std::string_view n : enum_name_views<ShadowMethod>()) names.emplace_back(n);
+        return names;
+      }()));
   cmd->add_option_function<float>(
          "--layer-scale", [&o](float v) { o.layer_scale = v; },
          "Particle layer resolution as a fraction of the frame: 1, 0.5, 0.25, 0.125")

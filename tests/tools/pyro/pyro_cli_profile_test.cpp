@@ -113,7 +113,9 @@ TEST(PyroCliProfile, ProfileJsonHasEverySystemAndTheExplosionsParticles) {
                                           "lighting", "camera_orbit", "stereo_camera", "sorting", "mesh_render",
                                           "billboard_render", "composite",
                                           // scheduled in every scene, idle without fires
-                                          "flipbook_orient", "flipbook_render"};
+                                          "flipbook_orient", "flipbook_render",
+                                          // and idle without a "shadows" block
+                                          "shadow_map", "shadow_rays"};
   std::set<std::string> names;
   for (const json& s : j["systems"]) {
     names.insert(s["name"]);

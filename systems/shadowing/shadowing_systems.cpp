@@ -1,0 +1,182 @@
+#include "systems/shadowing/shadowing_systems.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+
+#include <glm/geometric.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "components/mesh_instance.h"
+#include "components/particle_light.h"
+#include "components/particle_set.h"
+#include "components/scene_lighting.h"
+#include "components/shadow_settings.h"
+#include "components/shadow_volume.h"
+#include "engine/math/shadow_ray_index.h"
+#include "systems/shadowing/opacity_shadow_map.h"
+
+namespace pyro {
+
+namespace {
+
+constexpr std::size_t kParticlesPerTask = 4096;
+
+// The world's lit particle sets in entity-index order.
+std::vector<std::pair<uint32_t, std::pair<const ParticlePool*, ParticleLight*>>> lit_sets(ecs::World& world) {
+  std::vector<std::pair<uint32_t, std::pair<const ParticlePool*, ParticleLight*>>> sets;
+  world.each<const ParticleSet, ParticleLight>([&](ecs::Entity e, const ParticleSet& s, ParticleLight& l) {
+    sets.push_back({e.index, {&s.pool, &l}});
+  });
+  std::sort(sets.begin(), sets.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  return sets;
+}
+
+bool sunlit(const SceneLighting& lighting) {
+  return lighting.directional_lights > 0 && glm::length(lighting.sun_direction) > 0.0f;
+}
+
+}  // namespace
+
+std::vector<ClampedGaussian> shadow_casters(ecs::World& world) {
+  std::vector<ClampedGaussian> gs;
+  for (const auto& [index, set] : lit_sets(world)) {
+    const ParticlePool& p = *set.first;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.density[i] > 0.0f)
+        gs.push_back(clamped_gaussian({p.px[i], p.py[i], p.pz[i]}, p.radius[i], p.density[i]));
+  }
+  return gs;
+}
+
+namespace {
+
+// Particle i's light from `depth(p)`, the optical depth toward the sun at p of every particle: at
+// its centre, and that of the others with its gradient (central differences one standard
+// deviation apart), its own closed form taken out.
+template <class Depth>
+void light_particle(const ParticlePool& p, std::size_t i, const SceneLighting& lighting,
+                    const glm::dvec3& toward_sun, Depth&& depth, ParticleLight& light) {
+  const glm::dvec3 c(p.px[i], p.py[i], p.pz[i]);
+  const ClampedGaussian self = clamped_gaussian(c, p.radius[i], std::max(p.density[i], 0.0f));
+  const auto others = [&](const glm::dvec3& x) {
+    return depth(x) - gaussian_optical_depth(self, x, toward_sun, 0.0, std::numeric_limits<double>::infinity());
+  };
+  const double total = depth(c);
+  const float t = float(std::exp(-total));
+  light.sun_transmittance[i] = t;
+  light.light[i] = lighting.sun_color * t + lighting.ambient;
+  glm::vec4 o(float(others(c)), 0.0f, 0.0f, 0.0f);
+  const double h = std::max(self.s, 1e-6);
+  for (int a = 0; a < 3; ++a) {
+    glm::dvec3 e(0.0);
+    e[a] = h;
+    o[a + 1] = float((others(c + e) - others(c - e)) / (2.0 * h));
+  }
+  light.others_depth[i] = o;
+}
+
+// Lights every particle from `depth` (see light_particle), set by set in entity-index order.
+template <class Depth>
+void write_particle_light(ecs::World& world, const SceneLighting& lighting, Depth&& depth) {
+  const glm::dvec3 toward_sun = -glm::normalize(glm::dvec3(lighting.sun_direction));
+  for (const auto& [index, set] : lit_sets(world)) {
+    const ParticlePool& p = *set.first;
+    ParticleLight& light = *set.second;
+    light.sun_transmittance.resize(p.size());
+    light.light.resize(p.size());
+    light.others_depth.resize(p.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), kParticlesPerTask),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i < r.end(); ++i)
+                          light_particle(p, i, lighting, toward_sun, depth, light);
+                      });
+  }
+}
+
+// Lit without shadows: every particle sees the whole sun.
+void write_unshadowed_light(ecs::World& world, const SceneLighting& lighting) {
+  for (const auto& [index, set] : lit_sets(world)) {
+    ParticleLight& light = *set.second;
+    const std::size_t n = set.first->size();
+    light.sun_transmittance.assign(n, 1.0f);
+    light.light.assign(n, lighting.sun_color + lighting.ambient);
+    light.others_depth.assign(n, glm::vec4(0.0f));
+  }
+}
+
+}  // namespace
+
+namespace {
+
+const SceneLighting& lighting_of(ecs::World& world) {
+  static const SceneLighting defaults;
+  const SceneLighting* lit = world.try_resource<const SceneLighting>();
+  return lit ? *lit : defaults;
+}
+
+void run_shadow_map(ecs::World& world) {
+  const ShadowSettings* settings = world.try_resource<const ShadowSettings>();
+  if (!settings) return;
+  const SceneLighting& lighting = lighting_of(world);
+  ShadowVolume& volume = world.resource<ShadowVolume>();
+  const bool particles_use_it = settings->method == ShadowMethod::shadow_map;
+  const bool receivers = world.size<MeshInstance>() > 0;
+  const bool wanted = sunlit(lighting) && settings->method != ShadowMethod::none && (particles_use_it || receivers);
+  if (wanted) {
+    build_opacity_shadow_map(shadow_casters(world), glm::dvec3(lighting.sun_direction),
+                             {settings->map_size, settings->map_slices}, volume);
+  } else if (!volume.empty()) {
+    const uint64_t version = volume.version + 1;
+    volume = ShadowVolume{};
+    volume.version = version;
+  }
+  if (settings->method == ShadowMethod::rays) return;
+  if (!particles_use_it || !wanted) {
+    write_unshadowed_light(world, lighting);
+    return;
+  }
+  write_particle_light(world, lighting,
+                       [&](const glm::dvec3& p) { return double(sample_optical_depth(volume, glm::vec3(p))); });
+}
+
+void run_shadow_rays(ecs::World& world) {
+  const ShadowSettings* settings = world.try_resource<const ShadowSettings>();
+  if (!settings || settings->method != ShadowMethod::rays) return;
+  const SceneLighting& lighting = lighting_of(world);
+  if (!sunlit(lighting)) {
+    write_unshadowed_light(world, lighting);
+    return;
+  }
+  const ShadowRayIndex index(shadow_casters(world), glm::dvec3(lighting.sun_direction));
+  write_particle_light(world, lighting, [&](const glm::dvec3& p) { return index.optical_depth_to_light(p); });
+}
+
+}  // namespace
+
+ecs::SystemDesc shadow_map_system() {
+  return {.name = "shadow_map",
+          .phase = ecs::Phase::light,
+          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, ParticleSet, MeshInstance>,
+                                    ecs::Writes<ShadowVolume, ParticleLight>>(),
+          .run = run_shadow_map,
+          .setup =
+              [](ecs::World& world) {
+                if (!world.has_resource<ShadowVolume>()) world.set_resource<ShadowVolume>();
+              },
+          .after = {"lighting"}};
+}
+
+ecs::SystemDesc shadow_ray_system() {
+  return {.name = "shadow_rays",
+          .phase = ecs::Phase::light,
+          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, ParticleSet>,
+                                    ecs::Writes<ParticleLight>>(),
+          .run = run_shadow_rays,
+          .after = {"shadow_map"}};
+}
+
+}  // namespace pyro

@@ -1,0 +1,25 @@
+#pragma once
+// The light phase's shadowing (docs/lighting.md): in a world with a ShadowSettings resource,
+// every particle set gets a ParticleLight (the light reaching each particle), and the opaque
+// pass a ShadowVolume, once per frame whatever the number of eyes. Two methods, each a system:
+//  - shadow_map: the opacity shadow map (opacity_shadow_map.h), built when the particles use it
+//    or opaque surfaces receive it; with ShadowMethod::shadow_map (or none) it also lights the
+//    particles, from the map at their centres (or with transmittance 1);
+//  - shadow_rays: with ShadowMethod::rays, the exact transmittance at each particle's centre
+//    (engine/math/shadow_ray_index.h).
+#include <vector>
+
+#include "engine/ecs/schedule.h"
+#include "engine/ecs/world.h"
+#include "engine/math/gaussian_line_integral.h"
+
+namespace pyro {
+
+// Every live particle of the world's particle sets with density > 0, in entity-index order: the
+// media that cast shadows.
+std::vector<ClampedGaussian> shadow_casters(ecs::World& world);
+
+ecs::SystemDesc shadow_map_system();
+ecs::SystemDesc shadow_ray_system();
+
+}  // namespace pyro

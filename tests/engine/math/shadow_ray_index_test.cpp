@@ -1,0 +1,65 @@
+// The shadow-ray index against the sum over every particle (the binning must lose none), and the
+// line integral against its closed forms: through a particle's centre it is the optical depth
+// -ln(1 - rho) that makes the splat's centre opacity rho; half of it from the centre outward.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "engine/core/rng.h"
+#include "engine/math/gaussian_line_integral.h"
+#include "engine/math/shadow_ray_index.h"
+
+namespace pyro {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+TEST(GaussianLineIntegral, ThroughTheCentreItIsTheSplatsOpticalDepth) {
+  const ClampedGaussian g = clamped_gaussian({1.0, 2.0, 3.0}, 0.6, 0.4);
+  const glm::dvec3 w = glm::normalize(glm::dvec3(0.0, 1.0, 0.0));
+  const double tau0 = -std::log(1.0 - 0.4);
+  EXPECT_NEAR(gaussian_optical_depth(g, {1.0, -5.0, 3.0}, w, 0.0, kInf), tau0, 1e-12);
+  // From the centre outward: half of it (the cube is symmetric about the centre).
+  EXPECT_NEAR(gaussian_optical_depth(g, {1.0, 2.0, 3.0}, w, 0.0, kInf), 0.5 * tau0, 1e-12);
+  // A ray missing the cube meets nothing.
+  EXPECT_EQ(gaussian_optical_depth(g, {1.0 + 0.61, -5.0, 3.0}, w, 0.0, kInf), 0.0);
+}
+
+std::vector<ClampedGaussian> random_particles(Rng& rng, int n) {
+  std::vector<ClampedGaussian> gs;
+  for (int i = 0; i < n; ++i)
+    gs.push_back(clamped_gaussian({rng.uniform(-3.0f, 3.0f), rng.uniform(0.0f, 2.0f), rng.uniform(-3.0f, 3.0f)},
+                                  rng.uniform(0.1f, 0.9f), rng.uniform(0.05f, 0.6f)));
+  return gs;
+}
+
+TEST(ShadowRayIndex, EqualsTheSumOverEveryParticle) {
+  Rng rng(77);
+  const std::vector<ClampedGaussian> gs = random_particles(rng, 400);
+  for (const glm::dvec3 travel : {glm::dvec3(-0.5, -1.0, -0.35), glm::dvec3(0.0, -1.0, 0.0),
+                                  glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.3, 0.2, -1.0)}) {
+    const ShadowRayIndex index(gs, travel);
+    const glm::dvec3 toward = -glm::normalize(travel);
+    double largest = 0.0;
+    for (int k = 0; k < 300; ++k) {
+      const glm::dvec3 p(rng.uniform(-4.0f, 4.0f), rng.uniform(-1.0f, 3.0f), rng.uniform(-4.0f, 4.0f));
+      double all = 0.0;
+      for (const ClampedGaussian& g : gs) all += gaussian_optical_depth(g, p, toward, 0.0, kInf);
+      EXPECT_NEAR(index.optical_depth_to_light(p), all, 1e-12 * (1.0 + all)) << k;
+      largest = std::max(largest, all);
+    }
+    EXPECT_GT(largest, 0.5);  // the points do lie in shadow
+  }
+}
+
+TEST(ShadowRayIndex, AnEmptyIndexCastsNoShadow) {
+  const ShadowRayIndex index({}, {0.0, -1.0, 0.0});
+  EXPECT_EQ(index.optical_depth_to_light({0.0, 0.0, 0.0}), 0.0);
+}
+
+}  // namespace
+}  // namespace pyro

@@ -1,0 +1,80 @@
+// The opacity shadow map against the exact shadow rays: at every texel centre it holds the exact
+// optical depth toward the light (its only error is interpolation between texels), outside the
+// media across the light it reads nothing, and past them the whole column.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "engine/core/rng.h"
+#include "engine/math/shadow_ray_index.h"
+#include "systems/shadowing/opacity_shadow_map.h"
+
+namespace pyro {
+namespace {
+
+std::vector<ClampedGaussian> cloud(int n) {
+  Rng rng(5);
+  std::vector<ClampedGaussian> gs;
+  for (int i = 0; i < n; ++i)
+    gs.push_back(clamped_gaussian({rng.uniform(-2.0f, 2.0f), rng.uniform(3.0f, 4.0f), rng.uniform(-2.0f, 2.0f)},
+                                  rng.uniform(0.2f, 0.6f), rng.uniform(0.1f, 0.5f)));
+  return gs;
+}
+
+glm::vec3 texel_centre(const ShadowVolume& map, int i, int j, int k) {
+  const glm::vec3 t((i + 0.5f) / map.size.x, (j + 0.5f) / map.size.y, (k + 0.5f) / map.size.z);
+  return glm::vec3(glm::inverse(map.world_to_texture) * glm::vec4(t, 1.0f));
+}
+
+TEST(OpacityShadowMap, HoldsTheExactDepthAtEveryTexelCentre) {
+  const std::vector<ClampedGaussian> gs = cloud(150);
+  const glm::dvec3 travel(-0.5, -1.0, -0.35);
+  ShadowVolume map;
+  build_opacity_shadow_map(gs, travel, {40, 24}, map);
+  ASSERT_FALSE(map.empty());
+  EXPECT_EQ(map.size.z, 24);
+  const ShadowRayIndex exact(gs, travel);
+  double largest = 0.0;
+  for (int k = 0; k < map.size.z; k += 3)
+    for (int j = 0; j < map.size.y; j += 2)
+      for (int i = 0; i < map.size.x; i += 2) {
+        const glm::vec3 p = texel_centre(map, i, j, k);
+        const double want = exact.optical_depth_to_light(glm::dvec3(p));
+        const float stored = map.optical_depth[(size_t(k) * map.size.y + j) * map.size.x + i];
+        ASSERT_NEAR(stored, want, 2e-5 * (1.0 + want)) << i << " " << j << " " << k;
+        EXPECT_NEAR(sample_optical_depth(map, p), stored, 2e-5 * (1.0 + want));
+        largest = std::max(largest, want);
+      }
+  EXPECT_GT(largest, 1.0);
+}
+
+TEST(OpacityShadowMap, ReadsNothingBesideTheMediaAndTheWholeColumnBeyond) {
+  const std::vector<ClampedGaussian> gs = cloud(150);
+  const glm::dvec3 down(0.0, -1.0, 0.0);
+  ShadowVolume map;
+  build_opacity_shadow_map(gs, down, {64, 32}, map);
+  const ShadowRayIndex exact(gs, down);
+  EXPECT_EQ(sample_optical_depth(map, {9.0f, 0.0f, 0.0f}), 0.0f);   // beside the media
+  EXPECT_EQ(sample_optical_depth(map, {0.5f, 20.0f, 0.3f}), 0.0f);  // above them
+  // On the ground: the whole column, at a texel column's centre exactly.
+  const glm::vec3 below = texel_centre(map, 30, 30, map.size.z - 1);
+  const glm::vec3 ground(below.x, -5.0f, below.z);
+  EXPECT_NEAR(sample_optical_depth(map, ground), exact.optical_depth_to_light(glm::dvec3(ground)), 1e-4);
+}
+
+TEST(OpacityShadowMap, NoParticlesMakeAnEmptyMapAndANewVersion) {
+  ShadowVolume map;
+  build_opacity_shadow_map(cloud(10), {0.0, -1.0, 0.0}, {16, 8}, map);
+  const uint64_t before = map.version;
+  build_opacity_shadow_map({}, {0.0, -1.0, 0.0}, {16, 8}, map);
+  EXPECT_TRUE(map.empty());
+  EXPECT_GT(map.version, before);
+  EXPECT_EQ(sample_optical_depth(map, {0.0f, 0.0f, 0.0f}), 0.0f);
+}
+
+}  // namespace
+}  // namespace pyro
