@@ -18,6 +18,7 @@
 #include <glm/vec4.hpp>
 
 #include "engine/math/view_frustum.h"
+#include "components/particle_light.h"
 #include "engine/particles/particle_pool.h"
 
 namespace pyro {
@@ -58,7 +59,17 @@ struct EyeDrawLists {
   // Every ParticleSet's pool in entity-index order, as the sorting system saw them: valid until
   // a pool changes (the next frame's spawn and simulate phases).
   std::vector<const ParticlePool*> pools;
+  // Beside each pool, the light phase's light for its particles (components/particle_light.h), or
+  // null: unlit, the pool's colours as they are.
+  std::vector<const ParticleLight*> lights;
 };
+
+// Particle i's colour: its albedo (the pool's colour) times the light reaching it when `light`
+// covers the pool, else its colour as given.
+inline glm::vec3 particle_color(const ParticlePool& p, const ParticleLight* light, size_t i) {
+  const glm::vec3 albedo(p.r[i], p.g[i], p.b[i]);
+  return light && light->covers(p.size()) ? albedo * light->light[i] : albedo;
+}
 
 // Eye `eye`'s list in the gathered form (a copy; an indexed list is gathered from the pools).
 inline DrawList gathered_draw_list(const EyeDrawLists& lists, size_t eye) {
@@ -72,7 +83,8 @@ inline DrawList gathered_draw_list(const EyeDrawLists& lists, size_t eye) {
     const ParticlePool& p = *lists.pools.at(j);
     const size_t i = k - (j == 0 ? 0 : ends[j - 1]);
     out.center_radius.push_back({p.px.at(i), p.py[i], p.pz[i], p.radius[i]});
-    out.color_density.push_back({p.r[i], p.g[i], p.b[i], p.density[i]});
+    const ParticleLight* light = j < lists.lights.size() ? lists.lights[j] : nullptr;
+    out.color_density.push_back(glm::vec4(particle_color(p, light, i), p.density[i]));
   }
   return out;
 }

@@ -2,13 +2,54 @@
 // Opacity = density x footprint (Johnson & McAllister eqs. 5-7 with a black kernel texture):
 // the kernel texture holds the scaled footprint table, the colour is the particle's own.
 // Output is premultiplied; blending is (ONE, ONE_MINUS_SRC_ALPHA), back to front.
+//
+// LIT 1: the colour is the albedo times the light reaching the fragment's point p = centre +
+// offset (where the pixel's ray passes closest to the centre):
+//   L = sun exp(-(tau_others(c) + grad . offset + tau_self(p))) + ambient,
+//   tau_self(p) = tau0 exp(-d_perp^2 / (2 s^2)) tail(d_par / s),
+// tau0 = -ln(1 - rho) the optical depth through the centre, d_par and d_perp the offset along and
+// across the direction toward the sun, tail the fraction of a line's depth beyond d_par / s
+// (engine/math/gaussian_line_integral.h, gaussian_tail_fraction, read from a table).
+#ifndef LIT
+#define LIT 0
+#endif
 in vec2 v_texcoord;
 flat in vec4 v_premultiplied;
+#if LIT
+flat in vec4 v_albedo_density;
+flat in vec4 v_others_depth;
+flat in float v_sigma;
+in vec3 v_offset;
+uniform vec3 u_toward_sun;  // unit
+uniform vec3 u_sun_color;
+uniform vec3 u_ambient;
+uniform float u_self_shadow;  // 1: the particle shadows itself; 0: lit without shadows
+uniform vec2 u_tail_bias_scale;  // x in [-3, 3] -> the tail table's texture coordinate
+layout(binding = 1) uniform sampler1D u_tail;
+#endif
 
 layout(binding = 0) uniform sampler2D u_kernel;
 
 layout(location = 0) out vec4 o_color;
 
 void main() {
-  o_color = v_premultiplied * textureLod(u_kernel, v_texcoord, 0.0).r;
+  float footprint = textureLod(u_kernel, v_texcoord, 0.0).r;
+#if LIT
+  float rho = v_albedo_density.a;
+  float tau0 = -log(max(1.0 - rho, 1e-12));
+  float d_par = dot(v_offset, u_toward_sun);
+  float d_perp2 = max(dot(v_offset, v_offset) - d_par * d_par, 0.0);
+  float x = clamp(d_par / v_sigma, -3.0, 3.0);
+  float tail = textureLod(u_tail, u_tail_bias_scale.x + (x + 3.0) / 6.0 * u_tail_bias_scale.y, 0.0).r;
+  float tau_self = tau0 * exp(-d_perp2 / (2.0 * v_sigma * v_sigma)) * tail;
+  float tau = u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, v_offset) + tau_self);
+  vec3 light = u_sun_color * exp(-max(tau, 0.0)) + u_ambient;
+  // The opacity of the Gaussian's column through this point, 1 - exp(-tau0 f), f the footprint
+  // scaled to 1 at the centre: rho at the centre as in the unlit splats, and the exact opacity
+  // elsewhere (the unlit splats' rho f follows Johnson & McAllister's eq. 5, thinner off-centre).
+  float alpha = 1.0 - exp(-tau0 * footprint);
+  o_color = vec4(v_albedo_density.rgb * light * alpha, alpha);
+#else
+  o_color = v_premultiplied * footprint;
+#endif
 }

@@ -13,7 +13,21 @@
 // linear rgb and density rho. The order's entries are u_order_stride_offset.x uints apart, the
 // index at .y within one: (1, 0) for an order made on the CPU, (4, 2) for the GPU's sorted
 // elements (systems/gpu_sorting/gpu_depth_sort.h).
+//
+// LIT 1 (lit media, docs/lighting.md): the colour is the particle's albedo, and binding 2 holds
+// per particle the optical depth toward the sun of the other particles at its centre and its
+// gradient (components/particle_light.h); the fragment shader adds the particle's own.
 layout(std430, binding = 0) readonly buffer ParticleRecords { vec4 records[]; };
+#ifndef LIT
+#define LIT 0
+#endif
+#if LIT
+layout(std430, binding = 2) readonly buffer ParticleShadow { vec4 others_depth[]; };
+flat out vec4 v_albedo_density;
+flat out vec4 v_others_depth;
+flat out float v_sigma;   // the particle's standard deviation: radius / 3
+out vec3 v_offset;        // the fragment's place on the billboard, from the centre (world units)
+#endif
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
 uniform uvec2 u_order_stride_offset;
 
@@ -53,5 +67,11 @@ void main() {
   vec3 world = center + (right * corner.x + up * corner.y) * a_center_radius.w;
   v_texcoord = u_texcoord_bias_scale.x + (corner * 0.5 + 0.5) * u_texcoord_bias_scale.y;
   v_premultiplied = vec4(a_color_density.rgb * a_color_density.a, a_color_density.a);
+#if LIT
+  v_albedo_density = a_color_density;
+  v_others_depth = others_depth[particle];
+  v_sigma = a_center_radius.w / 3.0;
+  v_offset = world - center;
+#endif
   gl_Position = u_view_projection * vec4(world, 1.0);
 }

@@ -1,5 +1,7 @@
 #version 450 core
-// Lambertian surface under one directional light plus ambient light, in linear RGB.
+// Lambertian surface under one directional light plus ambient light, in linear RGB. With
+// u_shadowed, the light is dimmed by the particle media's transmittance exp(-tau), tau read from
+// the light phase's opacity shadow map (systems/shadowing/opacity_shadow_map.h), trilinearly.
 // SRGB_ENCODE 1: the target is sRGB and GL's conversion is off (systems/mesh_render/
 // mesh_renderer.cpp): the shader writes the encoded value.
 #ifndef SRGB_ENCODE
@@ -9,11 +11,15 @@
 #include "srgb_encode.glsl"
 #endif
 in vec3 v_normal;
+in vec3 v_world;
 
 uniform vec3 u_albedo;
 uniform vec3 u_light_direction;  // unit, the direction light travels
 uniform vec3 u_light_color;
 uniform vec3 u_ambient;
+uniform int u_shadowed;
+uniform sampler3D u_shadow_map;    // optical depth toward the light
+uniform mat4 u_world_to_shadow;    // world position -> the map's texture coordinates
 
 layout(location = 0) out vec4 o_color;
 
@@ -21,6 +27,8 @@ void main() {
   vec3 n = normalize(v_normal);
   if (!gl_FrontFacing) n = -n;
   float lambert = max(dot(n, -u_light_direction), 0.0);
+  if (u_shadowed != 0)
+    lambert *= exp(-texture(u_shadow_map, (u_world_to_shadow * vec4(v_world, 1.0)).xyz).r);
   vec3 c = u_albedo * (u_ambient + u_light_color * lambert);
 #if SRGB_ENCODE
   c = srgb_encode(c);

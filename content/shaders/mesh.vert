@@ -8,8 +8,10 @@ uniform vec3 u_offset;
 uniform float u_scale;
 
 out vec3 v_normal;
+out vec3 v_world;
 
 void main() {
   v_normal = a_normal;
-  gl_Position = u_view_projection * vec4(a_position * u_scale + u_offset, 1.0);
+  v_world = a_position * u_scale + u_offset;
+  gl_Position = u_view_projection * vec4(v_world, 1.0);
 }

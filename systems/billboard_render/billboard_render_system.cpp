@@ -11,6 +11,9 @@
 #include "components/sort_device_choice.h"
 #include "components/view.h"
 #include "components/scene_lighting.h"
+#include "components/shadow_settings.h"
+#include <glm/geometric.hpp>
+#include <optional>
 #include "engine/ecs/world.h"
 #include "engine/gpu/gpu_pass_timer.h"
 #include "systems/billboard_render/billboard_renderer.h"
@@ -24,15 +27,16 @@ namespace pyro {
 
 void draw_particles_for_view(BillboardRenderer& renderer, const EyeDrawLists& lists, size_t eye,
                              const CameraFrame& frame, EyeTargets& targets,
-                             BillboardAlignment alignment, BillboardShading shading) {
+                             BillboardAlignment alignment, BillboardShading shading,
+                             const SplatLighting* lighting) {
   const gpu::GpuPassScope pass("particle layer", true);  // profiling hook (no-op by default)
   const DrawList& list = lists.eyes[eye];
   if (!targets.layer) {
-    renderer.draw(list, lists.pools, frame, *targets.scene, alignment, shading);
+    renderer.draw(list, lists.pools, frame, *targets.scene, alignment, shading, lighting);
     return;
   }
   prepare_layer(targets);
-  renderer.draw(list, lists.pools, frame, *targets.layer, alignment, shading);
+  renderer.draw(list, lists.pools, frame, *targets.layer, alignment, shading, lighting);
 }
 
 void prepare_layer(EyeTargets& targets) {
@@ -133,6 +137,21 @@ void measure_sort_devices(ecs::World& world, BillboardRenderer& renderer, const 
   choice.particles = particles;
 }
 
+// Lit media (a ShadowSettings resource): the splats' lighting from the light phase.
+std::optional<SplatLighting> splat_lighting(ecs::World& world, const EyeDrawLists& lists) {
+  const ShadowSettings* shadows = world.try_resource<const ShadowSettings>();
+  if (!shadows) return std::nullopt;
+  const SceneLighting* lit = world.try_resource<const SceneLighting>();
+  const SceneLighting lighting = lit ? *lit : SceneLighting{};
+  SplatLighting s;
+  s.lights = lists.lights;
+  if (glm::length(lighting.sun_direction) > 0.0f) s.toward_sun = -glm::normalize(lighting.sun_direction);
+  s.sun_color = lighting.directional_lights > 0 ? lighting.sun_color : glm::vec3(0.0f);
+  s.ambient = lighting.ambient;
+  s.self_shadow = shadows->method != ShadowMethod::none;
+  return s;
+}
+
 // Returns whether the views' layers were prepared (cleared, the scene's depth copied down).
 bool draw_particle_lists(ecs::World& world) {
   const EyeDrawLists* lists = world.try_resource<const EyeDrawLists>();
@@ -145,9 +164,10 @@ bool draw_particle_lists(ecs::World& world) {
     BillboardRenderer& renderer = world.resource<BillboardRenderer>();
     measure_sort_devices(world, renderer, *lists, settings);
     renderer.reset_cost();
+    const std::optional<SplatLighting> lighting = splat_lighting(world, *lists);
     for (size_t v = 0; v < views; ++v)
-      draw_particles_for_view(renderer, *lists, v, view.eyes[v], frame.eyes[v],
-                              settings.alignment, BillboardShading::kernel);
+      draw_particles_for_view(renderer, *lists, v, view.eyes[v], frame.eyes[v], settings.alignment,
+                              BillboardShading::kernel, lighting ? &*lighting : nullptr);
     return true;
   }
   if (settings.media_layers()) {
@@ -179,7 +199,7 @@ ecs::SystemDesc billboard_render_system() {
           .phase = ecs::Phase::render,
           .access = ecs::Access::of<
               ecs::Reads<EyeDrawLists, View, RenderSettings, SceneLighting, FrameClock,
-                         ExplosionShading, AnisotropicCloud, SortScratch>,
+                         ExplosionShading, AnisotropicCloud, SortScratch, ShadowSettings>,
               ecs::Writes<GpuFrame, SortDeviceChoice>, Renderers>(),
           .run = draw_billboards,
           .setup = make_particle_renderer,

@@ -15,10 +15,11 @@
 namespace pyro {
 
 // The Gaussian splats of view `eye` (lists.eyes[eye], reading lists.pools) into its layer or
-// scene target.
+// scene target; lit by `lighting` when given.
 void draw_particles_for_view(BillboardRenderer& renderer, const EyeDrawLists& lists, size_t eye,
                              const CameraFrame& frame, EyeTargets& targets,
-                             BillboardAlignment alignment, BillboardShading shading);
+                             BillboardAlignment alignment, BillboardShading shading,
+                             const SplatLighting* lighting = nullptr);
 
 // Readies a view's reduced-resolution layer: transparent, with the scene's depth point-sampled
 // down so that opaque geometry still hides depth-tested particles.

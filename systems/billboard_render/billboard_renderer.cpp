@@ -10,15 +10,21 @@
 #include <tbb/parallel_for.h>
 
 #include "engine/gpu/shader_program.h"
+#include "engine/math/gaussian_line_integral.h"
 #include "systems/billboard_render/particle_blending.h"
 #include "systems/billboard_render/parallel_copy.h"
 
 namespace pyro {
 
+namespace {
+constexpr int kTailNodes = 256;  // the lit program's tail table
+}  // namespace
+
 BillboardRenderer::BillboardRenderer(const FootprintTable& table)
     : table_(table),
       kernel_program_(gpu::load_program("billboard.vert", "billboard.frag")),
-      trivial_program_(gpu::load_program("billboard.vert", "billboard_trivial.frag")) {
+      trivial_program_(gpu::load_program("billboard.vert", "billboard_trivial.frag")),
+      lit_program_(gpu::load_program("billboard.vert", "billboard.frag", {"LIT 1"})) {
   // The kernel texture: one texel per footprint-table node (eq. 2 maps pixels to nodes),
   // sampled bilinearly between nodes and clamped at the billboard's edge.
   kernel_texture_ = gpu::make_texture(GL_TEXTURE_2D);
@@ -29,6 +35,15 @@ BillboardRenderer::BillboardRenderer(const FootprintTable& table)
   glTextureParameteri(kernel_texture_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(kernel_texture_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(kernel_texture_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  // The lit program's self-shadow: the tail fraction at kTailNodes points over [-3, 3].
+  std::vector<float> tail(kTailNodes);
+  for (int k = 0; k < kTailNodes; ++k) tail[size_t(k)] = float(gaussian_tail_fraction(-3.0 + 6.0 * k / (kTailNodes - 1)));
+  tail_texture_ = gpu::make_texture(GL_TEXTURE_1D);
+  glTextureStorage1D(tail_texture_.get(), 1, GL_R32F, kTailNodes);
+  glTextureSubImage1D(tail_texture_.get(), 0, 0, kTailNodes, GL_RED, GL_FLOAT, tail.data());
+  glTextureParameteri(tail_texture_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(tail_texture_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(tail_texture_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
 }
 
 namespace {
@@ -65,6 +80,21 @@ void pack_records(const std::vector<const ParticlePool*>& pools, glm::vec4* reco
   }
 }
 
+// With lit media: each particle's others' depth (components/particle_light.h), pool after pool;
+// zero for a pool without light.
+void pack_shadow(const std::vector<const ParticlePool*>& pools, const SplatLighting& lighting,
+                 glm::vec4* out) {
+  for (std::size_t set = 0; set < pools.size(); ++set) {
+    const ParticlePool& p = *pools[set];
+    const ParticleLight* light = set < lighting.lights.size() ? lighting.lights[set] : nullptr;
+    if (light && light->others_depth.size() == p.size())
+      parallel_copy(out, light->others_depth.data(), p.size() * sizeof(glm::vec4));
+    else
+      std::fill(out, out + p.size(), glm::vec4(0.0f));
+    out += p.size();
+  }
+}
+
 // A gathered list's records, in its order (the order written is then 0 .. n-1).
 void pack_records(const DrawList& list, glm::vec4* records, uint32_t* order) {
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, list.size(), kParticlesPerTask),
@@ -93,13 +123,17 @@ std::size_t particles_in(const std::vector<const ParticlePool*>& pools) {
 
 }  // namespace
 
-void BillboardRenderer::upload(const DrawList& list, const std::vector<const ParticlePool*>& pools) {
+void BillboardRenderer::upload(const DrawList& list, const std::vector<const ParticlePool*>& pools,
+                               const SplatLighting* lighting) {
   const bool from_pools = list.indexed() || list.on_gpu;
   const std::size_t particles = from_pools ? particles_in(pools) : list.size();
   const std::size_t record_bytes = aligned(2 * particles * sizeof(glm::vec4));
   // The order, or for the GPU to make it, the particles' ids.
   const std::size_t order_bytes = (list.on_gpu ? particles : list.size()) * sizeof(uint32_t);
-  unsigned char* slot = ring_.next(record_bytes + order_bytes);
+  // Lit pools: their others' depths after the order (a gathered list is never lit).
+  const bool lit = lighting && from_pools;
+  const std::size_t shadow_bytes = lit ? particles * sizeof(glm::vec4) : 0;
+  unsigned char* slot = ring_.next(record_bytes + (lit ? aligned(order_bytes) : order_bytes) + shadow_bytes);
   const auto start = std::chrono::steady_clock::now();
   auto* records = reinterpret_cast<glm::vec4*>(slot);
   auto* order = reinterpret_cast<uint32_t*>(slot + record_bytes);
@@ -112,14 +146,32 @@ void BillboardRenderer::upload(const DrawList& list, const std::vector<const Par
   } else {
     pack_records(list, records, order);
   }
+  const std::size_t shadow_offset = record_bytes + aligned(order_bytes);
+  if (lit) pack_shadow(pools, *lighting, reinterpret_cast<glm::vec4*>(slot + shadow_offset));
   copy_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  bytes_ += 2 * particles * sizeof(glm::vec4) + order_bytes;
+  bytes_ += 2 * particles * sizeof(glm::vec4) + order_bytes + shadow_bytes;
   const auto offset = static_cast<GLintptr>(ring_.offset());
   uploaded_records_ = {ring_.buffer(), offset, static_cast<GLsizeiptr>(std::max<std::size_t>(record_bytes, 32))};
   uploaded_order_ = {ring_.buffer(), offset + static_cast<GLintptr>(record_bytes),
                      static_cast<GLsizeiptr>(std::max<std::size_t>(order_bytes, 4))};
   uploaded_records_.bind(GL_SHADER_STORAGE_BUFFER, 0);
   uploaded_order_.bind(GL_SHADER_STORAGE_BUFFER, 1);
+  if (!lit) return;
+  uploaded_shadow_ = {ring_.buffer(), offset + static_cast<GLintptr>(shadow_offset),
+                      static_cast<GLsizeiptr>(std::max<std::size_t>(shadow_bytes, 16))};
+  uploaded_shadow_.bind(GL_SHADER_STORAGE_BUFFER, 2);
+}
+
+void BillboardRenderer::set_lighting_uniforms(const SplatLighting& lighting) const {
+  const gpu::Program& program = lit_program_;
+  glUniform3fv(gpu::uniform_location(program, "u_toward_sun"), 1, glm::value_ptr(lighting.toward_sun));
+  glUniform3fv(gpu::uniform_location(program, "u_sun_color"), 1, glm::value_ptr(lighting.sun_color));
+  glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
+  glUniform1f(gpu::uniform_location(program, "u_self_shadow"), lighting.self_shadow ? 1.0f : 0.0f);
+  // Texel centres: node k at (k + 0.5) / n.
+  glUniform2f(gpu::uniform_location(program, "u_tail_bias_scale"), 0.5f / kTailNodes,
+              float(kTailNodes - 1) / kTailNodes);
+  glBindTextureUnit(1, tail_texture_.get());
 }
 
 void BillboardRenderer::order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools) {
@@ -151,18 +203,21 @@ uint32_t BillboardRenderer::gpu_kept() const { return gpu_sort_ ? gpu_sort_->rea
 
 void BillboardRenderer::draw(const DrawList& list, const std::vector<const ParticlePool*>& pools,
                              const CameraFrame& frame, const gpu::RenderTarget& target,
-                             BillboardAlignment alignment, BillboardShading shading) {
+                             BillboardAlignment alignment, BillboardShading shading,
+                             const SplatLighting* lighting) {
   if ((list.on_gpu ? particles_in(pools) : list.size()) == 0) return;
-  upload(list, pools);
+  const bool lit = lighting && shading == BillboardShading::kernel && (list.indexed() || list.on_gpu);
+  upload(list, pools, lit ? lighting : nullptr);
   if (list.on_gpu) {
     order_on_gpu(list, pools);
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, gpu_sort_->order_buffer(), 0, gpu_sort_->order_bytes());
   }
   const gpu::Program& program =
-      shading == BillboardShading::kernel ? kernel_program_ : trivial_program_;
+      lit ? lit_program_ : shading == BillboardShading::kernel ? kernel_program_ : trivial_program_;
   target.bind();
   use_particle_blending();
   glUseProgram(program.get());
+  if (lit) set_lighting_uniforms(*lighting);
   glUniformMatrix4fv(gpu::uniform_location(program, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(frame.view_projection));
   glUniform3fv(gpu::uniform_location(program, "u_right"), 1, glm::value_ptr(frame.right));

@@ -20,6 +20,15 @@ namespace pyro {
 
 enum class BillboardShading { kernel, trivial };
 
+// Lit media (docs/lighting.md): beside each pool the light phase's light for its particles
+// (components/particle_light.h; null: that pool's particles see the whole sun), and the sun.
+struct SplatLighting {
+  std::vector<const ParticleLight*> lights;
+  glm::vec3 toward_sun{0.0f, 1.0f, 0.0f};  // unit
+  glm::vec3 sun_color{0.0f}, ambient{0.0f};
+  bool self_shadow = true;  // false: lit without shadows
+};
+
 // CPU time of the particle pass since the last reset_cost(): packing the particles and copying
 // the order into the GPU's memory and the wait for a free slot (engine/gpu/mapped_ring.h), and the time inside
 // the draw calls (on llvmpipe the driver runs the vertex stage there, on the calling thread).
@@ -36,11 +45,14 @@ class BillboardRenderer {
   // ring and blends the billboards over `target` (depth tested, not written), the vertex shader
   // reading each instance's record through the order (vertex pulling). An indexed
   // list (components/draw_list.h) points into `pools`; a gathered one is drawn as it is; one
-  // left to the GPU is ordered there first (systems/gpu_sorting) and drawn indirectly.
+  // left to the GPU is ordered there first (systems/gpu_sorting) and drawn indirectly. With
+  // `lighting` the pools' colours are albedos, lit per fragment (billboard.frag, LIT); without,
+  // the colours as given.
   void draw(const DrawList& list, const std::vector<const ParticlePool*>& pools,
             const CameraFrame& frame, const gpu::RenderTarget& target,
             BillboardAlignment alignment = BillboardAlignment::viewplane,
-            BillboardShading shading = BillboardShading::kernel);
+            BillboardShading shading = BillboardShading::kernel,
+            const SplatLighting* lighting = nullptr);
 
   // The GPU's order of `list` (its gpu_request) timed to completion, after a warm-up run and
   // with the GPU idle before: what SortDevice::automatic weighs against the CPU's order. Draws
@@ -59,18 +71,23 @@ class BillboardRenderer {
 
  private:
   FootprintTable table_;
-  gpu::Program kernel_program_, trivial_program_;
+  gpu::Program kernel_program_, trivial_program_, lit_program_;
   gpu::Texture kernel_texture_;
+  gpu::Texture tail_texture_;  // gaussian_tail_fraction over [-3, 3], for the lit program
   // Packs the particles (the pools of an indexed list, or a gathered list's arrays) as two vec4s
   // each and the list's order straight into the next slot of ring_, and binds them (SSBO
   // bindings 0 and 1).
   // A list the GPU orders gets the particles' ids in place of the order.
-  void upload(const DrawList& list, const std::vector<const ParticlePool*>& pools);
+  // With `lighting`, also each particle's others' depth (binding 2).
+  void upload(const DrawList& list, const std::vector<const ParticlePool*>& pools,
+              const SplatLighting* lighting = nullptr);
+  // The lit program's uniforms and its tail table (texture unit 1).
+  void set_lighting_uniforms(const SplatLighting& lighting) const;
   // The last upload's particles ordered by gpu_sort_ (made on first use).
   void order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools);
 
   // Where the last upload put the records, and the order (or the ids).
-  gpu::BufferRange uploaded_records_, uploaded_order_;
+  gpu::BufferRange uploaded_records_, uploaded_order_, uploaded_shadow_;
   std::unique_ptr<GpuDepthSort> gpu_sort_;
 
   gpu::MappedRing ring_;

@@ -4,6 +4,7 @@
 #include "components/mesh_instance.h"
 #include "components/render_settings.h"
 #include "components/scene_lighting.h"
+#include "components/shadow_volume.h"
 #include "components/view.h"
 #include "engine/ecs/world.h"
 #include "systems/mesh_render/mesh_renderer.h"
@@ -14,7 +15,7 @@ ecs::SystemDesc mesh_render_system() {
   return {
       .name = "mesh_render",
       .phase = ecs::Phase::render,
-      .access = ecs::Access::of<ecs::Reads<MeshInstance, View, RenderSettings, SceneLighting>,
+      .access = ecs::Access::of<ecs::Reads<MeshInstance, View, RenderSettings, SceneLighting, ShadowVolume>,
                                 ecs::Writes<GpuFrame, MeshRenderer>>(),
       .run =
           [](ecs::World& world) {
@@ -25,11 +26,12 @@ ecs::SystemDesc mesh_render_system() {
             // The light phase's gathering; a world run without it is lit by the default light.
             const SceneLighting* lit = world.try_resource<const SceneLighting>();
             const SceneLighting lighting = lit ? *lit : SceneLighting{};
+            const ShadowVolume* shadows = world.try_resource<const ShadowVolume>();
             MeshRenderer& renderer = world.resource<MeshRenderer>();
             GpuFrame& frame = world.resource<GpuFrame>();
             for (size_t v = 0; v < view.eyes.size() && v < frame.eyes.size(); ++v) {
               const int before = renderer.meshes_drawn() + renderer.images_restored();
-              renderer.draw(instances, view.eyes[v], settings, lighting, *frame.eyes[v].scene);
+              renderer.draw(instances, view.eyes[v], settings, lighting, *frame.eyes[v].scene, shadows);
               if (renderer.meshes_drawn() + renderer.images_restored() != before)
                 ++frame.eyes[v].opaque_version;
             }

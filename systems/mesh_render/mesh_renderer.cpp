@@ -54,7 +54,7 @@ namespace {
 // Everything the opaque image depends on, as numbers.
 std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                                const RenderSettings& settings, const SceneLighting& lighting,
-                               const gpu::RenderTarget& target) {
+                               const gpu::RenderTarget& target, const ShadowVolume* shadows) {
   std::vector<float> k;
   auto put = [&](const float* v, size_t n) { k.insert(k.end(), v, v + n); };
   put(glm::value_ptr(frame.view_projection), 16);
@@ -66,6 +66,12 @@ std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const
   k.push_back(static_cast<float>(target.height()));
   k.push_back(static_cast<float>(target.format()));
   k.push_back(glIsEnabled(GL_FRAMEBUFFER_SRGB) ? 1.0f : 0.0f);  // how GL encodes the clear
+  const bool shadowed = shadows && !shadows->empty();
+  k.push_back(shadowed ? 1.0f : 0.0f);
+  if (shadowed) {  // the version, exactly, as two halves
+    k.push_back(static_cast<float>(shadows->version & 0xFFFFFFu));
+    k.push_back(static_cast<float>((shadows->version >> 24) & 0xFFFFFFu));
+  }
   for (const MeshInstance& m : instances) {
     k.push_back(static_cast<float>(m.kind));
     put(glm::value_ptr(m.position), 3);
@@ -84,8 +90,8 @@ void copy_image(GLuint from, GLuint to, const gpu::RenderTarget& target) {
 
 void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                         const RenderSettings& settings, const SceneLighting& lighting,
-                        const gpu::RenderTarget& target) {
-  std::vector<float> inputs = draw_inputs(instances, frame, settings, lighting, target);
+                        const gpu::RenderTarget& target, const ShadowVolume* shadows) {
+  std::vector<float> inputs = draw_inputs(instances, frame, settings, lighting, target, shadows);
   Drawn& last = drawn_[target.serial()];
   if (last.color && last.inputs == inputs) {
     if (target.binds() != last.binds) {
@@ -97,7 +103,7 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
     last.binds = target.binds();
     return;
   }
-  draw_meshes(instances, frame, settings, lighting, target);
+  draw_meshes(instances, frame, settings, lighting, target, shadows);
   ++meshes_drawn_;
   const glm::ivec3 shape(target.width(), target.height(), static_cast<int>(target.format()));
   if (!last.color || last.shape != shape) {
@@ -131,7 +137,8 @@ void MeshRenderer::leave_state(bool meshes, const RenderSettings& settings,
 
 void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
                                const CameraFrame& frame, const RenderSettings& settings,
-                               const SceneLighting& lighting, const gpu::RenderTarget& target) {
+                               const SceneLighting& lighting, const gpu::RenderTarget& target,
+                               const ShadowVolume* shadows) {
   target.bind();
   glClearColor(settings.background.x, settings.background.y, settings.background.z, 1.0f);
   glClearDepth(1.0);
@@ -155,6 +162,7 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
   glUniform3fv(gpu::uniform_location(program, "u_light_direction"), 1, glm::value_ptr(light));
   glUniform3fv(gpu::uniform_location(program, "u_light_color"), 1, glm::value_ptr(lighting.sun_color));
   glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
+  bind_shadows(program, shadows);
   const GLint offset = gpu::uniform_location(program, "u_offset");
   const GLint scale = gpu::uniform_location(program, "u_scale");
   const GLint albedo = gpu::uniform_location(program, "u_albedo");
@@ -176,6 +184,30 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
   glFrontFace(GL_CCW);
   glBindVertexArray(0);
   if (srgb_writes) glEnable(GL_FRAMEBUFFER_SRGB);
+}
+
+void MeshRenderer::bind_shadows(const gpu::Program& program, const ShadowVolume* shadows) {
+  const bool shadowed = shadows && !shadows->empty();
+  glUniform1i(gpu::uniform_location(program, "u_shadowed"), shadowed ? 1 : 0);
+  if (!shadowed) return;
+  if (shadows->version != shadow_version_) {
+    if (!shadow_texture_ || shadow_size_ != shadows->size) {
+      shadow_texture_ = gpu::make_texture(GL_TEXTURE_3D);
+      glTextureStorage3D(shadow_texture_.get(), 1, GL_R32F, shadows->size.x, shadows->size.y, shadows->size.z);
+      glTextureParameteri(shadow_texture_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      glTextureParameteri(shadow_texture_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+        glTextureParameteri(shadow_texture_.get(), wrap, GL_CLAMP_TO_EDGE);
+      shadow_size_ = shadows->size;
+    }
+    glTextureSubImage3D(shadow_texture_.get(), 0, 0, 0, 0, shadows->size.x, shadows->size.y,
+                        shadows->size.z, GL_RED, GL_FLOAT, shadows->optical_depth.data());
+    shadow_version_ = shadows->version;
+  }
+  glBindTextureUnit(1, shadow_texture_.get());
+  glUniform1i(gpu::uniform_location(program, "u_shadow_map"), 1);
+  glUniformMatrix4fv(gpu::uniform_location(program, "u_world_to_shadow"), 1, GL_FALSE,
+                     glm::value_ptr(shadows->world_to_texture));
 }
 
 }  // namespace pyro

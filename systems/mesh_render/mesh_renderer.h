@@ -8,6 +8,7 @@
 #include "components/mesh_instance.h"
 #include "components/render_settings.h"
 #include "components/scene_lighting.h"
+#include "components/shadow_volume.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
@@ -23,10 +24,11 @@ class MeshRenderer {
   // the sRGB state: everything the image depends on), the target is left as it is if nothing was
   // drawn into it since (RenderTarget::binds(): particles in layers), else that image's colour
   // and depth are copied back (particles blended into it): the same bytes for a fraction of the
-  // cost. The opaque scene of a still camera is drawn once.
+  // cost. The opaque scene of a still camera is drawn once. `shadows` (may be null or empty: no
+  // shadows): the particle media's optical depth toward the sun, which dims its light.
   void draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
             const RenderSettings& settings, const SceneLighting& lighting,
-            const gpu::RenderTarget& target);
+            const gpu::RenderTarget& target, const ShadowVolume* shadows = nullptr);
   // How many of the draws so far drew the meshes, and how many copied the last image back (the
   // others found it in place).
   int meshes_drawn() const { return meshes_drawn_; }
@@ -42,7 +44,9 @@ class MeshRenderer {
   const GpuMesh& mesh_for(MeshKind kind);
   void draw_meshes(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                    const RenderSettings& settings, const SceneLighting& lighting,
-                   const gpu::RenderTarget& target);
+                   const gpu::RenderTarget& target, const ShadowVolume* shadows);
+  // Sets the shadow uniforms of `program`, uploading `shadows` when it changed.
+  void bind_shadows(const gpu::Program& program, const ShadowVolume* shadows);
   // The GL state a draw leaves, set again after a copy.
   void leave_state(bool meshes, const RenderSettings& settings,
                    const gpu::RenderTarget& target) const;
@@ -60,6 +64,9 @@ class MeshRenderer {
   gpu::Program program_;         // linear output: a floating-point target, or GL encodes
   gpu::Program encode_program_;  // writes sRGB itself (srgb_encode.glsl), GL_FRAMEBUFFER_SRGB off
   std::map<MeshKind, GpuMesh> meshes_;
+  gpu::Texture shadow_texture_;
+  glm::ivec3 shadow_size_{0};
+  uint64_t shadow_version_ = ~uint64_t(0);
 };
 
 }  // namespace pyro

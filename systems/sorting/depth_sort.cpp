@@ -114,6 +114,7 @@ void pack_particles(size_t stride, const SortScratch& s, std::vector<glm::vec4>&
   records.resize(offsets.back() * stride);
   for (size_t set = 0; set < s.sets.size(); ++set) {
     const ParticlePool& p = *s.sets[set].second;
+    const ParticleLight* light = s.lights[set];
     const uint32_t entity = s.sets[set].first;
     glm::vec4* packed = records.data() + offsets[set] * stride;
     tbb::parallel_for(
@@ -122,7 +123,7 @@ void pack_particles(size_t stride, const SortScratch& s, std::vector<glm::vec4>&
           for (size_t i = r.begin(); i < r.end(); ++i) {
             glm::vec4* record = packed + i * stride;
             record[0] = {p.px[i], p.py[i], p.pz[i], p.radius[i]};
-            record[1] = {p.r[i], p.g[i], p.b[i], p.density[i]};
+            record[1] = glm::vec4(particle_color(p, light, i), p.density[i]);
             if (stride < 3) continue;
             // The detail key: the golden-ratio fraction of the particle id (mixed with its set's
             // entity index), so consecutive ids spread evenly over [0, 1) and stay put for a
@@ -162,10 +163,16 @@ double ms_since(std::chrono::steady_clock::time_point& start) {
 
 void collect_particle_sets(const ecs::World& world, SortScratch& s) {
   s.sets.clear();
-  world.each<ParticleSet>(
-      [&](ecs::Entity e, const ParticleSet& set) { s.sets.emplace_back(e.index, &set.pool); });
+  std::vector<std::pair<uint32_t, const ParticleLight*>> lit;
+  world.each<ParticleSet>([&](ecs::Entity e, const ParticleSet& set) {
+    s.sets.emplace_back(e.index, &set.pool);
+    lit.emplace_back(e.index, world.try_get<const ParticleLight>(e));
+  });
   // Sets in entity-index order, so the tie-break does not depend on the storage's history.
   std::sort(s.sets.begin(), s.sets.end());
+  std::sort(lit.begin(), lit.end());
+  s.lights.clear();
+  for (const auto& [index, light] : lit) s.lights.push_back(light);
 }
 
 void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
@@ -250,6 +257,7 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
     collect_particle_sets(world, scratch);
     lists.pools.clear();
     for (const auto& set : scratch.sets) lists.pools.push_back(set.second);
+    lists.lights = scratch.lights;
     const SortDevice device = gpu_or_cpu(rs.sort_device, world.try_resource<const SortDeviceChoice>(),
                                          gpu_key_layout(lists.pools));
     for (size_t v = 0; v < orders; ++v) {
@@ -263,6 +271,7 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
     }
   } else {
     lists.pools.clear();
+    lists.lights.clear();
     for (size_t v = 0; v < orders; ++v) {
       build_draw_list(world, eyes[v].eye, eyes[v].forward, kind, scratch, lists.eyes[v],
                       rs.media_layers(), views_of(v));
@@ -278,7 +287,7 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
 ecs::SystemDesc sorting_system() {
   return {.name = "sorting",
           .phase = ecs::Phase::sort,
-          .access = ecs::Access::of<ecs::Reads<View, RenderSettings, ParticleSet, SortDeviceChoice>,
+          .access = ecs::Access::of<ecs::Reads<View, RenderSettings, ParticleSet, ParticleLight, SortDeviceChoice>,
                                     ecs::Writes<EyeDrawLists, SortScratch>>(),
           .run =
               [](ecs::World& world) {

@@ -52,6 +52,7 @@ struct SortScratch {
   std::vector<SortKey> keys;  // every particle's, the culled ones too (the sort reads those kept)
   RadixScratch radix;
   std::vector<std::pair<uint32_t, const ParticlePool*>> sets;  // (entity index, pool)
+  std::vector<const ParticleLight*> lights;  // beside each set: its light, or null (unlit)
   // The gathered form's particles packed in key order, two or three vec4s each (depth_sort.cpp).
   std::vector<glm::vec4> packed;
   std::vector<uint8_t> seen;          // culling: 1 for a particle some view can show,
