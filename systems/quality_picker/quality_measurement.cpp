@@ -9,9 +9,11 @@
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
 #include "components/particle_set.h"
+#include "components/scene_lighting.h"
 #include "components/view.h"
 #include "engine/core/sample_statistics.h"
 #include "engine/ecs/world.h"
+#include "systems/reference/lit_particle_reference.h"
 #include "systems/reference/particle_reference.h"
 #include "systems/reference/world_snapshot.h"
 #include "systems/scene_runtime/scene_runtime.h"
@@ -34,7 +36,55 @@ RuntimeOptions mono_options(int width, int height, bool readback,
   return o;
 }
 
+// The opaque scene alone (meshes and background), unshadowed; `sunless`: without its sun.
+SceneDescription opaque_part(const SceneDescription& scene, bool sunless) {
+  SceneDescription opaque = scene;
+  opaque.clouds.clear();
+  opaque.volumes.clear();
+  opaque.emitters.clear();
+  opaque.shadows.reset();
+  opaque.render.layer_scale = 1.0f;
+  if (sunless)
+    for (DirectionalLight& light : opaque.directional_lights) light.intensity = 0.0f;
+  return opaque;
+}
+
 }  // namespace
+
+std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, int width, int height,
+                                                const std::vector<int>& frames) {
+  // The particles' state and camera from the scene as given (clouds drift linearly, so the time
+  // step changes nothing), the opaque scene from a render without particles.
+  SceneRuntime particles(scene, mono_options(width, height, false));
+  SceneRuntime background(opaque_part(scene, false), mono_options(width, height, true));
+  std::optional<SceneRuntime> sunless;
+  if (scene.shadows) sunless.emplace(opaque_part(scene, true), mono_options(width, height, true));
+  std::vector<RgbImage> images;
+  for (int f : frames) {
+    particles.draw_frame(f);
+    background.draw_frame(f);
+    const CameraFrame camera = particles.world().resource<View>().eyes.at(0);
+    const RgbImage behind = rgb_of(background.image());
+    const std::vector<float> stop =
+        ray_stop_distances(camera, background.world().resource<GpuFrame>().eyes.at(0).scene->read_depth());
+    const ParticlePool pool = gather_particles(particles.world());
+    if (!sunless) {
+      images.push_back(render_particles_reference_over(pool, camera, behind, stop));
+      continue;
+    }
+    // Lit media: single scattering with exact shadows, over the opaque scene with its shadows.
+    sunless->draw_frame(f);
+    const SceneLighting& lighting = particles.world().resource<const SceneLighting>();
+    ReferenceSun sun;
+    sun.travel = glm::dvec3(lighting.sun_direction);
+    sun.color = glm::dvec3(lighting.directional_lights > 0 ? lighting.sun_color : glm::vec3(0.0f));
+    sun.ambient = glm::dvec3(lighting.ambient);
+    const RgbImage shadowed =
+        shadowed_opaque_reference(pool, camera, sun, behind, rgb_of(sunless->image()), stop);
+    images.push_back(render_lit_particles_reference_over(pool, camera, sun, shadowed, stop));
+  }
+  return images;
+}
 
 bool gaussian_particles(const SceneDescription& scene) {
   return scene.render.particles == ParticleShape::gaussian;
@@ -48,25 +98,7 @@ QualityGroundTruth::QualityGroundTruth(const SceneDescription& scene, int width,
   const auto t0 = std::chrono::steady_clock::now();
   cpu_reference_ = gaussian_particles(scene);
   if (cpu_reference_) {
-    // The particles' state and camera from the scene as given (clouds drift linearly, so the time
-    // step changes nothing), the opaque scene from a render without particles.
-    SceneDescription opaque = scene;
-    opaque.clouds.clear();
-    opaque.volumes.clear();
-    opaque.emitters.clear();
-    opaque.render.layer_scale = 1.0f;
-    SceneRuntime particles(scene, mono_options(width, height, false));
-    SceneRuntime background(opaque, mono_options(width, height, true));
-    for (int f : frames_) {
-      particles.draw_frame(f);
-      background.draw_frame(f);
-      const CameraFrame camera = particles.world().resource<View>().eyes.at(0);
-      const RgbImage behind = rgb_of(background.image());
-      const std::vector<float> stop =
-          ray_stop_distances(camera, background.world().resource<GpuFrame>().eyes.at(0).scene->read_depth());
-      images_.push_back(
-          render_particles_reference_over(gather_particles(particles.world()), camera, behind, stop));
-    }
+    images_ = particle_scene_references(scene, width, height, frames_);
   } else {
     QualitySettings finest;
     finest.layer_scale = 1.0f;

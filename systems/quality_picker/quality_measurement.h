@@ -5,7 +5,8 @@
 // Ground truth:
 //  * Gaussian particle scenes (clouds, volumes): the CPU reference (systems/reference), the
 //    exact sum of Gaussians integrated in closed form, over the GL render of the opaque scene
-//    (meshes and background, which both renderers share) and cut at its depth.
+//    (meshes and background, which both renderers share) and cut at its depth; lit media with
+//    exact shadows on both (lit_particle_reference.h).
 //  * Spherical or explosion-shaded particles: there is no CPU reference for them, so the truth
 //    is the converged GL render: particle layers at full resolution and the finest time step
 //    (4 substeps per frame). Errors are then relative to that render, not to an exact image.
@@ -35,6 +36,12 @@ class QualityGroundTruth {
   std::vector<RgbImage> images_;
   double seconds_ = 0.0;
 };
+
+// The CPU reference images of `frames` (ascending) of a Gaussian particle scene (mono, width x
+// height): the exact particles over the GL-rendered opaque scene, lit with exact shadows when the
+// scene's media are lit (systems/reference/lit_particle_reference.h).
+std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, int width, int height,
+                                                const std::vector<int>& frames);
 
 // Whether the scene's particles are Gaussian splats, which the footprint table shapes and the CPU
 // reference can render.

@@ -38,6 +38,15 @@ class RayPieces {
   template <class Depth, class Colour>
   glm::dvec3 integrate(Depth&& depth, Colour&& colour, const glm::dvec3& behind,
                        double max_piece_depth) {
+    return integrate(depth, colour, behind, max_piece_depth,
+                     [](double, double) { return glm::dvec3(1.0); });
+  }
+
+  // The same with the colour of each part [a, b] multiplied by light(a, b): the light reaching
+  // the part (a lit medium's albedo times its light).
+  template <class Depth, class Colour, class Light>
+  glm::dvec3 integrate(Depth&& depth, Colour&& colour, const glm::dvec3& behind,
+                       double max_piece_depth, Light&& light) {
     glm::dvec3 radiance(0.0);
     double transmittance = 1.0;
     std::sort(cuts_.begin(), cuts_.end());
@@ -74,7 +83,7 @@ class RayPieces {
         }
         if (dtau <= 0.0) continue;
         const double alpha = -std::expm1(-dtau);
-        radiance += transmittance * alpha * (col / dtau);
+        radiance += transmittance * alpha * (col / dtau) * light(pa, pb);
         transmittance *= 1.0 - alpha;
       }
     }

@@ -1,0 +1,63 @@
+// clouds.json lit by its sun, against the CPU reference with exact shadows
+// (systems/reference/lit_particle_reference.h): single scattering with the sun's transmittance
+// exact at every point of every ray, over the opaque scene whose ground keeps exp(-tau) of its
+// sunlight. Both shadow methods must come within the bar (whole-frame RMSE 0.02); lit without
+// shadows, the same frame must not.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "components/frame_image.h"
+#include "systems/quality_picker/quality_measurement.h"
+#include "systems/reference/world_snapshot.h"
+#include "systems/scene/scene_loader.h"
+#include "systems/scene_runtime/scene_runtime.h"
+#include "tests/support/test_paths.h"
+
+namespace pyro {
+namespace {
+
+constexpr int kWidth = 160, kHeight = 120;
+
+SceneDescription lit_clouds(ShadowMethod method) {
+  SceneDescription scene = load_scene(test::scene_path("clouds.json"));
+  ShadowSettings s;
+  s.method = method;
+  scene.shadows = s;
+  return scene;
+}
+
+RgbImage engine_frame(const SceneDescription& scene) {
+  RuntimeOptions o;
+  o.readback = true;
+  o.width_override = kWidth;
+  o.height_override = kHeight;
+  SceneRuntime runtime(scene, o);
+  runtime.draw_frame(0);
+  return rgb_of(runtime.image());
+}
+
+class LitClouds : public testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    reference_ = new RgbImage(particle_scene_references(lit_clouds(ShadowMethod::rays), kWidth, kHeight, {0}).at(0));
+  }
+  static void TearDownTestSuite() { delete reference_; }
+  static double rmse(ShadowMethod method) {
+    const RgbImage img = engine_frame(lit_clouds(method));
+    const double e = image_rmse(img, *reference_);
+    std::printf("%s: rmse %.5f\n", name_of(method).data(), e);
+    return e;
+  }
+  static RgbImage* reference_;
+};
+RgbImage* LitClouds::reference_ = nullptr;
+
+TEST_F(LitClouds, ExactShadowRaysAreWithinTheBar) { EXPECT_LE(rmse(ShadowMethod::rays), 0.02); }
+
+TEST_F(LitClouds, TheOpacityShadowMapIsWithinTheBar) { EXPECT_LE(rmse(ShadowMethod::shadow_map), 0.02); }
+
+TEST_F(LitClouds, WithoutShadowsTheFrameIsNot) { EXPECT_GT(rmse(ShadowMethod::none), 0.02); }
+
+}  // namespace
+}  // namespace pyro
