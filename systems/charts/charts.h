@@ -44,6 +44,16 @@ struct BillboardModesChartOptions {
 };
 ChartTable chart_billboard_modes(const BillboardModesChartOptions& options);
 
+// The shadow methods (systems/shadowing: none, rays, the map at each size) on lit scenes, against
+// the CPU reference with exact shadows.
+struct ShadowsChartOptions {
+  std::vector<std::string> scenes;  // empty: clouds and fog from content/scenes, with shadows on
+  std::vector<int> map_sizes{16, 32, 64, 128, 256};
+  int width = 160, height = 120;
+  int frames = 5;  // timed frames per setting
+};
+ChartTable chart_shadows(const ShadowsChartOptions& options);
+
 // Explosion media layers at 1, 1/2, 1/4, 1/8 with each upsampling method (`pyro bench layers`).
 struct LayerResolutionChartOptions {
   // Empty: content/scenes/explosion.json (the paper's view) and explosion_behind_tower.json (the

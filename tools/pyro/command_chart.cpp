@@ -54,8 +54,9 @@ void refuse_unused(const ChartArgs& a, bool size_used, bool frames_used) {
 }
 
 ChartTable make_chart(const ChartArgs& a) {
-  const bool renders = a.name == "billboard-modes" || a.name == "layer-resolution" || a.name == "particle-budget";
-  refuse_unused(a, renders, a.name == "billboard-modes" || a.name == "layer-resolution");
+  const bool renders = a.name == "billboard-modes" || a.name == "layer-resolution" ||
+                       a.name == "particle-budget" || a.name == "shadows";
+  refuse_unused(a, renders, a.name == "billboard-modes" || a.name == "layer-resolution" || a.name == "shadows");
   if (a.name == "footprint") return chart_footprint({});
   if (a.name == "integrators") return chart_integrators({});
   if (a.name == "billboard-modes") {
@@ -70,13 +71,19 @@ ChartTable make_chart(const ChartArgs& a) {
     if (a.frames > 0) o.frames = a.frames;
     return chart_layer_resolution(o);
   }
+  if (a.name == "shadows") {
+    ShadowsChartOptions o;
+    override_size(o, a);
+    if (a.frames > 0) o.frames = a.frames;
+    return chart_shadows(o);
+  }
   if (a.name == "particle-budget") {
     ParticleBudgetChartOptions o;
     override_size(o, a);
     return chart_particle_budget(o);
   }
   throw UserError("command line", "NAME", "one of footprint, billboard-modes, layer-resolution, "
-                                          "particle-budget, integrators; found \"" + a.name + "\"");
+                                          "particle-budget, integrators, shadows, scale; found \"" + a.name + "\"");
 }
 
 // Before any measuring: --out must be a folder or creatable as one, in a folder that can be
@@ -159,7 +166,7 @@ void run_chart(const ChartArgs& a) {
 }  // namespace
 
 std::vector<std::string> chart_names() {
-  return {"footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators", "scale"};
+  return {"footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators", "shadows", "scale"};
 }
 
 void add_chart_command(CLI::App& app) {
