@@ -35,6 +35,8 @@ shot() {
 shot fog fog 30 480 360
 shot mist mist 30 480 360
 shot clouds clouds 30 480 360
+shot clouds_lit clouds 30 480 360 --shadows map
+shot sunset sunset 30 480 360
 shot cloud_vdb cloud_vdb 0 480 270
 shot cloud_fitted cloud_fitted 0 480 270
 shot explosion explosion 30 384 384

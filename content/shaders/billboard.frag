@@ -18,7 +18,7 @@ flat in vec4 v_premultiplied;
 #if LIT
 flat in vec4 v_albedo_density;
 flat in vec4 v_others_depth;
-flat in float v_sigma;
+flat in vec3 v_self;  // tau0, 1 / s, 1 / (2 s^2)
 in vec3 v_offset;
 uniform vec3 u_toward_sun;  // unit
 uniform vec3 u_sun_color;
@@ -35,13 +35,12 @@ layout(location = 0) out vec4 o_color;
 void main() {
   float footprint = textureLod(u_kernel, v_texcoord, 0.0).r;
 #if LIT
-  float rho = v_albedo_density.a;
-  float tau0 = -log(max(1.0 - rho, 1e-12));
+  float tau0 = v_self.x;
   float d_par = dot(v_offset, u_toward_sun);
   float d_perp2 = max(dot(v_offset, v_offset) - d_par * d_par, 0.0);
-  float x = clamp(d_par / v_sigma, -3.0, 3.0);
+  float x = clamp(d_par * v_self.y, -3.0, 3.0);
   float tail = textureLod(u_tail, u_tail_bias_scale.x + (x + 3.0) / 6.0 * u_tail_bias_scale.y, 0.0).r;
-  float tau_self = tau0 * exp(-d_perp2 / (2.0 * v_sigma * v_sigma)) * tail;
+  float tau_self = tau0 * exp(-d_perp2 * v_self.z) * tail;
   float tau = u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, v_offset) + tau_self);
   vec3 light = u_sun_color * exp(-max(tau, 0.0)) + u_ambient;
   // The opacity of the Gaussian's column through this point, 1 - exp(-tau0 f), f the footprint

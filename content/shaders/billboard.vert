@@ -25,7 +25,7 @@ layout(std430, binding = 0) readonly buffer ParticleRecords { vec4 records[]; };
 layout(std430, binding = 2) readonly buffer ParticleShadow { vec4 others_depth[]; };
 flat out vec4 v_albedo_density;
 flat out vec4 v_others_depth;
-flat out float v_sigma;   // the particle's standard deviation: radius / 3
+flat out vec3 v_self;     // tau0 = -ln(1 - rho), 1 / s (s = radius / 3), 1 / (2 s^2)
 out vec3 v_offset;        // the fragment's place on the billboard, from the centre (world units)
 #endif
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
@@ -70,7 +70,8 @@ void main() {
 #if LIT
   v_albedo_density = a_color_density;
   v_others_depth = others_depth[particle];
-  v_sigma = a_center_radius.w / 3.0;
+  float s = a_center_radius.w / 3.0;
+  v_self = vec3(-log(max(1.0 - a_color_density.a, 1e-12)), 1.0 / s, 0.5 / (s * s));
   v_offset = world - center;
 #endif
   gl_Position = u_view_projection * vec4(world, 1.0);

@@ -82,11 +82,13 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
       out.active_voxels = grid.active_voxels;
       CloudImportOptions opt;
       opt.medium.extinction = v.extinction > 0.0f ? double(v.extinction) : default_extinction(grid);
-      // Lit as the renderers light the scene (systems/lighting), once, at import.
+      // Lit as the renderers light the scene (systems/lighting), once, at import; in a scene with
+      // lit media ("shadows") the light phase lights them every frame, so the particles keep
+      // their albedo (no sun, ambient 1: albedo x (0 T + 1)).
       const SceneLighting lighting = combine_lights(scene.directional_lights, scene.ambient_lights);
       opt.medium.light_direction = glm::dvec3(lighting.sun_direction);
-      opt.medium.light_color = glm::dvec3(lighting.sun_color);
-      opt.medium.ambient = glm::dvec3(lighting.ambient);
+      opt.medium.light_color = scene.shadows ? glm::dvec3(0.0) : glm::dvec3(lighting.sun_color);
+      opt.medium.ambient = scene.shadows ? glm::dvec3(1.0) : glm::dvec3(lighting.ambient);
       opt.medium.background = glm::dvec3(scene.background);
       opt.tau_tolerance = tau_tolerance_for_error(v.error);
       opt.threads = threads;
