@@ -71,7 +71,8 @@ inline glm::vec3 particle_color(const ParticlePool& p, const ParticleLight* ligh
   return light && light->covers(p.size()) ? albedo * light->light[i] : albedo;
 }
 
-// Eye `eye`'s list in the gathered form (a copy; an indexed list is gathered from the pools).
+// Eye `eye`'s list in the gathered form (a copy; an indexed list is gathered from the pools, with
+// their colours as they are: lit splats are lit as they are drawn, billboard_renderer.h).
 inline DrawList gathered_draw_list(const EyeDrawLists& lists, size_t eye) {
   const DrawList& list = lists.eyes.at(eye);
   if (!list.indexed()) return list;
@@ -83,8 +84,7 @@ inline DrawList gathered_draw_list(const EyeDrawLists& lists, size_t eye) {
     const ParticlePool& p = *lists.pools.at(j);
     const size_t i = k - (j == 0 ? 0 : ends[j - 1]);
     out.center_radius.push_back({p.px.at(i), p.py[i], p.pz[i], p.radius[i]});
-    const ParticleLight* light = j < lists.lights.size() ? lists.lights[j] : nullptr;
-    out.color_density.push_back(glm::vec4(particle_color(p, light, i), p.density[i]));
+    out.color_density.push_back({p.r[i], p.g[i], p.b[i], p.density[i]});
   }
   return out;
 }

@@ -211,6 +211,7 @@ void BillboardRenderer::draw(const DrawList& list, const std::vector<const Parti
   if (list.on_gpu) {
     order_on_gpu(list, pools);
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, gpu_sort_->order_buffer(), 0, gpu_sort_->order_bytes());
+    if (lit) uploaded_shadow_.bind(GL_SHADER_STORAGE_BUFFER, 2);  // the sort's shaders bind 2 too
   }
   const gpu::Program& program =
       lit ? lit_program_ : shading == BillboardShading::kernel ? kernel_program_ : trivial_program_;
