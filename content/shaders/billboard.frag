@@ -9,7 +9,8 @@
 //   tau_self(p) = tau0 exp(-d_perp^2 / (2 s^2)) tail(d_par / s),
 // tau0 = -ln(1 - rho) the optical depth through the centre, d_par and d_perp the offset along and
 // across the direction toward the sun, tail the fraction of a line's depth beyond d_par / s
-// (engine/math/gaussian_line_integral.h, gaussian_tail_fraction, read from a table).
+// (engine/math/gaussian_line_integral.h, gaussian_tail_fraction, given as the odd polynomial
+// gaussian_tail_polynomial fits to it: a texture lookup here costs more than the polynomial).
 #ifndef LIT
 #define LIT 0
 #endif
@@ -24,8 +25,7 @@ uniform vec3 u_toward_sun;  // unit
 uniform vec3 u_sun_color;
 uniform vec3 u_ambient;
 uniform float u_self_shadow;  // 1: the particle shadows itself; 0: lit without shadows
-uniform vec2 u_tail_bias_scale;  // x in [-3, 3] -> the tail table's texture coordinate
-layout(binding = 1) uniform sampler1D u_tail;
+uniform float u_tail_polynomial[6];  // c_k of t^(2k+1), t = x / 3
 #endif
 
 layout(binding = 0) uniform sampler2D u_kernel;
@@ -38,8 +38,10 @@ void main() {
   float tau0 = v_self.x;
   float d_par = dot(v_offset, u_toward_sun);
   float d_perp2 = max(dot(v_offset, v_offset) - d_par * d_par, 0.0);
-  float x = clamp(d_par * v_self.y, -3.0, 3.0);
-  float tail = textureLod(u_tail, u_tail_bias_scale.x + (x + 3.0) / 6.0 * u_tail_bias_scale.y, 0.0).r;
+  float t = clamp(d_par * v_self.y, -3.0, 3.0) / 3.0, t2 = t * t;
+  float p = u_tail_polynomial[5];
+  for (int k = 4; k >= 0; --k) p = p * t2 + u_tail_polynomial[k];
+  float tail = 0.5 - 0.5 * p * t;
   float tau_self = tau0 * exp(-d_perp2 * v_self.z) * tail;
   float tau = u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, v_offset) + tau_self);
   vec3 light = u_sun_color * exp(-max(tau, 0.0)) + u_ambient;

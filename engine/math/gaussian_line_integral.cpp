@@ -72,6 +72,44 @@ double gaussian_tail_fraction(double x) {
   return (edge - std::erf(inside / std::numbers::sqrt2)) / (2.0 * edge);
 }
 
+std::array<double, kTailPolynomialTerms> gaussian_tail_polynomial() {
+  // Normal equations of the odd basis t, t^3, ..., t^11 (well conditioned on [-1, 1] at this size),
+  // solved by Gaussian elimination with partial pivoting.
+  constexpr int n = kTailPolynomialTerms, points = 2001;
+  double a[n][n + 1] = {};
+  for (int p = 0; p < points; ++p) {
+    const double x = -kExtent + 2.0 * kExtent * p / (points - 1), t = x / kExtent;
+    const double g = 1.0 - 2.0 * gaussian_tail_fraction(x);
+    double basis[n];
+    for (int k = 0; k < n; ++k) basis[k] = std::pow(t, 2 * k + 1);
+    for (int r = 0; r < n; ++r) {
+      for (int c = 0; c < n; ++c) a[r][c] += basis[r] * basis[c];
+      a[r][n] += basis[r] * g;
+    }
+  }
+  for (int col = 0; col < n; ++col) {
+    int pivot = col;
+    for (int r = col + 1; r < n; ++r)
+      if (std::abs(a[r][col]) > std::abs(a[pivot][col])) pivot = r;
+    std::swap(a[col], a[pivot]);
+    for (int r = 0; r < n; ++r) {
+      if (r == col) continue;
+      const double f = a[r][col] / a[col][col];
+      for (int c = col; c <= n; ++c) a[r][c] -= f * a[col][c];
+    }
+  }
+  std::array<double, n> coefficients{};
+  for (int k = 0; k < n; ++k) coefficients[size_t(k)] = a[k][n] / a[k][k];
+  return coefficients;
+}
+
+double evaluate_tail_polynomial(const std::array<double, kTailPolynomialTerms>& c, double x) {
+  const double t = std::clamp(x, -kExtent, kExtent) / kExtent, t2 = t * t;
+  double p = c.back();
+  for (int k = kTailPolynomialTerms - 2; k >= 0; --k) p = p * t2 + c[size_t(k)];
+  return 0.5 - 0.5 * p * t;
+}
+
 double gaussian_optical_depth(const ClampedGaussian& g, const glm::dvec3& o, const glm::dvec3& w,
                               double a, double b) {
   double ca, cb;

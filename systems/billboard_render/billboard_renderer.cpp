@@ -1,6 +1,7 @@
 #include "systems/billboard_render/billboard_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <stdexcept>
 
@@ -15,10 +16,6 @@
 #include "systems/billboard_render/parallel_copy.h"
 
 namespace pyro {
-
-namespace {
-constexpr int kTailNodes = 256;  // the lit program's tail table
-}  // namespace
 
 BillboardRenderer::BillboardRenderer(const FootprintTable& table)
     : table_(table),
@@ -35,15 +32,6 @@ BillboardRenderer::BillboardRenderer(const FootprintTable& table)
   glTextureParameteri(kernel_texture_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(kernel_texture_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(kernel_texture_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  // The lit program's self-shadow: the tail fraction at kTailNodes points over [-3, 3].
-  std::vector<float> tail(kTailNodes);
-  for (int k = 0; k < kTailNodes; ++k) tail[size_t(k)] = float(gaussian_tail_fraction(-3.0 + 6.0 * k / (kTailNodes - 1)));
-  tail_texture_ = gpu::make_texture(GL_TEXTURE_1D);
-  glTextureStorage1D(tail_texture_.get(), 1, GL_R32F, kTailNodes);
-  glTextureSubImage1D(tail_texture_.get(), 0, 0, kTailNodes, GL_RED, GL_FLOAT, tail.data());
-  glTextureParameteri(tail_texture_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(tail_texture_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(tail_texture_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
 }
 
 namespace {
@@ -168,10 +156,9 @@ void BillboardRenderer::set_lighting_uniforms(const SplatLighting& lighting) con
   glUniform3fv(gpu::uniform_location(program, "u_sun_color"), 1, glm::value_ptr(lighting.sun_color));
   glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
   glUniform1f(gpu::uniform_location(program, "u_self_shadow"), lighting.self_shadow ? 1.0f : 0.0f);
-  // Texel centres: node k at (k + 0.5) / n.
-  glUniform2f(gpu::uniform_location(program, "u_tail_bias_scale"), 0.5f / kTailNodes,
-              float(kTailNodes - 1) / kTailNodes);
-  glBindTextureUnit(1, tail_texture_.get());
+  std::array<float, kTailPolynomialTerms> tail;
+  for (size_t k = 0; k < tail.size(); ++k) tail[k] = float(tail_polynomial_[k]);
+  glUniform1fv(gpu::uniform_location(program, "u_tail_polynomial"), GLsizei(tail.size()), tail.data());
 }
 
 void BillboardRenderer::order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools) {

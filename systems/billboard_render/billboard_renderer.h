@@ -12,6 +12,7 @@
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
 #include "engine/math/footprint.h"
+#include "engine/math/gaussian_line_integral.h"
 #include "engine/gpu/mapped_ring.h"
 #include "systems/billboard_render/instance_buffer.h"  // UploadCost
 #include "systems/gpu_sorting/gpu_depth_sort.h"
@@ -73,7 +74,8 @@ class BillboardRenderer {
   FootprintTable table_;
   gpu::Program kernel_program_, trivial_program_, lit_program_;
   gpu::Texture kernel_texture_;
-  gpu::Texture tail_texture_;  // gaussian_tail_fraction over [-3, 3], for the lit program
+  // The lit program's self-shadow: gaussian_tail_polynomial's coefficients.
+  std::array<double, kTailPolynomialTerms> tail_polynomial_ = gaussian_tail_polynomial();
   // Packs the particles (the pools of an indexed list, or a gathered list's arrays) as two vec4s
   // each and the list's order straight into the next slot of ring_, and binds them (SSBO
   // bindings 0 and 1).
@@ -81,7 +83,7 @@ class BillboardRenderer {
   // With `lighting`, also each particle's others' depth (binding 2).
   void upload(const DrawList& list, const std::vector<const ParticlePool*>& pools,
               const SplatLighting* lighting = nullptr);
-  // The lit program's uniforms and its tail table (texture unit 1).
+  // The lit program's uniforms.
   void set_lighting_uniforms(const SplatLighting& lighting) const;
   // The last upload's particles ordered by gpu_sort_ (made on first use).
   void order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools);

@@ -3,6 +3,7 @@
 // -ln(1 - rho) that makes the splat's centre opacity rho; half of it from the centre outward.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -27,6 +28,29 @@ TEST(GaussianLineIntegral, ThroughTheCentreItIsTheSplatsOpticalDepth) {
   EXPECT_NEAR(gaussian_optical_depth(g, {1.0, 2.0, 3.0}, w, 0.0, kInf), 0.5 * tau0, 1e-12);
   // A ray missing the cube meets nothing.
   EXPECT_EQ(gaussian_optical_depth(g, {1.0 + 0.61, -5.0, 3.0}, w, 0.0, kInf), 0.0);
+}
+
+TEST(GaussianLineIntegral, TheTailFractionAndItsPolynomial) {
+  // The closed form's ends and symmetry.
+  EXPECT_DOUBLE_EQ(gaussian_tail_fraction(-3.0), 1.0);
+  EXPECT_DOUBLE_EQ(gaussian_tail_fraction(3.0), 0.0);
+  EXPECT_NEAR(gaussian_tail_fraction(0.0), 0.5, 1e-15);
+  EXPECT_NEAR(gaussian_tail_fraction(0.7) + gaussian_tail_fraction(-0.7), 1.0, 1e-15);
+  // Beyond x: the depth over [x s, 3 s] of a particle seen along an axis through its centre.
+  const ClampedGaussian g = clamped_gaussian({0.0, 0.0, 0.0}, 0.9, 0.5);
+  const double full = gaussian_optical_depth(g, {0.0, 0.0, -5.0}, {0.0, 0.0, 1.0}, 0.0, kInf);
+  EXPECT_NEAR(gaussian_optical_depth(g, {0.0, 0.0, -5.0}, {0.0, 0.0, 1.0}, 5.0 + 0.4 * g.s, kInf),
+              full * gaussian_tail_fraction(0.4), 1e-12);
+  // The shaders' polynomial: within 1.2e-4 everywhere, clamped beyond +-3.
+  const auto c = gaussian_tail_polynomial();
+  double worst = 0.0;
+  for (int i = 0; i <= 6000; ++i) {
+    const double x = -3.0 + 6.0 * i / 6000.0;
+    worst = std::max(worst, std::abs(evaluate_tail_polynomial(c, x) - gaussian_tail_fraction(x)));
+  }
+  EXPECT_LT(worst, 1.2e-4);
+  EXPECT_GT(worst, 1e-6);  // a fit, not the function
+  EXPECT_EQ(evaluate_tail_polynomial(c, 7.0), evaluate_tail_polynomial(c, 3.0));
 }
 
 std::vector<ClampedGaussian> random_particles(Rng& rng, int n) {

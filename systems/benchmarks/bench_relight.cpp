@@ -1,0 +1,140 @@
+#include "systems/benchmarks/bench_relight.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "components/directional_light.h"
+#include "engine/core/user_error.h"
+#include "engine/io/vdb_reader.h"
+#include "systems/cloud_import/cloud_import.h"
+#include "systems/cloud_import/grid_framing.h"
+#include "systems/cloud_import/scene_volume.h"
+#include "systems/reference/volume_reference.h"
+#include "systems/reference/world_snapshot.h"
+#include "systems/scene_runtime/resolve_scene.h"
+#include "systems/scene_runtime/scene_assets.h"
+#include "systems/scene_runtime/scene_runtime.h"
+
+namespace pyro {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The sun of direction k of n: azimuth 360 k / n degrees, 40 degrees above the horizon (the
+// direction the light travels: down and across).
+glm::dvec3 sun_direction(int k, int n) {
+  const double azimuth = 2.0 * std::numbers::pi * k / n, elevation = 40.0 * std::numbers::pi / 180.0;
+  return -glm::dvec3(std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
+                     std::cos(elevation) * std::sin(azimuth));
+}
+
+// The particles in a scene of their own: the grid's framing camera, the medium's sun and ambient
+// light, `shadows` (none: unlit, the particles' colours as they are).
+SceneRuntime relight_runtime(const std::vector<GaussianParticle>& particles, const VolumeMedium& medium,
+                             const CameraDescription& camera, const RelightBenchOptions& o,
+                             bool lit, bool readback) {
+  SceneDescription scene;
+  scene.camera = camera;
+  scene.background = glm::vec3(medium.background);
+  scene.directional_lights.front().direction = glm::vec3(medium.light_direction);
+  scene.directional_lights.front().color = glm::vec3(medium.light_color);
+  scene.ambient_lights.front().color = glm::vec3(medium.ambient);
+  if (lit) scene.shadows = o.shadows;
+  RuntimeOptions ro;
+  ro.readback = readback;
+  ro.width_override = o.width;
+  ro.height_override = o.height;
+  const ResolvedScene resolved = resolve_scene(scene, ro, std::numeric_limits<int>::max());
+  SceneAssets assets;
+  assets.volumes.push_back({to_particle_pool(particles), {}, {}});
+  return SceneRuntime(resolved, std::move(assets), ro);
+}
+
+void set_sun(SceneRuntime& runtime, const glm::dvec3& direction) {
+  runtime.world().each<DirectionalLight>([&](DirectionalLight& l) { l.direction = glm::vec3(direction); });
+}
+
+// Frames per second over `frames` frames (the GPU finished each), the sun turning every frame
+// when `turn`.
+double frames_per_second(SceneRuntime& runtime, int frames, int directions, bool turn) {
+  runtime.draw_frame(0);  // warm-up: shaders, tables, targets
+  glFinish();
+  const auto t = std::chrono::steady_clock::now();
+  for (int f = 1; f <= frames; ++f) {
+    if (turn) set_sun(runtime, sun_direction(f % directions, directions));
+    runtime.draw_frame(f);
+    glFinish();
+  }
+  return frames / seconds_since(t);
+}
+
+}  // namespace
+
+nlohmann::json bench_relight(const RelightBenchOptions& o) {
+  ProgressTask progress(o.progress, "bench relight", o.directions + 3);
+  progress.stage(0, "read and import");
+  std::string note;
+  const DenseGrid grid = read_vdb_grid(o.file, {o.grid, o.grid_index}, &note);
+  if (!note.empty() && o.on_note) o.on_note(o.file + ": " + note);
+  if (grid.empty()) throw UserError(o.file, "grid \"" + grid.name + "\"", "a grid with active voxels to relight");
+  auto t = std::chrono::steady_clock::now();
+  // Imported as a lit scene imports its volumes: albedo kept (no sun, ambient 1).
+  CloudImportOptions import;
+  import.medium.extinction = default_extinction(grid);
+  import.medium.light_color = glm::dvec3(0.0);
+  import.medium.ambient = glm::dvec3(1.0);
+  import.tau_tolerance = tau_tolerance_for_error(o.error);
+  const std::vector<GaussianParticle> particles = import_cloud(grid, import);
+  const double import_seconds = seconds_since(t);
+  VolumeMedium medium;  // the reference's: the default albedo, sun and ambient light
+  medium.extinction = import.medium.extinction;
+  const CameraDescription camera = framing_camera(grid);
+
+  SceneRuntime relit = relight_runtime(particles, medium, camera, o, true, true);
+  nlohmann::json per_direction = nlohmann::json::array();
+  double worst = 0.0, reference_seconds = 0.0;
+  for (int k = 0; k < o.directions; ++k) {
+    progress.stage(1 + k, "direction " + std::to_string(k + 1));
+    medium.light_direction = sun_direction(k, o.directions);
+    set_sun(relit, medium.light_direction);
+    relit.draw_frame(k);
+    t = std::chrono::steady_clock::now();
+    const RgbImage reference = render_volume_reference(grid, light_optical_depth(grid, medium),
+                                                       camera_frame(camera, o.width, o.height), medium);
+    reference_seconds += seconds_since(t);
+    const double rmse = image_rmse(rgb_of(relit.image()), reference);
+    worst = std::max(worst, rmse);
+    const glm::dvec3 d = medium.light_direction;
+    per_direction.push_back({{"direction", {d.x, d.y, d.z}}, {"rmse_vs_reference", rmse}});
+  }
+  progress.stage(o.directions + 1, "time relit frames");
+  SceneRuntime timed = relight_runtime(particles, medium, camera, o, true, false);
+  const double fps = frames_per_second(timed, o.frames, o.directions, true);
+  progress.stage(o.directions + 2, "time unlit frames");
+  SceneRuntime unlit = relight_runtime(particles, medium, camera, o, false, false);
+  const double unlit_fps = frames_per_second(unlit, o.frames, o.directions, false);
+  progress.finish();
+  return {{"file", o.file},
+          {"particles", particles.size()},
+          {"width", o.width},
+          {"height", o.height},
+          {"shadows", {{"method", name_of(o.shadows.method)}, {"map_size", o.shadows.map_size},
+                       {"map_slices", o.shadows.map_slices}}},
+          {"directions", per_direction},
+          {"max_rmse_vs_reference", worst},
+          {"fps", fps},
+          {"unlit_fps", unlit_fps},
+          {"fps_over_unlit", fps / unlit_fps},
+          {"import_seconds", import_seconds},
+          {"reference_seconds", reference_seconds}};
+}
+
+}  // namespace pyro
