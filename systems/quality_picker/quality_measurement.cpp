@@ -44,8 +44,10 @@ SceneDescription opaque_part(const SceneDescription& scene, bool sunless) {
   opaque.emitters.clear();
   opaque.shadows.reset();
   opaque.render.layer_scale = 1.0f;
-  if (sunless)
-    for (DirectionalLight& light : opaque.directional_lights) light.intensity = 0.0f;
+  if (!sunless) return opaque;
+  for (DirectionalLight& light : opaque.directional_lights) light.intensity = 0.0f;
+  for (LightKeyframes& keys : opaque.light_keyframes)
+    for (LightKeyframe& key : keys.keys) key.intensity = 0.0f;
   return opaque;
 }
 

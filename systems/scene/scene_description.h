@@ -14,6 +14,7 @@
 #include "components/mesh_instance.h"
 #include "components/render_modes.h"
 #include "components/flipbook_fire.h"
+#include "components/light_keyframes.h"
 #include "components/particle_dynamics.h"
 #include "components/shadow_settings.h"
 #include "components/simulation_environment.h"
@@ -145,6 +146,8 @@ struct SceneDescription {
   // The scene's lights (the components double as descriptions): `light` gives one directional
   // and one ambient light, `lights` any number of each; without either key, the defaults.
   std::vector<DirectionalLight> directional_lights = std::vector<DirectionalLight>(1);
+  // Beside each directional light, its keyframes (empty: it does not move).
+  std::vector<LightKeyframes> light_keyframes = std::vector<LightKeyframes>(1);
   std::vector<AmbientLight> ambient_lights = std::vector<AmbientLight>(1);
   // Lit media (docs/lighting.md): absent, the splats keep their colours as given, unlit.
   std::optional<ShadowSettings> shadows;

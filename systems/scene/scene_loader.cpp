@@ -565,6 +565,7 @@ void read_light(ObjectReader& r, SceneDescription& s) {
   r.vec3("ambient", kNonNegative, sky.color);
   require_nonzero(sun.direction, r.at("direction"), "light direction");
   s.directional_lights = {sun};
+  s.light_keyframes = std::vector<LightKeyframes>(1);
   s.ambient_lights = {sky};
 }
 
@@ -578,10 +579,29 @@ void read_light_source(ObjectReader& r, SceneDescription& s) {
     return;
   }
   DirectionalLight& sun = s.directional_lights.emplace_back();
+  LightKeyframes& keys = s.light_keyframes.emplace_back();
   r.vec3("direction", kAnyRange, sun.direction);
   r.vec3("color", kNonNegative, sun.color);
   r.number("intensity", kNonNegative, sun.intensity);
   require_nonzero(sun.direction, r.at("direction"), "light direction");
+  // "keys": the light over time; the light's own values are each key's defaults.
+  r.objects("keys", "an object {\"time\": seconds, \"direction\", \"color\", \"intensity\"}",
+            [&](ObjectReader& k, std::size_t) {
+              LightKeyframe key{0.0f, sun.direction, sun.color, sun.intensity};
+              k.require("time", "the key's time in seconds, >= 0");
+              k.number("time", kNonNegative, key.time);
+              k.vec3("direction", kAnyRange, key.direction);
+              k.vec3("color", kNonNegative, key.color);
+              k.number("intensity", kNonNegative, key.intensity);
+              require_nonzero(key.direction, k.at("direction"), "light direction");
+              if (!keys.keys.empty() && !(key.time > keys.keys.back().time))
+                k.at("time").fail("expected times in increasing order, found " + format_float(key.time) +
+                                  " after " + format_float(keys.keys.back().time));
+              keys.keys.push_back(key);
+            });
+  // Until the light phase animates it (and for what reads the scene's lights once, such as the
+  // importer): the first key.
+  if (!keys.keys.empty()) sun = {keys.keys.front().direction, keys.keys.front().color, keys.keys.front().intensity};
 }
 
 // "shadows": lit media, {"method": "rays" | "map" | "none", "map_size", "map_slices"}.
@@ -1067,6 +1087,7 @@ SceneDescription read_scene(ObjectReader& r) {
     if (r.find("light") != nullptr)
       r.at("lights").fail("expected either \"light\" or \"lights\", found both");
     s.directional_lights.clear();
+    s.light_keyframes.clear();
     s.ambient_lights.clear();
     r.objects("lights", "an object describing a light",
               [&](ObjectReader& l, std::size_t) { read_light_source(l, s); });

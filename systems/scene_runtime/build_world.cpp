@@ -9,6 +9,7 @@
 #include "components/cloud_volume.h"
 #include "components/directional_light.h"
 #include "components/emitter.h"
+#include "components/light_keyframes.h"
 #include "components/gpu_frame.h"
 #include "components/mesh_instance.h"
 #include "components/particle_dynamics.h"
@@ -95,8 +96,12 @@ void add_meshes(ecs::World& world, const std::vector<MeshDescription>& meshes) {
 // The scene's lights as entities, created after every other entity: entity indices order the
 // particles' draw and seed the explosion's detail noise, so they must not move.
 void add_lights(ecs::World& world, const SceneDescription& scene) {
-  for (const DirectionalLight& light : scene.directional_lights)
-    world.emplace<DirectionalLight>(world.create(), light);
+  for (size_t i = 0; i < scene.directional_lights.size(); ++i) {
+    const ecs::Entity e = world.create();
+    world.emplace<DirectionalLight>(e, scene.directional_lights[i]);
+    if (i < scene.light_keyframes.size() && !scene.light_keyframes[i].keys.empty())
+      world.emplace<LightKeyframes>(e, scene.light_keyframes[i]);
+  }
   for (const AmbientLight& light : scene.ambient_lights) world.emplace<AmbientLight>(world.create(), light);
 }
 
