@@ -7,6 +7,7 @@
 
 #include "engine/math/shadow_ray_index.h"
 #include "systems/reference/parallel_rows.h"
+#include "systems/reference/particle_reference.h"
 #include "systems/reference/pixel_ray.h"
 #include "systems/reference/ray_pieces.h"
 
@@ -71,15 +72,7 @@ RgbImage render_lit_particles_reference_over(const ParticlePool& p, const Camera
     for (int x = 0; x < img.width; ++x) {
       const glm::dvec3 w = pixel_ray_direction(camera, x + 0.5, y + 0.5);
       const double t_stop = stop[static_cast<size_t>(y) * camera.width + x];
-      pieces.clear();
-      for (size_t i = 0; i < gs.size(); ++i) {
-        double a, b;
-        if (!gaussian_cube_span(gs[i], eye, w, a, b)) continue;
-        a = std::max(a, 0.0);
-        b = std::min(b, t_stop);
-        if (b <= a) continue;
-        pieces.add(a, b, glm::dot(gs[i].c - eye, w), i);
-      }
+      add_particle_pieces(gs, eye, w, t_stop, pieces);
       const float* back = behind.at(x, y);
       const glm::dvec3 L = pieces.integrate(
           [&](size_t i, double a, double b) { return gaussian_depth_between(gs[i], eye, w, a, b); },

@@ -20,6 +20,19 @@ double particle_optical_depth(const glm::dvec3& centre, double radius, double de
   return gaussian_optical_depth(clamped_gaussian(centre, radius, density), o, w, a, b);
 }
 
+void add_particle_pieces(const std::vector<ClampedGaussian>& gs, const glm::dvec3& eye,
+                         const glm::dvec3& w, double t_stop, RayPieces& pieces) {
+  pieces.clear();
+  for (size_t i = 0; i < gs.size(); ++i) {
+    double a, b;
+    if (!gaussian_cube_span(gs[i], eye, w, a, b)) continue;
+    a = std::max(a, 0.0);
+    b = std::min(b, t_stop);
+    if (b <= a) continue;
+    pieces.add(a, b, glm::dot(gs[i].c - eye, w), i);
+  }
+}
+
 namespace {
 
 // The shared ray integration: `behind(x, y)` is what the ray sees after the medium and
@@ -45,15 +58,7 @@ RgbImage integrate_particles(const ParticlePool& p, const CameraFrame& camera, B
     for (int x = 0; x < img.width; ++x) {
       const glm::dvec3 w = pixel_ray_direction(camera, x + 0.5, y + 0.5);
       const double t_stop = stop(x, y);
-      pieces.clear();
-      for (size_t i = 0; i < gs.size(); ++i) {
-        double a, b;
-        if (!gaussian_cube_span(gs[i], eye, w, a, b)) continue;
-        a = std::max(a, 0.0);
-        b = std::min(b, t_stop);
-        if (b <= a) continue;
-        pieces.add(a, b, glm::dot(gs[i].c - eye, w), i);
-      }
+      add_particle_pieces(gs, eye, w, t_stop, pieces);
       const glm::dvec3 L = pieces.integrate(
           [&](size_t i, double a, double b) { return gaussian_depth_between(gs[i], eye, w, a, b); },
           [&](size_t i) { return colours[i]; }, behind(x, y), max_piece_depth);

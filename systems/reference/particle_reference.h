@@ -12,7 +12,9 @@
 
 #include "components/volume_medium.h"
 #include "engine/math/camera_math.h"
+#include "engine/math/gaussian_line_integral.h"
 #include "engine/particles/particle_pool.h"
+#include "systems/reference/ray_pieces.h"
 #include "systems/reference/rgb_image.h"
 
 namespace pyro {
@@ -20,6 +22,11 @@ namespace pyro {
 // Optical depth of one particle along the ray o + t w over t in [a, b] (closed form above).
 double particle_optical_depth(const glm::dvec3& centre, double radius, double density,
                               const glm::dvec3& o, const glm::dvec3& w, double a, double b);
+
+// The ray eye + t w's pieces (ray_pieces.h), cleared first: every particle of `gs` it meets in
+// [0, t_stop], by its index in gs.
+void add_particle_pieces(const std::vector<ClampedGaussian>& gs, const glm::dvec3& eye,
+                         const glm::dvec3& w, double t_stop, RayPieces& pieces);
 
 RgbImage render_particles_reference(const ParticlePool& particles, const CameraFrame& camera,
                                     const glm::dvec3& background, int threads = 0,
