@@ -2,6 +2,10 @@
 
 #include "systems/scene/scene_budget.h"
 
+#include <string>
+
+#include "engine/core/user_error.h"
+
 namespace pyro {
 
 namespace {
@@ -52,6 +56,13 @@ ResolvedScene resolve_scene(const SceneDescription& scene, const RuntimeOptions&
   r.quality = options.quality;
   r.substeps = options.quality ? options.quality->substeps : 1;
   r.settings = merge_render_settings(r.scene, options);
+  // The light phase lights Gaussian splats; spherical and planar billboards (explosions among
+  // them) have their own shading, and their density is an extinction, not a splat's opacity.
+  if (r.scene.shadows && r.settings.particles != ParticleShape::gaussian)
+    throw UserError(scene.file.empty() ? "scene" : scene.file, "/shadows",
+                    "lit media with Gaussian particles; found \"particles\": \"" +
+                        std::string(name_of(r.settings.particles)) +
+                        "\" (spherical and planar billboards keep their own shading, docs/lighting.md)");
   r.shading = explosion_shading(r.scene.render);
   r.stereo = stereo_camera(r.scene.camera, options);
   r.clock.dt = 1.0f / r.scene.frames_per_second;
