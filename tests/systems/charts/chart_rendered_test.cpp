@@ -56,6 +56,29 @@ TEST(ChartBillboardModes, ThreeModesPerSceneWithinTheAccuracyBar) {
   }
 }
 
+TEST(ChartShadows, EverySettingAgainstTheReferenceWithShadowsHelp) {
+  ShadowsChartOptions o;
+  o.scenes = {content_path("scenes/clouds.json")};
+  o.map_sizes = {8, 64};
+  o.width = 64;
+  o.height = 48;
+  o.frames = 1;
+  const ChartTable t = chart_shadows(o);
+  ASSERT_EQ(t.rows.size(), 4u);  // none, rays, two maps
+  EXPECT_EQ(t.rows[0].group, "none");
+  EXPECT_EQ(t.rows[1].group, "rays");
+  EXPECT_EQ(t.rows[3].label, "clouds map 64x32");
+  for (const auto& r : t.rows) {
+    EXPECT_EQ(r.extra[1], 1500.0) << r.label;  // the clouds' particles
+    EXPECT_GT(r.time, 0.0) << r.label;
+  }
+  // Shadows bring the frame closer to the reference; the finer map closer than the coarse one.
+  EXPECT_LT(t.rows[1].error, t.rows[0].error);
+  EXPECT_LT(t.rows[3].error, t.rows[2].error);
+  EXPECT_LT(t.rows[3].error, 0.03);  // the project's image accuracy bar
+  EXPECT_GT(t.rows[1].extra[0], t.rows[0].extra[0]);  // rays cost the light phase more than none
+}
+
 TEST(ChartParticleBudget, LooserTargetsKeepFewerParticlesAndCostError) {
   ParticleBudgetChartOptions o;
   o.files = {content_path("volumes/sample_cloud.vdb")};

@@ -144,6 +144,8 @@ const std::map<std::string, std::vector<std::string>>& cheap_json_runs() {
       {"bench import-scale", {"bench", "import-scale", "--voxels", "1000"}},
       {"bench vdb", {"bench", "vdb", content_path("volumes/sample_cloud.vdb"), "--error", "0.5", "--width", "16",
                      "--height", "16", "--vdb-render", "/bin/false"}},
+      {"bench relight", {"bench", "relight", content_path("volumes/sample_cloud.vdb"), "--directions", "1",
+                         "--width", "16", "--height", "16", "--frames", "1"}},
   };
   return runs;
 }
