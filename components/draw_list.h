@@ -60,16 +60,10 @@ struct EyeDrawLists {
   // a pool changes (the next frame's spawn and simulate phases).
   std::vector<const ParticlePool*> pools;
   // Beside each pool, the light phase's light for its particles (components/particle_light.h), or
-  // null: unlit, the pool's colours as they are.
+  // null: unlit, the pool's colours as they are. Only Gaussian splats are lit (the billboard
+  // renderer's SplatLighting); the gathered lists keep the pools' colours.
   std::vector<const ParticleLight*> lights;
 };
-
-// Particle i's colour: its albedo (the pool's colour) times the light reaching it when `light`
-// covers the pool, else its colour as given.
-inline glm::vec3 particle_color(const ParticlePool& p, const ParticleLight* light, size_t i) {
-  const glm::vec3 albedo(p.r[i], p.g[i], p.b[i]);
-  return light && light->covers(p.size()) ? albedo * light->light[i] : albedo;
-}
 
 // Eye `eye`'s list in the gathered form (a copy; an indexed list is gathered from the pools, with
 // their colours as they are: lit splats are lit as they are drawn, billboard_renderer.h).

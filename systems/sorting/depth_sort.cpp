@@ -114,7 +114,6 @@ void pack_particles(size_t stride, const SortScratch& s, std::vector<glm::vec4>&
   records.resize(offsets.back() * stride);
   for (size_t set = 0; set < s.sets.size(); ++set) {
     const ParticlePool& p = *s.sets[set].second;
-    const ParticleLight* light = s.lights[set];
     const uint32_t entity = s.sets[set].first;
     glm::vec4* packed = records.data() + offsets[set] * stride;
     tbb::parallel_for(
@@ -123,7 +122,7 @@ void pack_particles(size_t stride, const SortScratch& s, std::vector<glm::vec4>&
           for (size_t i = r.begin(); i < r.end(); ++i) {
             glm::vec4* record = packed + i * stride;
             record[0] = {p.px[i], p.py[i], p.pz[i], p.radius[i]};
-            record[1] = glm::vec4(particle_color(p, light, i), p.density[i]);
+            record[1] = {p.r[i], p.g[i], p.b[i], p.density[i]};
             if (stride < 3) continue;
             // The detail key: the golden-ratio fraction of the particle id (mixed with its set's
             // entity index), so consecutive ids spread evenly over [0, 1) and stay put for a
@@ -163,16 +162,15 @@ double ms_since(std::chrono::steady_clock::time_point& start) {
 
 void collect_particle_sets(const ecs::World& world, SortScratch& s) {
   s.sets.clear();
-  std::vector<std::pair<uint32_t, const ParticleLight*>> lit;
-  world.each<ParticleSet>([&](ecs::Entity e, const ParticleSet& set) {
-    s.sets.emplace_back(e.index, &set.pool);
-    lit.emplace_back(e.index, world.try_get<const ParticleLight>(e));
-  });
+  world.each<ParticleSet>(
+      [&](ecs::Entity e, const ParticleSet& set) { s.sets.emplace_back(e.index, &set.pool); });
   // Sets in entity-index order, so the tie-break does not depend on the storage's history.
   std::sort(s.sets.begin(), s.sets.end());
-  std::sort(lit.begin(), lit.end());
+  // Beside each set, the light phase's light for it (lit media), or null.
+  const ecs::ComponentPool<ParticleLight>* lights = world.pool<const ParticleLight>();
   s.lights.clear();
-  for (const auto& [index, light] : lit) s.lights.push_back(light);
+  for (const auto& [index, pool] : s.sets)
+    s.lights.push_back(lights ? lights->try_get(index) : nullptr);
 }
 
 void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,
