@@ -16,6 +16,10 @@
 
 namespace pyro {
 
+// How far a particle's cube reaches from its centre in any direction, in standard deviations:
+// its half-diagonal, 3 sqrt 3 (what a projection of it across a light can cover).
+inline constexpr double kGaussianCubeReach = 3.0 * 1.7320508075688772;
+
 struct ClampedGaussian {
   glm::dvec3 c{0.0};
   double s = 1.0;  // standard deviation: the radius over 3

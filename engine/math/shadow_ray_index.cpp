@@ -17,7 +17,6 @@ void orthonormal_basis(const glm::dvec3& w, glm::dvec3& u, glm::dvec3& v) {
 
 namespace {
 
-constexpr double kProjectedExtent = 3.0 * 1.7320508075688772;  // 3 s sqrt 3, in units of s
 constexpr long kMaxCells = 1L << 22;
 
 double median_radius(const std::vector<ClampedGaussian>& gs) {
@@ -25,7 +24,7 @@ double median_radius(const std::vector<ClampedGaussian>& gs) {
   s.reserve(gs.size());
   for (const ClampedGaussian& g : gs) s.push_back(g.s);
   std::nth_element(s.begin(), s.begin() + long(s.size() / 2), s.end());
-  return kProjectedExtent * s[s.size() / 2];
+  return kGaussianCubeReach * s[s.size() / 2];
 }
 
 }  // namespace
@@ -36,7 +35,7 @@ ShadowRayIndex::ShadowRayIndex(std::vector<ClampedGaussian> particles, const glm
   if (particles_.empty()) return;
   double u_lo = std::numeric_limits<double>::max(), v_lo = u_lo, u_hi = -u_lo, v_hi = -u_lo;
   for (const ClampedGaussian& g : particles_) {
-    const double e = kProjectedExtent * g.s, u = glm::dot(g.c, u_axis_), v = glm::dot(g.c, v_axis_);
+    const double e = kGaussianCubeReach * g.s, u = glm::dot(g.c, u_axis_), v = glm::dot(g.c, v_axis_);
     u_lo = std::min(u_lo, u - e);
     u_hi = std::max(u_hi, u + e);
     v_lo = std::min(v_lo, v - e);
@@ -52,7 +51,7 @@ ShadowRayIndex::ShadowRayIndex(std::vector<ClampedGaussian> particles, const glm
   nv_ = std::max(1, int(std::ceil((v_hi - v_lo) / cell_)));
   // Counting sort of (cell, particle) pairs: each cell's list in the particles' order.
   auto for_each_cell = [&](const ClampedGaussian& g, auto&& visit) {
-    const double e = kProjectedExtent * g.s, u = glm::dot(g.c, u_axis_) - u0_, v = glm::dot(g.c, v_axis_) - v0_;
+    const double e = kGaussianCubeReach * g.s, u = glm::dot(g.c, u_axis_) - u0_, v = glm::dot(g.c, v_axis_) - v0_;
     const int i0 = std::clamp(int(std::floor((u - e) / cell_)), 0, nu_ - 1);
     const int i1 = std::clamp(int(std::floor((u + e) / cell_)), 0, nu_ - 1);
     const int j0 = std::clamp(int(std::floor((v - e) / cell_)), 0, nv_ - 1);

@@ -13,8 +13,6 @@ namespace pyro {
 
 namespace {
 
-constexpr double kProjectedExtent = 3.0 * 1.7320508075688772;  // a cube's reach: 3 s sqrt 3
-
 // The map's light-space frame: texel (i, j, k) is centred at
 // (u0 + (i + 0.5) du) u + (v0 + (j + 0.5) du) v + (w0 + (k + 0.5) dw) w.
 struct MapFrame {
@@ -31,8 +29,8 @@ MapFrame fit_frame(const std::vector<ClampedGaussian>& gs, const glm::dvec3& lig
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   for (const ClampedGaussian& g : gs) {
     const glm::dvec3 c(glm::dot(g.c, f.u), glm::dot(g.c, f.v), glm::dot(g.c, f.w));
-    lo = glm::min(lo, c - kProjectedExtent * g.s);
-    hi = glm::max(hi, c + kProjectedExtent * g.s);
+    lo = glm::min(lo, c - kGaussianCubeReach * g.s);
+    hi = glm::max(hi, c + kGaussianCubeReach * g.s);
   }
   const glm::dvec3 extent = glm::max(hi - lo, glm::dvec3(1e-6));
   const int across = std::max(size.across, 4), slices = std::max(size.slices, 4);
@@ -65,7 +63,7 @@ glm::mat4 world_to_texture(const MapFrame& f) {
 // columns afterwards).
 void splat_rows(const ClampedGaussian& g, const MapFrame& f, int j_begin, int j_end,
                 std::vector<float>& depth, std::vector<float>& steps) {
-  const double e = kProjectedExtent * g.s;
+  const double e = kGaussianCubeReach * g.s;
   const double cu = glm::dot(g.c, f.u) - f.u0, cv = glm::dot(g.c, f.v) - f.v0;
   const int i0 = std::max(0, int(std::floor((cu - e) / f.du - 0.5)));
   const int i1 = std::min(f.nu - 1, int(std::ceil((cu + e) / f.du - 0.5)));
@@ -108,7 +106,7 @@ void build_opacity_shadow_map(const std::vector<ClampedGaussian>& particles,
   const int strips = (f.nv + kRowsPerStrip - 1) / kRowsPerStrip;
   std::vector<std::vector<uint32_t>> reaching(static_cast<size_t>(strips));
   for (size_t p = 0; p < particles.size(); ++p) {
-    const double cv = glm::dot(particles[p].c, f.v) - f.v0, e = kProjectedExtent * particles[p].s;
+    const double cv = glm::dot(particles[p].c, f.v) - f.v0, e = kGaussianCubeReach * particles[p].s;
     const int s0 = std::clamp(int(std::floor((cv - e) / f.du - 0.5)) / kRowsPerStrip, 0, strips - 1);
     const int s1 = std::clamp(int(std::ceil((cv + e) / f.du - 0.5)) / kRowsPerStrip, 0, strips - 1);
     for (int s = s0; s <= s1; ++s) reaching[size_t(s)].push_back(uint32_t(p));

@@ -54,21 +54,17 @@ std::vector<ClampedGaussian> shadow_casters(ecs::World& world) {
 
 namespace {
 
-// Particle i's light from `depth(p)`, the optical depth toward the sun at p of every particle: at
-// its centre, and that of the others with its gradient (central differences one standard
-// deviation apart), its own closed form taken out.
+// Particle i's light from `depth(p)`, the optical depth toward the sun at p of every particle:
+// that of the others at its centre and its gradient (central differences one standard deviation
+// apart), its own closed form taken out.
 template <class Depth>
-void light_particle(const ParticlePool& p, std::size_t i, const SceneLighting& lighting,
-                    const glm::dvec3& toward_sun, Depth&& depth, ParticleLight& light) {
+void light_particle(const ParticlePool& p, std::size_t i, const glm::dvec3& toward_sun, Depth&& depth,
+                    ParticleLight& light) {
   const glm::dvec3 c(p.px[i], p.py[i], p.pz[i]);
   const ClampedGaussian self = clamped_gaussian(c, p.radius[i], std::max(p.density[i], 0.0f));
   const auto others = [&](const glm::dvec3& x) {
     return depth(x) - gaussian_optical_depth(self, x, toward_sun, 0.0, std::numeric_limits<double>::infinity());
   };
-  const double total = depth(c);
-  const float t = float(std::exp(-total));
-  light.sun_transmittance[i] = t;
-  light.light[i] = lighting.sun_color * t + lighting.ambient;
   glm::vec4 o(float(others(c)), 0.0f, 0.0f, 0.0f);
   const double h = std::max(self.s, 1e-6);
   for (int a = 0; a < 3; ++a) {
@@ -81,36 +77,24 @@ void light_particle(const ParticlePool& p, std::size_t i, const SceneLighting& l
 
 // Lights every particle from `depth` (see light_particle), set by set in entity-index order.
 template <class Depth>
-void write_particle_light(ecs::World& world, const SceneLighting& lighting, Depth&& depth) {
-  const glm::dvec3 toward_sun = -glm::normalize(glm::dvec3(lighting.sun_direction));
+void write_particle_light(ecs::World& world, const glm::vec3& sun_direction, Depth&& depth) {
+  const glm::dvec3 toward_sun = -glm::normalize(glm::dvec3(sun_direction));
   for (const auto& [index, set] : lit_sets(world)) {
     const ParticlePool& p = *set.first;
     ParticleLight& light = *set.second;
-    light.sun_transmittance.resize(p.size());
-    light.light.resize(p.size());
     light.others_depth.resize(p.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), kParticlesPerTask),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i < r.end(); ++i)
-                          light_particle(p, i, lighting, toward_sun, depth, light);
+                          light_particle(p, i, toward_sun, depth, light);
                       });
   }
 }
 
-// Lit without shadows: every particle sees the whole sun.
-void write_unshadowed_light(ecs::World& world, const SceneLighting& lighting) {
-  for (const auto& [index, set] : lit_sets(world)) {
-    ParticleLight& light = *set.second;
-    const std::size_t n = set.first->size();
-    light.sun_transmittance.assign(n, 1.0f);
-    light.light.assign(n, lighting.sun_color + lighting.ambient);
-    light.others_depth.assign(n, glm::vec4(0.0f));
-  }
+// Lit without shadows: no other particle stands between any particle and the sun.
+void write_unshadowed_light(ecs::World& world) {
+  for (const auto& [index, set] : lit_sets(world)) set.second->others_depth.assign(set.first->size(), glm::vec4(0.0f));
 }
-
-}  // namespace
-
-namespace {
 
 const SceneLighting& lighting_of(ecs::World& world) {
   static const SceneLighting defaults;
@@ -136,10 +120,10 @@ void run_shadow_map(ecs::World& world) {
   }
   if (settings->method == ShadowMethod::rays) return;
   if (!particles_use_it || !wanted) {
-    write_unshadowed_light(world, lighting);
+    write_unshadowed_light(world);
     return;
   }
-  write_particle_light(world, lighting,
+  write_particle_light(world, lighting.sun_direction,
                        [&](const glm::dvec3& p) { return double(sample_optical_depth(volume, glm::vec3(p))); });
 }
 
@@ -148,11 +132,12 @@ void run_shadow_rays(ecs::World& world) {
   if (!settings || settings->method != ShadowMethod::rays) return;
   const SceneLighting& lighting = lighting_of(world);
   if (!sunlit(lighting)) {
-    write_unshadowed_light(world, lighting);
+    write_unshadowed_light(world);
     return;
   }
   const ShadowRayIndex index(shadow_casters(world), glm::dvec3(lighting.sun_direction));
-  write_particle_light(world, lighting, [&](const glm::dvec3& p) { return index.optical_depth_to_light(p); });
+  write_particle_light(world, lighting.sun_direction,
+                       [&](const glm::dvec3& p) { return index.optical_depth_to_light(p); });
 }
 
 }  // namespace

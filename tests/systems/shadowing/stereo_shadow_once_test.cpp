@@ -41,7 +41,7 @@ TEST(StereoShadows, TheLightPhaseRunsOncePerFrameForBothEyes) {
     // The opaque surfaces' map: built once a frame (each build bumps its version).
     EXPECT_EQ(runtime.world().resource<const ShadowVolume>().version, 3u);
     size_t lit = 0;
-    runtime.world().each<const ParticleLight>([&](const ParticleLight& l) { lit += l.light.size(); });
+    runtime.world().each<const ParticleLight>([&](const ParticleLight& l) { lit += l.others_depth.size(); });
     EXPECT_EQ(lit, 1500u);  // every particle lit, once
   }
 }
