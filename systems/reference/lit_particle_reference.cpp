@@ -15,8 +15,8 @@ namespace pyro {
 
 namespace {
 
-std::vector<ClampedGaussian> casters(const ParticlePool& p) {
-  std::vector<ClampedGaussian> gs;
+std::vector<ShadowCaster> casters(const ParticlePool& p) {
+  std::vector<ShadowCaster> gs;
   for (size_t i = 0; i < p.size(); ++i)
     if (p.density[i] > 0.0f) gs.push_back(clamped_gaussian({p.px[i], p.py[i], p.pz[i]}, p.radius[i], p.density[i]));
   return gs;
@@ -64,7 +64,7 @@ RgbImage render_lit_particles_reference_over(const ParticlePool& p, const Camera
       gs.push_back(clamped_gaussian({p.px[i], p.py[i], p.pz[i]}, p.radius[i], p.density[i]));
       albedo.push_back({p.r[i], p.g[i], p.b[i]});
     }
-  const ShadowRayIndex index(gs, sun.travel);
+  const ShadowRayIndex index(std::vector<ShadowCaster>(gs.begin(), gs.end()), sun.travel);
   RgbImage img = behind;
   const glm::dvec3 eye(camera.eye);
   parallel_rows(img.height, threads, [&](int y) {

@@ -21,16 +21,16 @@ struct MapFrame {
   int nu = 0, nv = 0, nw = 0;
 };
 
-MapFrame fit_frame(const std::vector<ClampedGaussian>& gs, const glm::dvec3& light_travel,
+MapFrame fit_frame(const std::vector<ShadowCaster>& gs, const glm::dvec3& light_travel,
                    ShadowMapSize size) {
   MapFrame f;
   f.w = glm::normalize(light_travel);
   orthonormal_basis(-f.w, f.u, f.v);
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (const ClampedGaussian& g : gs) {
+  for (const ShadowCaster& g : gs) {
     const glm::dvec3 c(glm::dot(g.c, f.u), glm::dot(g.c, f.v), glm::dot(g.c, f.w));
-    lo = glm::min(lo, c - kGaussianCubeReach * g.s);
-    hi = glm::max(hi, c + kGaussianCubeReach * g.s);
+    lo = glm::min(lo, c - caster_reach(g));
+    hi = glm::max(hi, c + caster_reach(g));
   }
   const glm::dvec3 extent = glm::max(hi - lo, glm::dvec3(1e-6));
   const int across = std::max(size.across, 4), slices = std::max(size.slices, 4);
@@ -58,12 +58,12 @@ glm::mat4 world_to_texture(const MapFrame& f) {
 }
 
 // One particle's optical depth added to the texel columns of rows [j_begin, j_end): where a
-// column's ray enters the particle's cube at a and leaves at b, the slices inside get the depth
-// over [a, t_k] and the first slice past b steps up by the whole [a, b] (summed along the
-// columns afterwards).
-void splat_rows(const ClampedGaussian& g, const MapFrame& f, int j_begin, int j_end,
+// column's ray enters the particle (a Gaussian's cube, a sphere) at a and leaves at b, the slices
+// inside get the depth over [a, t_k] and the first slice past b steps up by the whole [a, b]
+// (summed along the columns afterwards).
+void splat_rows(const ShadowCaster& g, const MapFrame& f, int j_begin, int j_end,
                 std::vector<float>& depth, std::vector<float>& steps) {
-  const double e = kGaussianCubeReach * g.s;
+  const double e = caster_reach(g);
   const double cu = glm::dot(g.c, f.u) - f.u0, cv = glm::dot(g.c, f.v) - f.v0;
   const int i0 = std::max(0, int(std::floor((cu - e) / f.du - 0.5)));
   const int i1 = std::min(f.nu - 1, int(std::ceil((cu + e) / f.du - 0.5)));
@@ -74,10 +74,10 @@ void splat_rows(const ClampedGaussian& g, const MapFrame& f, int j_begin, int j_
     for (int i = i0; i <= i1; ++i) {
       const glm::dvec3 o = (f.u0 + (i + 0.5) * f.du) * f.u + (f.v0 + (j + 0.5) * f.du) * f.v + f.w0 * f.w;
       double a, b;
-      if (!gaussian_cube_span(g, o, f.w, a, b)) continue;
+      if (!caster_span(g, o, f.w, a, b)) continue;
       a = std::max(a, 0.0);
       const size_t texel = size_t(j) * size_t(f.nu) + size_t(i);
-      const GaussianRayProfile ray = gaussian_ray_profile(g, o, f.w);
+      const CasterRayProfile ray = caster_ray_profile(g, o, f.w);
       const double entry = ray.cumulative(a);
       int k = std::max(0, int(std::ceil(a / f.dw - 0.5)));
       for (; k < f.nw && (k + 0.5) * f.dw < b; ++k)
@@ -88,7 +88,7 @@ void splat_rows(const ClampedGaussian& g, const MapFrame& f, int j_begin, int j_
 
 }  // namespace
 
-void build_opacity_shadow_map(const std::vector<ClampedGaussian>& particles,
+void build_opacity_shadow_map(const std::vector<ShadowCaster>& particles,
                               const glm::dvec3& light_travel, ShadowMapSize size, ShadowVolume& out) {
   ++out.version;
   out.optical_depth.clear();
@@ -106,7 +106,7 @@ void build_opacity_shadow_map(const std::vector<ClampedGaussian>& particles,
   const int strips = (f.nv + kRowsPerStrip - 1) / kRowsPerStrip;
   std::vector<std::vector<uint32_t>> reaching(static_cast<size_t>(strips));
   for (size_t p = 0; p < particles.size(); ++p) {
-    const double cv = glm::dot(particles[p].c, f.v) - f.v0, e = kGaussianCubeReach * particles[p].s;
+    const double cv = glm::dot(particles[p].c, f.v) - f.v0, e = caster_reach(particles[p]);
     const int s0 = std::clamp(int(std::floor((cv - e) / f.du - 0.5)) / kRowsPerStrip, 0, strips - 1);
     const int s1 = std::clamp(int(std::ceil((cv + e) / f.du - 0.5)) / kRowsPerStrip, 0, strips - 1);
     for (int s = s0; s <= s1; ++s) reaching[size_t(s)].push_back(uint32_t(p));

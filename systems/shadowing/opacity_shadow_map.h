@@ -3,14 +3,15 @@
 // toward the light, stored on slices perpendicular to the light's direction and interpolated
 // between them. Kim & Neumann render the slices by rasterising the particles; here each texel
 // of each slice holds the exact sum of the particles' closed-form line integrals from the
-// light's side of the media to the texel's centre (engine/math/gaussian_line_integral.h), so the
-// map's only error is its interpolation between texels and slices, which its size sets.
+// light's side of the media to the texel's centre (Gaussians or spheres,
+// engine/math/shadow_caster.h), so the map's only error is its interpolation between texels and
+// slices, which its size sets.
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "components/shadow_volume.h"
-#include "engine/math/gaussian_line_integral.h"
+#include "engine/math/shadow_caster.h"
 
 namespace pyro {
 
@@ -23,7 +24,7 @@ struct ShadowMapSize {
 // fitted to the particles with one empty texel (or slice) beyond them on every side, so that
 // texture coordinates outside it read no medium across the light and the whole column past it.
 // `out.version` is incremented. No particles: out is emptied.
-void build_opacity_shadow_map(const std::vector<ClampedGaussian>& particles,
+void build_opacity_shadow_map(const std::vector<ShadowCaster>& particles,
                               const glm::dvec3& light_travel, ShadowMapSize size, ShadowVolume& out);
 
 // The optical depth at world point p, interpolated trilinearly between texel centres and clamped

@@ -13,6 +13,7 @@
 #include "components/mesh_instance.h"
 #include "components/particle_light.h"
 #include "components/particle_set.h"
+#include "components/render_settings.h"
 #include "components/scene_lighting.h"
 #include "components/shadow_settings.h"
 #include "components/shadow_volume.h"
@@ -41,32 +42,49 @@ bool sunlit(const SceneLighting& lighting) {
 
 }  // namespace
 
-std::vector<ClampedGaussian> shadow_casters(ecs::World& world) {
-  std::vector<ClampedGaussian> gs;
+namespace {
+
+bool sphere_casters(ecs::World& world) {
+  const RenderSettings* settings = world.try_resource<const RenderSettings>();
+  return settings && settings->media_layers();
+}
+
+// Particle i of `p` as the light phase sees it.
+ShadowCaster caster_of(const ParticlePool& p, std::size_t i, bool spheres) {
+  const glm::dvec3 c(p.px[i], p.py[i], p.pz[i]);
+  const float density = std::max(p.density[i], 0.0f);
+  if (spheres) return ConeSphere{c, p.radius[i], double(density) * p.opacity[i]};
+  return clamped_gaussian(c, p.radius[i], density);
+}
+
+}  // namespace
+
+std::vector<ShadowCaster> shadow_casters(ecs::World& world) {
+  const bool spheres = sphere_casters(world);
+  std::vector<ShadowCaster> casters;
   for (const auto& [index, set] : lit_sets(world)) {
     const ParticlePool& p = *set.first;
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.density[i] > 0.0f)
-        gs.push_back(clamped_gaussian({p.px[i], p.py[i], p.pz[i]}, p.radius[i], p.density[i]));
+      if (p.density[i] > 0.0f) casters.push_back(caster_of(p, i, spheres));
   }
-  return gs;
+  return casters;
 }
 
 namespace {
 
 // Particle i's light from `depth(p)`, the optical depth toward the sun at p of every particle:
-// that of the others at its centre and its gradient (central differences one standard deviation
-// apart), its own closed form taken out.
+// that of the others at its centre and its gradient (central differences a third of its radius
+// apart: a Gaussian's standard deviation), its own closed form taken out.
 template <class Depth>
-void light_particle(const ParticlePool& p, std::size_t i, const glm::dvec3& toward_sun, Depth&& depth,
-                    ParticleLight& light) {
-  const glm::dvec3 c(p.px[i], p.py[i], p.pz[i]);
-  const ClampedGaussian self = clamped_gaussian(c, p.radius[i], std::max(p.density[i], 0.0f));
+void light_particle(const ParticlePool& p, std::size_t i, bool spheres, const glm::dvec3& toward_sun,
+                    Depth&& depth, ParticleLight& light) {
+  const ShadowCaster self = caster_of(p, i, spheres);
+  const glm::dvec3 c = self.c;
   const auto others = [&](const glm::dvec3& x) {
-    return depth(x) - gaussian_optical_depth(self, x, toward_sun, 0.0, std::numeric_limits<double>::infinity());
+    return depth(x) - caster_optical_depth(self, x, toward_sun, 0.0, std::numeric_limits<double>::infinity());
   };
   glm::vec4 o(float(others(c)), 0.0f, 0.0f, 0.0f);
-  const double h = std::max(self.s, 1e-6);
+  const double h = std::max(double(p.radius[i]) / 3.0, 1e-6);
   for (int a = 0; a < 3; ++a) {
     glm::dvec3 e(0.0);
     e[a] = h;
@@ -79,6 +97,7 @@ void light_particle(const ParticlePool& p, std::size_t i, const glm::dvec3& towa
 template <class Depth>
 void write_particle_light(ecs::World& world, const glm::vec3& sun_direction, Depth&& depth) {
   const glm::dvec3 toward_sun = -glm::normalize(glm::dvec3(sun_direction));
+  const bool spheres = sphere_casters(world);
   for (const auto& [index, set] : lit_sets(world)) {
     const ParticlePool& p = *set.first;
     ParticleLight& light = *set.second;
@@ -86,7 +105,7 @@ void write_particle_light(ecs::World& world, const glm::vec3& sun_direction, Dep
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), kParticlesPerTask),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i < r.end(); ++i)
-                          light_particle(p, i, toward_sun, depth, light);
+                          light_particle(p, i, spheres, toward_sun, depth, light);
                       });
   }
 }
@@ -145,7 +164,7 @@ void run_shadow_rays(ecs::World& world) {
 ecs::SystemDesc shadow_map_system() {
   return {.name = "shadow_map",
           .phase = ecs::Phase::light,
-          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, ParticleSet, MeshInstance>,
+          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, RenderSettings, ParticleSet, MeshInstance>,
                                     ecs::Writes<ShadowVolume, ParticleLight>>(),
           .run = run_shadow_map,
           .setup =
@@ -158,7 +177,7 @@ ecs::SystemDesc shadow_map_system() {
 ecs::SystemDesc shadow_ray_system() {
   return {.name = "shadow_rays",
           .phase = ecs::Phase::light,
-          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, ParticleSet>,
+          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, RenderSettings, ParticleSet>,
                                     ecs::Writes<ParticleLight>>(),
           .run = run_shadow_rays,
           .after = {"shadow_map"}};

@@ -11,13 +11,15 @@
 
 #include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
-#include "engine/math/gaussian_line_integral.h"
+#include "engine/math/shadow_caster.h"
 
 namespace pyro {
 
 // Every live particle of the world's particle sets with density > 0, in entity-index order: the
-// media that cast shadows.
-std::vector<ClampedGaussian> shadow_casters(ecs::World& world);
+// media that cast shadows. Gaussians, or with the explosion's media layers (RenderSettings::
+// media_layers) spheres whose extinction is the particle's density times its opacity, as the
+// billboards draw them.
+std::vector<ShadowCaster> shadow_casters(ecs::World& world);
 
 ecs::SystemDesc shadow_map_system();
 ecs::SystemDesc shadow_ray_system();

@@ -53,17 +53,21 @@ TEST(GaussianLineIntegral, TheTailFractionAndItsPolynomial) {
   EXPECT_EQ(evaluate_tail_polynomial(c, 7.0), evaluate_tail_polynomial(c, 3.0));
 }
 
-std::vector<ClampedGaussian> random_particles(Rng& rng, int n) {
-  std::vector<ClampedGaussian> gs;
-  for (int i = 0; i < n; ++i)
-    gs.push_back(clamped_gaussian({rng.uniform(-3.0f, 3.0f), rng.uniform(0.0f, 2.0f), rng.uniform(-3.0f, 3.0f)},
-                                  rng.uniform(0.1f, 0.9f), rng.uniform(0.05f, 0.6f)));
+// Gaussians, every fourth particle an explosion's sphere instead.
+std::vector<ShadowCaster> random_particles(Rng& rng, int n) {
+  std::vector<ShadowCaster> gs;
+  for (int i = 0; i < n; ++i) {
+    const glm::dvec3 c(rng.uniform(-3.0f, 3.0f), rng.uniform(0.0f, 2.0f), rng.uniform(-3.0f, 3.0f));
+    const float radius = rng.uniform(0.1f, 0.9f), density = rng.uniform(0.05f, 0.6f);
+    if (i % 4 == 0) gs.push_back(ConeSphere{c, radius, 3.0 * density});
+    else gs.push_back(clamped_gaussian(c, radius, density));
+  }
   return gs;
 }
 
 TEST(ShadowRayIndex, EqualsTheSumOverEveryParticle) {
   Rng rng(77);
-  const std::vector<ClampedGaussian> gs = random_particles(rng, 400);
+  const std::vector<ShadowCaster> gs = random_particles(rng, 400);
   for (const glm::dvec3 travel : {glm::dvec3(-0.5, -1.0, -0.35), glm::dvec3(0.0, -1.0, 0.0),
                                   glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.3, 0.2, -1.0)}) {
     const ShadowRayIndex index(gs, travel);
@@ -72,7 +76,9 @@ TEST(ShadowRayIndex, EqualsTheSumOverEveryParticle) {
     for (int k = 0; k < 300; ++k) {
       const glm::dvec3 p(rng.uniform(-4.0f, 4.0f), rng.uniform(-1.0f, 3.0f), rng.uniform(-4.0f, 4.0f));
       double all = 0.0;
-      for (const ClampedGaussian& g : gs) all += gaussian_optical_depth(g, p, toward, 0.0, kInf);
+      for (const ShadowCaster& g : gs)
+        all += g.shape == CasterShape::sphere ? sphere_optical_depth(g.sphere(), p, toward, 0.0, kInf)
+                                              : gaussian_optical_depth(g.gaussian(), p, toward, 0.0, kInf);
       EXPECT_NEAR(index.optical_depth_to_light(p), all, 1e-12 * (1.0 + all)) << k;
       largest = std::max(largest, all);
     }

@@ -16,12 +16,16 @@
 namespace pyro {
 namespace {
 
-std::vector<ClampedGaussian> cloud(int n) {
+// Gaussians, and with `spheres` every third particle an explosion's sphere.
+std::vector<ShadowCaster> cloud(int n, bool spheres = false) {
   Rng rng(5);
-  std::vector<ClampedGaussian> gs;
-  for (int i = 0; i < n; ++i)
-    gs.push_back(clamped_gaussian({rng.uniform(-2.0f, 2.0f), rng.uniform(3.0f, 4.0f), rng.uniform(-2.0f, 2.0f)},
-                                  rng.uniform(0.2f, 0.6f), rng.uniform(0.1f, 0.5f)));
+  std::vector<ShadowCaster> gs;
+  for (int i = 0; i < n; ++i) {
+    const glm::dvec3 c(rng.uniform(-2.0f, 2.0f), rng.uniform(3.0f, 4.0f), rng.uniform(-2.0f, 2.0f));
+    const float radius = rng.uniform(0.2f, 0.6f), density = rng.uniform(0.1f, 0.5f);
+    if (spheres && i % 3 == 0) gs.push_back(ConeSphere{c, radius, 4.0 * density});
+    else gs.push_back(clamped_gaussian(c, radius, density));
+  }
   return gs;
 }
 
@@ -30,8 +34,10 @@ glm::vec3 texel_centre(const ShadowVolume& map, int i, int j, int k) {
   return glm::vec3(glm::inverse(map.world_to_texture) * glm::vec4(t, 1.0f));
 }
 
-TEST(OpacityShadowMap, HoldsTheExactDepthAtEveryTexelCentre) {
-  const std::vector<ClampedGaussian> gs = cloud(150);
+class OpacityShadowMapOf : public ::testing::TestWithParam<bool> {};
+
+TEST_P(OpacityShadowMapOf, HoldsTheExactDepthAtEveryTexelCentre) {
+  const std::vector<ShadowCaster> gs = cloud(150, GetParam());
   const glm::dvec3 travel(-0.5, -1.0, -0.35);
   ShadowVolume map;
   build_opacity_shadow_map(gs, travel, {40, 24}, map);
@@ -52,8 +58,8 @@ TEST(OpacityShadowMap, HoldsTheExactDepthAtEveryTexelCentre) {
   EXPECT_GT(largest, 1.0);
 }
 
-TEST(OpacityShadowMap, ReadsNothingBesideTheMediaAndTheWholeColumnBeyond) {
-  const std::vector<ClampedGaussian> gs = cloud(150);
+TEST_P(OpacityShadowMapOf, ReadsNothingBesideTheMediaAndTheWholeColumnBeyond) {
+  const std::vector<ShadowCaster> gs = cloud(150, GetParam());
   const glm::dvec3 down(0.0, -1.0, 0.0);
   ShadowVolume map;
   build_opacity_shadow_map(gs, down, {64, 32}, map);
@@ -65,6 +71,9 @@ TEST(OpacityShadowMap, ReadsNothingBesideTheMediaAndTheWholeColumnBeyond) {
   const glm::vec3 ground(below.x, -5.0f, below.z);
   EXPECT_NEAR(sample_optical_depth(map, ground), exact.optical_depth_to_light(glm::dvec3(ground)), 1e-4);
 }
+
+INSTANTIATE_TEST_SUITE_P(GaussiansAndSpheres, OpacityShadowMapOf, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "WithSpheres" : "Gaussians"; });
 
 TEST(OpacityShadowMap, NoParticlesMakeAnEmptyMapAndANewVersion) {
   ShadowVolume map;
