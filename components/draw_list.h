@@ -39,6 +39,9 @@ struct DrawList {
   // (components/particle_medium.h, as a float), and a per-particle detail-window key in [0, 1).
   // Read only by the explosion shading; empty otherwise.
   std::vector<glm::vec4> medium;
+  // Lit explosion media (docs/lighting.md): each particle's ParticleLight::others_depth (the other
+  // particles' optical depth toward the sun at its centre, and its gradient). Empty: unlit.
+  std::vector<glm::vec4> light;
   // Indexed form: entry k of the draw order is particle order[k] of EyeDrawLists::pools taken one
   // after another. Empty in the gathered form.
   std::vector<uint32_t> order;
@@ -60,8 +63,8 @@ struct EyeDrawLists {
   // a pool changes (the next frame's spawn and simulate phases).
   std::vector<const ParticlePool*> pools;
   // Beside each pool, the light phase's light for its particles (components/particle_light.h), or
-  // null: unlit, the pool's colours as they are. Only Gaussian splats are lit (the billboard
-  // renderer's SplatLighting); the gathered lists keep the pools' colours.
+  // null: unlit, the pool's colours as they are. The Gaussian splats read it here (the billboard
+  // renderer's SplatLighting); the explosion's gathered lists carry it in DrawList::light.
   std::vector<const ParticleLight*> lights;
 };
 

@@ -1,8 +1,9 @@
 #pragma once
 // Resource: how the light phase lights the particle media (docs/lighting.md). Present only in a
-// world whose scene has a "shadows" block; without it the splats keep their colours as given,
-// unlit, as before lighting existed. With it each particle's colour is its albedo times the light
-// reaching its centre: the sun's colour times the sun's transmittance there, plus the ambient light.
+// world whose scene has a "shadows" block; without it the media are shaded as before lighting
+// existed (the splats' colours as given, the explosion's dust and smoke shadowed by themselves
+// alone). With it the particles' colours are albedos, and each fragment is lit by the sun's colour
+// times the sun's transmittance there, plus the ambient light.
 #include <cstdint>
 
 #include "engine/core/enum_names.h"
@@ -27,6 +28,10 @@ struct ShadowSettings {
   // The opaque surfaces read it whatever the particles' method.
   int map_size = 64;
   int map_slices = 32;
+  // The explosion's media only: each fragment's transmittance summed exactly over every particle
+  // drawn (O(particles) a fragment; sphere_billboard.frag, LIT 2), whatever `method`: the truth
+  // that `pyro bench explosion-shadows` measures the methods against. Not in the scene format.
+  bool exact_fragments = false;
 
   bool operator==(const ShadowSettings&) const = default;
 };

@@ -15,6 +15,9 @@
 #ifndef SHADING
 #define SHADING 0
 #endif
+#ifndef LIT
+#define LIT 0
+#endif
 //
 // SHADING 1 and 2 shade explosion media (section 3) by eq. 1,
 // L = I (1 - alpha) + alpha a C + alpha (1 - a) L_e, written premultiplied as
@@ -25,6 +28,14 @@
 //      segment; opacity perturbed by the detail noise;
 //   2, fire: a = 0; L_e from the black-body table engine/math/blackbody.h makes, at the
 //      temperature perturbed by the detail noise (the paper's T = T0 + T1 tex3D(...)).
+// LIT (docs/lighting.md; dust and smoke) shadows the medium by the others too, in one model for
+// every ray: a particle's extinction along a ray at distance d from its centre is tau (1 - d/r)
+// (engine/math/sphere_line_integral.h), so T_light = exp(-(others + own)), own that closed form
+// along the light's chord from the middle point, and
+//   LIT 1: others = the light phase's optical depth of the other particles at the centre plus
+//          its gradient times the offset (v_light);
+//   LIT 2: others and own summed exactly over every particle of the list (u_casters): the truth
+//          the benchmark measures the light phase's methods against, O(particles) a fragment.
 // The detail noise (engine/math/detail_noise.h) is sampled in each particle's own window: an
 // offset from its key, in the volume's slice at this frame's time (taken on the CPU by
 // detail_noise_slice_rg: one bilinear 2D fetch here instead of a trilinear 3D one, the
@@ -33,6 +44,13 @@ flat in vec3 v_center;
 flat in float v_radius;
 flat in vec4 v_color_tau;
 flat in vec4 v_medium;  // temperature, opacity, medium, detail key
+#if LIT == 1
+flat in vec4 v_light;   // the others' optical depth at the centre, its gradient (view space)
+#elif LIT == 2
+// Every particle: view-space centre and radius, then its extinction through the centre.
+layout(std430, binding = 5) readonly buffer Casters { vec4 u_casters[]; };
+uniform int u_caster_count;
+#endif
 
 layout(binding = 1) uniform sampler2D u_scene_depth;  // window depth of the opaque scene
 uniform vec2 u_depth_scale;     // scene-depth texels per target pixel
@@ -73,6 +91,25 @@ float cornette_shanks(float mu, float g) {
   float k = 1.0 + g2 - 2.0 * g * mu;
   return 3.0 / (8.0 * pi) * (1.0 - g2) * (1.0 + mu * mu) / ((2.0 + g2) * k * sqrt(k));
 }
+
+#if LIT == 2
+// The optical depth toward the light from view-space point x: every particle's chord beyond x,
+// times its extinction along that line.
+float exact_depth_to_light(vec3 x, vec3 toward_light) {
+  float total = 0.0;
+  for (int j = 0; j < u_caster_count; ++j) {
+    vec4 cr = u_casters[2 * j];
+    vec3 v = cr.xyz - x;
+    float tc = dot(v, toward_light);
+    float d2 = max(dot(v, v) - tc * tc, 0.0);
+    if (d2 >= cr.w * cr.w) continue;
+    float h = sqrt(cr.w * cr.w - d2);
+    float inside = tc + h - max(tc - h, 0.0);
+    if (inside > 0.0) total += u_casters[2 * j + 1].x * (1.0 - sqrt(d2) / cr.w) * inside;
+  }
+  return total;
+}
+#endif
 
 float view_depth(float window_depth) {
   float z_ndc = window_depth * 2.0 - 1.0;
@@ -145,7 +182,16 @@ void main() {
   vec3 m = dir * middle - p;
   float mb = dot(m, -u_light_view);
   float chord = max(-mb + sqrt(max(mb * mb - dot(m, m) + r * r, 0.0)), 0.0);
-  vec3 C = u_light_irradiance * phase * exp(-tau * chord) + u_ambient;
+#if LIT == 1
+  float light_d = sqrt(max(dot(m, m) - mb * mb, 0.0));  // the light's ray from the centre
+  float own = tau * max(1.0 - light_d / r, 0.0) * chord;
+  float light_depth = max(v_light.x + dot(v_light.yzw, m), 0.0) + own;
+#elif LIT == 2
+  float light_depth = exact_depth_to_light(dir * middle, -u_light_view);
+#else
+  float light_depth = tau * chord;
+#endif
+  vec3 C = u_light_irradiance * phase * exp(-light_depth) + u_ambient;
   o_color = vec4(alpha * u_albedo * C, alpha);  // L_e = 0
 #endif  // SHADING == 2
 #endif  // SHADING == 0

@@ -23,10 +23,19 @@
 #ifndef PLANAR
 #define PLANAR 0
 #endif
+#ifndef LIT
+#define LIT 0
+#endif
 layout(location = 0) in vec4 a_center_radius;  // world xyz, radius
 layout(location = 1) in vec4 a_color_tau;      // linear rgb, extinction tau (1 / length)
 layout(location = 2) in vec4 a_medium;  // temperature K, opacity, medium, detail key (explosions)
 layout(location = 3) in vec4 a_sprite;  // u_sprite 1: centre (target pixels), side (pixels), ndc depth
+#if LIT
+// LIT (sphere_billboard.frag): the other particles' optical depth toward the sun at the centre,
+// and its gradient (world space; turned into view space for the fragments).
+layout(location = 4) in vec4 a_light;
+flat out vec4 v_light;
+#endif
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
@@ -66,6 +75,9 @@ void main() {
   v_radius = r;
   v_color_tau = a_color_tau;
   v_medium = a_medium;
+#if LIT
+  v_light = vec4(a_light.x, mat3(u_view) * a_light.yzw);
+#endif
   if (u_sprite == 1) {
     gl_PointSize = a_sprite.z;
     gl_Position = vec4(pixels_to_ndc(a_sprite.xy), a_sprite.w, 1.0);

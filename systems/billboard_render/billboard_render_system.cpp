@@ -92,9 +92,15 @@ void draw_media(ecs::World& world, const EyeDrawLists& lists, const View& view, 
   // The light phase's gathering; a world run without it is lit by the default light.
   const SceneLighting* lit = world.try_resource<const SceneLighting>();
   const SceneLighting lighting = lit ? *lit : SceneLighting{};
+  // Lit media (a ShadowSettings resource): shadowed by the light phase's others' depth, or
+  // exactly per fragment.
+  const ShadowSettings* shadows = world.try_resource<const ShadowSettings>();
+  const MediaLighting media_lighting = !shadows ? MediaLighting::unlit
+                                       : shadows->exact_fragments ? MediaLighting::exact
+                                                                  : MediaLighting::light_phase;
   for (size_t v = 0; v < views; ++v)
     explosion->draw(lists.eyes[v], view.eyes[v], settings, lighting, time, *frame.eyes[v].media_atlas,
-                    frame.eyes[v].media_combined->width(), *frame.eyes[v].scene);
+                    frame.eyes[v].media_combined->width(), *frame.eyes[v].scene, media_lighting);
 }
 
 // After the other particles, into the target they were drawn into (a view's layer, prepared

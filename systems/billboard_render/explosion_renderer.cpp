@@ -1,5 +1,6 @@
 #include "systems/billboard_render/explosion_renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -19,13 +20,16 @@ void split_by_medium(const DrawList& list, std::array<DrawList, 3>& out) {
     l.center_radius.clear();
     l.color_density.clear();
     l.medium.clear();
+    l.light.clear();
   }
+  const bool lit = list.light.size() == list.size();
   for (size_t i = 0; i < list.size(); ++i) {
     const int m = static_cast<int>(list.medium[i].z);
     if (m < 0 || m > 2) continue;
     out[m].center_radius.push_back(list.center_radius[i]);
     out[m].color_density.push_back(list.color_density[i]);
     out[m].medium.push_back(list.medium[i]);
+    if (lit) out[m].light.push_back(list.light[i]);
   }
 }
 
@@ -65,15 +69,38 @@ void ExplosionRenderer::upload_detail_slice(double time) {
                       GL_FLOAT, slice.data());
 }
 
+void ExplosionRenderer::upload_casters(const DrawList& list, const CameraFrame& frame) {
+  std::vector<glm::vec4> casters;
+  casters.reserve(2 * list.size());
+  for (size_t i = 0; i < list.size(); ++i) {
+    const glm::vec4& c = list.center_radius[i];
+    casters.push_back(glm::vec4(glm::vec3(frame.view * glm::vec4(glm::vec3(c), 1.0f)), c.w));
+    casters.push_back({std::max(list.color_density[i].w, 0.0f) * list.medium[i].y, 0.0f, 0.0f, 0.0f});
+  }
+  const GLsizeiptr bytes = static_cast<GLsizeiptr>(std::max<size_t>(casters.size(), 2) * sizeof(glm::vec4));
+  if (casters_.get() == 0 || bytes > casters_bytes_) {
+    casters_ = gpu::make_buffer();
+    glNamedBufferStorage(casters_.get(), bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    casters_bytes_ = bytes;
+  }
+  if (!casters.empty())
+    glNamedBufferSubData(casters_.get(), 0, static_cast<GLsizeiptr>(casters.size() * sizeof(glm::vec4)),
+                         casters.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, casters_.get());
+}
+
 void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
                              const RenderSettings& settings, const SceneLighting& lighting,
                              double time, const gpu::RenderTarget& atlas, int cell_width,
-                             const gpu::RenderTarget& scene) {
+                             const gpu::RenderTarget& scene, MediaLighting media_lighting) {
   const int scene_width = scene.width(), scene_height = scene.height();
   const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearNamedFramebufferfv(atlas.framebuffer(), GL_COLOR, 0, clear);
   split_by_medium(list, split_);
   upload_detail_slice(time);
+  if (media_lighting == MediaLighting::light_phase && list.light.size() != list.size())
+    media_lighting = MediaLighting::unlit;  // no light phase ran for these particles
+  if (media_lighting == MediaLighting::exact) upload_casters(list, frame);
   const bool planar = settings.particles == ParticleShape::planar;
   if (planar) {
     // Planar billboards are depth tested against the scene's depth, point-sampled down into
@@ -92,9 +119,9 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     // Profiling hook (no-op unless profiling): this medium's layer, fragments counted.
     static const char* const layer_names[3] = {"dust layer", "smoke layer", "fire layer"};
     const gpu::GpuPassScope pass(layer_names[m], true);
-    // One program per medium kind: fire (shading 2) or dust and smoke (1).
-    const gpu::Program& program =
-        programs_.get(planar, m == static_cast<int>(ParticleMedium::fire) ? 2 : 1);
+    // One program per medium kind: fire (shading 2) or dust and smoke (1), which are lit.
+    const bool fire = m == static_cast<int>(ParticleMedium::fire);
+    const gpu::Program& program = programs_.get(planar, fire ? 2 : 1, fire ? 0 : static_cast<int>(media_lighting));
     begin_sphere_billboards(program, frame, planar, scene.depth_texture());
     auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
     const glm::ivec2 cell(cell_width, atlas.height());
@@ -111,6 +138,8 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     glUniform1f(loc("u_albedo"), s.albedo);
     glUniform1f(loc("u_g"), s.g);
     glUniform1f(loc("u_detail_amplitude"), s.detail_amplitude);
+    if (!fire && media_lighting == MediaLighting::exact)
+      glUniform1i(loc("u_caster_count"), static_cast<GLint>(list.size()));
     const GLuint vao = instances_[m].upload(l, true);
     glBindVertexArray(vao);
     // Each medium in its cell of the atlas (the scissor keeps it there).

@@ -22,6 +22,11 @@ namespace pyro {
 // Splits a back-to-front draw list by medium (components/particle_medium.h), keeping the order.
 void split_by_medium(const DrawList& list, std::array<DrawList, 3>& out);
 
+// How dust and smoke see the sun (sphere_billboard.frag, LIT): shadowed by themselves alone
+// (unlit: no light phase), by the light phase's others' depth (DrawList::light) too, or by every
+// particle exactly, per fragment.
+enum class MediaLighting { unlit, light_phase, exact };
+
 class ExplosionRenderer {
  public:
   explicit ExplosionRenderer(const ExplosionShading& shading);
@@ -29,9 +34,11 @@ class ExplosionRenderer {
   // cell m of `atlas` (components/gpu_frame.h), `cell_width` columns wide.
   // `scene` holds the opaque scene's colour and depth (the spherical shader clips against its
   // full-resolution depth; planar billboards are depth tested against a point-sampled copy).
+  // `media_lighting` light_phase needs list.light.
   void draw(const DrawList& list, const CameraFrame& frame, const RenderSettings& settings,
             const SceneLighting& lighting, double time, const gpu::RenderTarget& atlas,
-            int cell_width, const gpu::RenderTarget& scene);
+            int cell_width, const gpu::RenderTarget& scene,
+            MediaLighting media_lighting = MediaLighting::unlit);
   const ExplosionShading& shading() const { return shading_; }
 
  private:
@@ -40,6 +47,10 @@ class ExplosionRenderer {
   std::array<InstanceBuffer, 3> instances_;
   std::array<DrawList, 3> split_;
   void upload_detail_slice(double time);
+  // MediaLighting::exact: every particle of `list` in view space, into casters_ (binding 5).
+  void upload_casters(const DrawList& list, const CameraFrame& frame);
+  gpu::Buffer casters_;
+  GLsizeiptr casters_bytes_ = 0;
   gpu::Texture blackbody_, detail_;
   DetailNoise detail_volume_;
   float detail_time_ = -1.0f;

@@ -39,13 +39,18 @@ GLuint InstanceBuffer::upload(const DrawList& list, bool with_medium) {
   copy(list.center_radius, 0, n);
   copy(list.color_density, 1, n);
   if (with_medium) copy(list.medium, 2, n);
+  const bool with_light = with_medium && list.light.size() == n;
+  if (with_light) copy(list.light, 4, n);
   const GLuint vao = vao_.get();
   for (std::size_t a = 0; a < kRegions; ++a)
     glVertexArrayVertexBuffer(vao, static_cast<GLuint>(a), ring_.buffer(),
                               static_cast<GLintptr>(region_offset(a)), sizeof(glm::vec4));
-  const GLuint attributes = with_medium ? 3 : 2;
-  if (!with_medium) glDisableVertexArrayAttrib(vao, 2);  // reads the default (0, 0, 0, 1)
-  for (GLuint a = 0; a < attributes; ++a) {
+  // Attributes left out read the default (0, 0, 0, 1).
+  for (GLuint a : {0u, 1u, 2u, 4u}) {
+    if ((a == 2 && !with_medium) || (a == 4 && !with_light)) {
+      glDisableVertexArrayAttrib(vao, a);
+      continue;
+    }
     glEnableVertexArrayAttrib(vao, a);
     glVertexArrayAttribFormat(vao, a, 4, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribBinding(vao, a, a);

@@ -11,12 +11,14 @@
 
 namespace pyro {
 
-const gpu::Program& SphereBillboardPrograms::get(bool planar, int shading) {
-  gpu::Program& p = programs_[static_cast<size_t>((planar ? 3 : 0) + shading)];
-  if (p.get() == 0)
-    p = gpu::load_program("sphere_billboard.vert", "sphere_billboard.frag",
-                          {std::string("PLANAR ") + (planar ? "1" : "0"),
-                           "SHADING " + std::to_string(shading)});
+const gpu::Program& SphereBillboardPrograms::get(bool planar, int shading, int lit) {
+  gpu::Program& p = programs_[static_cast<size_t>((lit * 2 + (planar ? 1 : 0)) * 3 + shading)];
+  if (p.get() == 0) {
+    std::vector<std::string> defines = {std::string("PLANAR ") + (planar ? "1" : "0"),
+                                        "SHADING " + std::to_string(shading)};
+    if (lit) defines.push_back("LIT " + std::to_string(lit));
+    p = gpu::load_program("sphere_billboard.vert", "sphere_billboard.frag", defines);
+  }
   return p;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // The spherical-billboard programs (content/shaders/sphere_billboard.*) and the GL state both
 // spherical renderers share (SphereBillboardRenderer for plain particles, ExplosionRenderer for
-// dust, smoke and fire). One program per variant — planar or spherical, and the shading (0 the
-// particle's colour, 1 dust or smoke, 2 fire) — compiled on first use: on llvmpipe a branch on a
+// dust, smoke and fire). One program per variant — planar or spherical, the shading (0 the
+// particle's colour, 1 dust or smoke, 2 fire) and the lighting (0 unlit, 1 lit by the light
+// phase, 2 lit exactly: sphere_billboard.frag's LIT) — compiled on first use: on llvmpipe a branch on a
 // uniform runs both sides, so each variant carries only its own fetches and arithmetic.
 #include <array>
 #include <optional>
@@ -20,10 +21,10 @@ namespace pyro {
 
 class SphereBillboardPrograms {
  public:
-  const gpu::Program& get(bool planar, int shading);
+  const gpu::Program& get(bool planar, int shading, int lit = 0);
 
  private:
-  std::array<gpu::Program, 6> programs_;  // index: planar * 3 + shading
+  std::array<gpu::Program, 18> programs_;  // index: (lit * 2 + planar) * 3 + shading
 };
 
 // Binds `program` and sets the state and uniforms of a spherical-billboard pass: premultiplied

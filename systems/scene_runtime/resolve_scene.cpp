@@ -56,13 +56,13 @@ ResolvedScene resolve_scene(const SceneDescription& scene, const RuntimeOptions&
   r.quality = options.quality;
   r.substeps = options.quality ? options.quality->substeps : 1;
   r.settings = merge_render_settings(r.scene, options);
-  // The light phase lights Gaussian splats; spherical and planar billboards (explosions among
-  // them) have their own shading, and their density is an extinction, not a splat's opacity.
-  if (r.scene.shadows && r.settings.particles != ParticleShape::gaussian)
+  // The light phase lights Gaussian splats and the explosion's media; spherical and planar
+  // billboards shaded by their colour alone have no albedo to light.
+  if (r.scene.shadows && r.settings.particles != ParticleShape::gaussian && !r.settings.media_layers())
     throw UserError(scene.file.empty() ? "scene" : scene.file, "/shadows",
-                    "lit media with Gaussian particles; found \"particles\": \"" +
+                    "lit media with Gaussian particles or \"shading\": \"explosion\"; found \"particles\": \"" +
                         std::string(name_of(r.settings.particles)) +
-                        "\" (spherical and planar billboards keep their own shading, docs/lighting.md)");
+                        "\" shaded by colour (docs/lighting.md)");
   r.shading = explosion_shading(r.scene.render);
   r.stereo = stereo_camera(r.scene.camera, options);
   r.clock.dt = 1.0f / r.scene.frames_per_second;

@@ -108,13 +108,16 @@ void order_kept(bool all_kept, SortScratch& s) {
 }
 
 // Each particle's instance data packed in key order (s.packed, `stride` vec4s a particle), so
-// that the gather in draw order reads one record per particle instead of eight arrays.
+// that the gather in draw order reads one record per particle instead of eight arrays. Stride 4
+// adds the light (none: the others' depth 0).
 void pack_particles(size_t stride, const SortScratch& s, std::vector<glm::vec4>& records) {
   const std::vector<std::size_t> offsets = set_offsets(s);
   records.resize(offsets.back() * stride);
   for (size_t set = 0; set < s.sets.size(); ++set) {
     const ParticlePool& p = *s.sets[set].second;
     const uint32_t entity = s.sets[set].first;
+    const ParticleLight* light = set < s.lights.size() ? s.lights[set] : nullptr;
+    const bool lit = light && light->others_depth.size() == p.size();
     glm::vec4* packed = records.data() + offsets[set] * stride;
     tbb::parallel_for(
         tbb::blocked_range<size_t>(0, p.size(), kParticlesPerTask),
@@ -130,6 +133,7 @@ void pack_particles(size_t stride, const SortScratch& s, std::vector<glm::vec4>&
             const uint32_t ident = p.id[i] + (entity << 20);
             const float key = static_cast<float>((ident * 2654435769u) >> 8) * 0x1p-24f;
             record[2] = {p.temperature[i], p.opacity[i], static_cast<float>(p.medium[i]), key};
+            if (stride > 3) record[3] = lit ? light->others_depth[i] : glm::vec4(0.0f);
           }
         });
   }
@@ -148,6 +152,7 @@ void fill_draw_list(const SortScratch& s, size_t stride, DrawList& list, size_t 
     list.center_radius[k] = record[0];
     list.color_density[k] = record[1];
     if (stride > 2) list.medium[k] = record[2];
+    if (stride > 3) list.light[k] = record[3];
   }
 }
 
@@ -180,7 +185,9 @@ void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::v
   auto start = std::chrono::steady_clock::now();
   const bool all_kept = make_keys(eye, forward, kind, views, s);
   s.times.keys_ms += ms_since(start);
-  const size_t stride = with_medium ? 3 : 2;
+  const bool lit = with_medium && std::any_of(s.lights.begin(), s.lights.end(),
+                                              [](const ParticleLight* l) { return l != nullptr; });
+  const size_t stride = lit ? 4 : with_medium ? 3 : 2;
   pack_particles(stride, s, s.packed);
   s.times.pack_ms += ms_since(start);
   order_kept(all_kept, s);
@@ -190,6 +197,7 @@ void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::v
   list.center_radius.resize(n);
   list.color_density.resize(n);
   list.medium.resize(with_medium ? n : 0);
+  list.light.resize(lit ? n : 0);
   tbb::parallel_for(
       tbb::blocked_range<size_t>(0, n, kParticlesPerTask),
       [&](const tbb::blocked_range<size_t>& r) { fill_draw_list(s, stride, list, r.begin(), r.end()); });
@@ -205,6 +213,7 @@ void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind
   list.center_radius.clear();
   list.color_density.clear();
   list.medium.clear();
+  list.light.clear();
   list.order.swap(s.radix.order);  // the old order's storage goes back to the scratch
   s.times.order_ms += ms_since(start);
 }

@@ -62,7 +62,8 @@ struct SortScratch {
 
 // Fills `list` in the gathered form from every ParticleSet in the world, sorted for an eye at
 // `eye` looking along `forward`. `with_medium`: also list.medium, which only the explosion media
-// layers read (left empty otherwise, a third less to gather). Culling: a particle whose bounding
+// layers read (left empty otherwise, a third less to gather), and, where the sets are lit (a
+// ParticleLight beside them), list.light. Culling: a particle whose bounding
 // sphere (two radii) lies outside every frustum of `views` is left out, before the sort; an empty
 // `views` keeps every particle. Leaving out a particle no view can show changes no image.
 void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::vec3& forward,

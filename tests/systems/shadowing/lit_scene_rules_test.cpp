@@ -1,6 +1,6 @@
-// What a lit scene refuses and what --shadows changes: lit media need Gaussian particles (an
-// explosion's spheres keep their own shading), and the overrides turn a scene's lighting off or
-// on without editing it.
+// What a lit scene refuses and what --shadows changes: lit media need Gaussian particles or the
+// explosion's shading (billboards shaded by their colour alone have no albedo), and the overrides
+// turn a scene's lighting off or on without editing it.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -15,12 +15,15 @@ namespace {
 
 constexpr int kAnyTexture = std::numeric_limits<int>::max();
 
-TEST(LitSceneRules, SphericalParticlesAreRefusedNamingTheKey) {
+TEST(LitSceneRules, ColourShadedSpheresAreRefusedNamingTheKey) {
   RuntimeOptions o;
   o.shadow_method = ShadowMethod::shadow_map;
+  SceneDescription explosion = load_scene(test::scene_path("explosion.json"));
+  EXPECT_NO_THROW(resolve_scene(explosion, o, kAnyTexture));  // the explosion's media are lit
+  explosion.render.shading = ParticleShading::color;
   try {
-    resolve_scene(load_scene(test::scene_path("explosion.json")), o, kAnyTexture);
-    FAIL() << "an explosion was lit";
+    resolve_scene(explosion, o, kAnyTexture);
+    FAIL() << "colour-shaded spheres were lit";
   } catch (const UserError& e) {
     EXPECT_NE(std::string(e.what()).find("/shadows"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("spherical"), std::string::npos) << e.what();
