@@ -251,6 +251,7 @@ void add_bench_commands(CLI::App& app) {
   add_bench_schedule_command(*bench);
   add_bench_import_scale_command(*bench);
   add_bench_relight_command(*bench);
+  add_bench_explosion_shadows_command(*bench);
 
   for (const auto add : {add_bench_ecs, add_bench_sort, add_bench_scale, add_bench_import_cases, add_bench_render, add_bench_johnson, add_bench_layers,
                          add_bench_table1, add_bench_soak})
