@@ -60,7 +60,8 @@ glm::mat4 world_to_texture(const MapFrame& f) {
 // One particle's optical depth added to the texel columns of rows [j_begin, j_end): where a
 // column's ray enters the particle (a Gaussian's cube, a sphere) at a and leaves at b, the slices
 // inside get the depth over [a, t_k] and the first slice past b steps up by the whole [a, b]
-// (summed along the columns afterwards).
+// (summed along the columns afterwards). `depth` and `steps` hold each column's slices one
+// after another (texel * nw + k), so that a particle's updates along a column are adjacent.
 void splat_rows(const ShadowCaster& g, const MapFrame& f, int j_begin, int j_end,
                 std::vector<float>& depth, std::vector<float>& steps) {
   const double e = caster_reach(g);
@@ -69,20 +70,19 @@ void splat_rows(const ShadowCaster& g, const MapFrame& f, int j_begin, int j_end
   const int i1 = std::min(f.nu - 1, int(std::ceil((cu + e) / f.du - 0.5)));
   const int j0 = std::max(j_begin, int(std::floor((cv - e) / f.du - 0.5)));
   const int j1 = std::min(j_end - 1, int(std::ceil((cv + e) / f.du - 0.5)));
-  const size_t plane = size_t(f.nu) * size_t(f.nv);
   for (int j = j0; j <= j1; ++j)
     for (int i = i0; i <= i1; ++i) {
       const glm::dvec3 o = (f.u0 + (i + 0.5) * f.du) * f.u + (f.v0 + (j + 0.5) * f.du) * f.v + f.w0 * f.w;
       double a, b;
       if (!caster_span(g, o, f.w, a, b)) continue;
       a = std::max(a, 0.0);
-      const size_t texel = size_t(j) * size_t(f.nu) + size_t(i);
+      const size_t column = (size_t(j) * size_t(f.nu) + size_t(i)) * size_t(f.nw);
       const CasterRayProfile ray = caster_ray_profile(g, o, f.w);
       const double entry = ray.cumulative(a);
       int k = std::max(0, int(std::ceil(a / f.dw - 0.5)));
       for (; k < f.nw && (k + 0.5) * f.dw < b; ++k)
-        depth[texel + size_t(k) * plane] += float(ray.cumulative((k + 0.5) * f.dw) - entry);
-      if (k < f.nw) steps[texel + size_t(k) * plane] += float(ray.cumulative(b) - entry);
+        depth[column + size_t(k)] += float(ray.cumulative((k + 0.5) * f.dw) - entry);
+      if (k < f.nw) steps[column + size_t(k)] += float(ray.cumulative(b) - entry);
     }
 }
 
@@ -99,7 +99,7 @@ void build_opacity_shadow_map(const std::vector<ShadowCaster>& particles,
   out.size = {f.nu, f.nv, f.nw};
   out.world_to_texture = world_to_texture(f);
   out.optical_depth.assign(plane * size_t(f.nw), 0.0f);
-  std::vector<float> steps(out.optical_depth.size(), 0.0f);
+  std::vector<float> depth(out.optical_depth.size(), 0.0f), steps(out.optical_depth.size(), 0.0f);
   // Strips of rows, each splatted by one task from the particles that reach it (in their order,
   // so the sums do not depend on the threads).
   constexpr int kRowsPerStrip = 4;
@@ -113,15 +113,16 @@ void build_opacity_shadow_map(const std::vector<ShadowCaster>& particles,
   }
   tbb::parallel_for(0, strips, [&](int s) {
     const int j_begin = s * kRowsPerStrip, j_end = std::min(f.nv, j_begin + kRowsPerStrip);
-    for (uint32_t p : reaching[size_t(s)]) splat_rows(particles[p], f, j_begin, j_end, out.optical_depth, steps);
-    // The whole columns of the particles a column has passed, summed along it.
+    for (uint32_t p : reaching[size_t(s)]) splat_rows(particles[p], f, j_begin, j_end, depth, steps);
+    // The whole columns of the particles a column has passed, summed along it, into the map's
+    // layout (slice after slice).
     for (int j = j_begin; j < j_end; ++j)
       for (int i = 0; i < f.nu; ++i) {
-        const size_t texel = size_t(j) * size_t(f.nu) + size_t(i);
+        const size_t texel = size_t(j) * size_t(f.nu) + size_t(i), column = texel * size_t(f.nw);
         float passed = 0.0f;
         for (int k = 0; k < f.nw; ++k) {
-          passed += steps[texel + size_t(k) * plane];
-          out.optical_depth[texel + size_t(k) * plane] += passed;
+          passed += steps[column + size_t(k)];
+          out.optical_depth[texel + size_t(k) * plane] = depth[column + size_t(k)] + passed;
         }
       }
   });
