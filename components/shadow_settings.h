@@ -28,6 +28,9 @@ struct ShadowSettings {
   // The opaque surfaces read it whatever the particles' method.
   int map_size = 64;
   int map_slices = 32;
+  // The explosion's fire as light: this many point lights clustered from the fire particles
+  // (components/fire_lights.h) light its dust, smoke and the ground; 0: fire lights nothing.
+  int fire_lights = 2;
   // The explosion's media only: each fragment's transmittance summed exactly over every particle
   // drawn (O(particles) a fragment; sphere_billboard.frag, LIT 2), whatever `method`: the truth
   // that `pyro bench explosion-shadows` measures the methods against. Not in the scene format.

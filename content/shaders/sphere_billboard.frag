@@ -23,7 +23,7 @@
 // L = I (1 - alpha) + alpha a C + alpha (1 - a) L_e, written premultiplied as
 // (alpha a C + alpha (1 - a) L_e, alpha):
 //   1, dust and smoke: L_e = 0; C = E P(mu) T_light + ambient, P the Cornette-Shanks phase
-//      function (cornette_shanks below),
+//      function (cornette_shanks.glsl),
 //      T_light the light's transmittance from the sphere's surface to the middle of the ray's
 //      segment; opacity perturbed by the detail noise;
 //   2, fire: a = 0; L_e from the black-body table engine/math/blackbody.h makes, at the
@@ -36,6 +36,10 @@
 //          its gradient times the offset (v_light);
 //   LIT 2: others and own summed exactly over every particle of the list (u_casters): the truth
 //          the benchmark measures the light phase's methods against, O(particles) a fragment.
+// Lit, they also scatter the fire's light (components/fire_lights.h): point sources of intensity
+// I at p, irradiance I / max(|x - p|^2, r^2), scattered by the same phase function; LIT 1 from
+// the light phase's few clustered lights, at the particle's centre (the vertex shader: one
+// evaluation a particle, not one a fragment), LIT 2 from every fire particle, per fragment.
 // The detail noise (engine/math/detail_noise.h) is sampled in each particle's own window: an
 // offset from its key, in the volume's slice at this frame's time (taken on the CPU by
 // detail_noise_slice_rg: one bilinear 2D fetch here instead of a trilinear 3D one, the
@@ -50,6 +54,12 @@ flat in vec4 v_light;   // the others' optical depth at the centre, its gradient
 // Every particle: view-space centre and radius, then its extinction through the centre.
 layout(std430, binding = 5) readonly buffer Casters { vec4 u_casters[]; };
 uniform int u_caster_count;
+// Every fire particle: view-space position and radius, then its intensity.
+layout(std430, binding = 6) readonly buffer FireEmitters { vec4 u_fire_emitters[]; };
+uniform int u_fire_emitter_count;
+#endif
+#if LIT == 1
+flat in vec3 v_fire;    // the clustered fire lights' in-scattered radiance at the centre
 #endif
 
 layout(binding = 1) uniform sampler2D u_scene_depth;  // window depth of the opaque scene
@@ -80,17 +90,10 @@ float node_coord(float x, float lo, float hi, float n) {
   return (clamp((x - lo) / (hi - lo), 0.0, 1.0) * (n - 1.0) + 0.5) / n;
 }
 
-// Cornette & Shanks 1992, eq. 8, the paper's section 3.1 formula (engine/math/phase_function.h
-// says why it is not Henyey-Greenstein), per steradian, its integral over the sphere 1:
-// p(mu) = 3/(8 pi) (1 - g^2) (1 + mu^2) / ((2 + g^2) (1 + g^2 - 2 g mu)^(3/2)).
-// In closed form rather than the paper's (mu, g) texture: exact, and cheaper than a filtered
-// fetch on a CPU rasteriser.
-float cornette_shanks(float mu, float g) {
-  const float pi = 3.14159265358979;
-  float g2 = g * g;
-  float k = 1.0 + g2 - 2.0 * g * mu;
-  return 3.0 / (8.0 * pi) * (1.0 - g2) * (1.0 + mu * mu) / ((2.0 + g2) * k * sqrt(k));
-}
+#include "cornette_shanks.glsl"
+#if LIT
+#include "fire_light.glsl"
+#endif
 
 #if LIT == 2
 // The optical depth toward the light from view-space point x: every particle's chord beyond x,
@@ -108,6 +111,17 @@ float exact_depth_to_light(vec3 x, vec3 toward_light) {
     if (inside > 0.0) total += u_casters[2 * j + 1].x * (1.0 - sqrt(d2) / cr.w) * inside;
   }
   return total;
+}
+#endif
+
+#if LIT == 2
+// The fire's in-scattered radiance at view-space point x (before the albedo), seen along to_eye:
+// every fire particle (fire_light.glsl).
+vec3 fire_inscattered(vec3 x, vec3 to_eye, float g) {
+  vec3 sum = vec3(0.0);
+  for (int j = 0; j < u_fire_emitter_count; ++j)
+    sum += fire_light_inscattered(u_fire_emitters[2 * j], u_fire_emitters[2 * j + 1].rgb, x, to_eye, g);
+  return sum;
 }
 #endif
 
@@ -192,6 +206,11 @@ void main() {
   float light_depth = tau * chord;
 #endif
   vec3 C = u_light_irradiance * phase * exp(-light_depth) + u_ambient;
+#if LIT == 1
+  C += v_fire;
+#elif LIT == 2
+  C += fire_inscattered(dir * middle, to_eye, u_g);
+#endif
   o_color = vec4(alpha * u_albedo * C, alpha);  // L_e = 0
 #endif  // SHADING == 2
 #endif  // SHADING == 0

@@ -35,6 +35,15 @@ layout(location = 3) in vec4 a_sprite;  // u_sprite 1: centre (target pixels), s
 // and its gradient (world space; turned into view space for the fragments).
 layout(location = 4) in vec4 a_light;
 flat out vec4 v_light;
+// The fire's clustered lights (view-space position and radius, intensity), scattered at the
+// centre toward the eye (fire_light.glsl): constant over the particle.
+uniform int u_fire_light_count;
+uniform vec4 u_fire_lights[8];
+uniform vec3 u_fire_intensity[8];
+uniform float u_g;
+flat out vec3 v_fire;
+#include "cornette_shanks.glsl"
+#include "fire_light.glsl"
 #endif
 
 uniform mat4 u_view;
@@ -77,6 +86,9 @@ void main() {
   v_medium = a_medium;
 #if LIT
   v_light = vec4(a_light.x, mat3(u_view) * a_light.yzw);
+  v_fire = vec3(0.0);
+  for (int j = 0; j < u_fire_light_count; ++j)
+    v_fire += fire_light_inscattered(u_fire_lights[j], u_fire_intensity[j], p, -normalize(p), u_g);
 #endif
   if (u_sprite == 1) {
     gl_PointSize = a_sprite.z;

@@ -88,6 +88,17 @@ BlackbodyTable make_blackbody_table(double t_min, double t_max, int size,
   return t;
 }
 
+BlackbodyTable blackbody_emission_table(double t_min, double t_max, float emission, int size) {
+  BlackbodyTable t = make_blackbody_table(t_min, t_max, size);
+  const float top = t.luminance.back() > 0.0f ? t.luminance.back() : 1.0f;
+  for (int i = 0; i < size; ++i)
+    for (int c = 0; c < 3; ++c) {
+      float& v = t.rgb[static_cast<std::size_t>(i) * 3 + c];
+      v = v * t.luminance[static_cast<std::size_t>(i)] / top * emission;
+    }
+  return t;
+}
+
 glm::vec3 sample_blackbody_rgb(const BlackbodyTable& t, double temperature_k) {
   const double u = std::clamp((temperature_k - t.t_min) / (t.t_max - t.t_min), 0.0, 1.0) * (t.size - 1);
   const int i = std::min(static_cast<int>(u), t.size - 2);

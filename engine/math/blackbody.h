@@ -67,6 +67,11 @@ struct BlackbodyTable {
 BlackbodyTable make_blackbody_table(double t_min = 1000.0, double t_max = 12000.0, int size = 256,
                                     const ColorMatchingFunctions& cmf = cie1931_2deg());
 
+// Fire's emitted radiance (Umenhoffer et al. 2006, section 3.2) on the table's nodes: each node's
+// chromaticity times its luminance relative to the hottest node's, times `emission`, in `rgb`
+// (what the explosion's fire shader reads, and what its derived lights emit).
+BlackbodyTable blackbody_emission_table(double t_min, double t_max, float emission, int size);
+
 // The table's rgb at T, linearly interpolated between nodes and clamped to the ends: what the
 // shader's linear texture fetch returns.
 glm::vec3 sample_blackbody_rgb(const BlackbodyTable& table, double temperature_k);

@@ -27,4 +27,10 @@ bool sphere_chord(const ConeSphere& s, const glm::dvec3& o, const glm::dvec3& w,
 double sphere_optical_depth(const ConeSphere& s, const glm::dvec3& o, const glm::dvec3& w,
                             double a, double b);
 
+// The sphere's opacity integrated over the disc it projects to,
+//   A = int_0^r (1 - exp(-k (1 - d/r) 2 sqrt(r^2 - d^2))) 2 pi d dd
+// (Gauss-Legendre in d): seen from far away, an emitting sphere of radiance L is a point source
+// of intensity L A. From pi r^2 (opaque) down to 4 pi k r^3 (1/3 - pi/16) as k -> 0.
+double sphere_opacity_area(double r, double k);
+
 }  // namespace pyro

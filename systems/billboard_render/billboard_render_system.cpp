@@ -10,6 +10,7 @@
 #include "components/render_settings.h"
 #include "components/sort_device_choice.h"
 #include "components/view.h"
+#include "components/fire_lights.h"
 #include "components/scene_lighting.h"
 #include "components/shadow_settings.h"
 #include <glm/geometric.hpp>
@@ -100,7 +101,8 @@ void draw_media(ecs::World& world, const EyeDrawLists& lists, const View& view, 
                                                                   : MediaLighting::light_phase;
   for (size_t v = 0; v < views; ++v)
     explosion->draw(lists.eyes[v], view.eyes[v], settings, lighting, time, *frame.eyes[v].media_atlas,
-                    frame.eyes[v].media_combined->width(), *frame.eyes[v].scene, media_lighting);
+                    frame.eyes[v].media_combined->width(), *frame.eyes[v].scene, media_lighting,
+                    world.try_resource<const FireLights>());
 }
 
 // After the other particles, into the target they were drawn into (a view's layer, prepared
@@ -205,7 +207,7 @@ ecs::SystemDesc billboard_render_system() {
           .phase = ecs::Phase::render,
           .access = ecs::Access::of<
               ecs::Reads<EyeDrawLists, View, RenderSettings, SceneLighting, FrameClock,
-                         ExplosionShading, AnisotropicCloud, SortScratch, ShadowSettings>,
+                         ExplosionShading, AnisotropicCloud, SortScratch, ShadowSettings, FireLights>,
               ecs::Writes<GpuFrame, SortDeviceChoice>, Renderers>(),
           .run = draw_billboards,
           .setup = make_particle_renderer,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -37,12 +38,8 @@ ExplosionRenderer::ExplosionRenderer(const ExplosionShading& shading)
     : shading_(shading) {
   // Black-body emission over the fire's range: chromaticity times luminance relative to T_max.
   const int bb_size = 128;
-  const BlackbodyTable bb = make_blackbody_table(shading.fire_t_min, shading.fire_t_max, bb_size);
-  std::vector<float> emitted(static_cast<size_t>(bb_size) * 3);
-  const float top = bb.luminance.back() > 0.0f ? bb.luminance.back() : 1.0f;
-  for (int i = 0; i < bb_size; ++i)
-    for (int c = 0; c < 3; ++c)
-      emitted[3 * i + c] = bb.rgb[3 * i + c] * bb.luminance[i] / top * shading.fire_emission;
+  const std::vector<float> emitted =
+      blackbody_emission_table(shading.fire_t_min, shading.fire_t_max, shading.fire_emission, bb_size).rgb;
   blackbody_ = gpu::make_texture(GL_TEXTURE_1D);
   glTextureStorage1D(blackbody_.get(), 1, GL_RGB32F, bb_size);
   glTextureSubImage1D(blackbody_.get(), 0, 0, bb_size, GL_RGB, GL_FLOAT, emitted.data());
@@ -69,6 +66,41 @@ void ExplosionRenderer::upload_detail_slice(double time) {
                       GL_FLOAT, slice.data());
 }
 
+namespace {
+
+// `data` into `buffer` (grown when too small) at binding `binding` of the storage buffers.
+void upload_storage(const std::vector<glm::vec4>& data, GLuint binding, gpu::Buffer& buffer, GLsizeiptr& capacity) {
+  const GLsizeiptr bytes = static_cast<GLsizeiptr>(std::max<size_t>(data.size(), 2) * sizeof(glm::vec4));
+  if (buffer.get() == 0 || bytes > capacity) {
+    buffer = gpu::make_buffer();
+    glNamedBufferStorage(buffer.get(), bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    capacity = bytes;
+  }
+  if (!data.empty())
+    glNamedBufferSubData(buffer.get(), 0, static_cast<GLsizeiptr>(data.size() * sizeof(glm::vec4)), data.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer.get());
+}
+
+glm::vec4 view_position_radius(const CameraFrame& frame, const PointEmitter& e) {
+  return glm::vec4(glm::vec3(frame.view * glm::vec4(glm::vec3(e.position), 1.0f)), float(e.radius));
+}
+
+// The clustered fire lights as the lit dust and smoke programs' uniforms (LIT 1), in view space.
+void set_fire_light_uniforms(const gpu::Program& program, const FireLights* fire, const CameraFrame& frame) {
+  const int count = fire ? std::min(static_cast<int>(fire->lights.size()), kMaxFireLights) : 0;
+  glUniform1i(gpu::uniform_location(program, "u_fire_light_count"), count);
+  for (int j = 0; j < count; ++j) {
+    const PointEmitter& l = fire->lights[static_cast<size_t>(j)];
+    const std::string at = "[" + std::to_string(j) + "]";
+    glUniform4fv(gpu::uniform_location(program, ("u_fire_lights" + at).c_str()), 1,
+                 glm::value_ptr(view_position_radius(frame, l)));
+    glUniform3f(gpu::uniform_location(program, ("u_fire_intensity" + at).c_str()), float(l.intensity.x),
+                float(l.intensity.y), float(l.intensity.z));
+  }
+}
+
+}  // namespace
+
 void ExplosionRenderer::upload_casters(const DrawList& list, const CameraFrame& frame) {
   std::vector<glm::vec4> casters;
   casters.reserve(2 * list.size());
@@ -77,22 +109,24 @@ void ExplosionRenderer::upload_casters(const DrawList& list, const CameraFrame& 
     casters.push_back(glm::vec4(glm::vec3(frame.view * glm::vec4(glm::vec3(c), 1.0f)), c.w));
     casters.push_back({std::max(list.color_density[i].w, 0.0f) * list.medium[i].y, 0.0f, 0.0f, 0.0f});
   }
-  const GLsizeiptr bytes = static_cast<GLsizeiptr>(std::max<size_t>(casters.size(), 2) * sizeof(glm::vec4));
-  if (casters_.get() == 0 || bytes > casters_bytes_) {
-    casters_ = gpu::make_buffer();
-    glNamedBufferStorage(casters_.get(), bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
-    casters_bytes_ = bytes;
-  }
-  if (!casters.empty())
-    glNamedBufferSubData(casters_.get(), 0, static_cast<GLsizeiptr>(casters.size() * sizeof(glm::vec4)),
-                         casters.data());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, casters_.get());
+  upload_storage(casters, 5, casters_, casters_bytes_);
+}
+
+void ExplosionRenderer::upload_fire_emitters(const FireLights* fire, const CameraFrame& frame) {
+  std::vector<glm::vec4> emitters;
+  if (fire)
+    for (const PointEmitter& e : fire->emitters) {
+      emitters.push_back(view_position_radius(frame, e));
+      emitters.push_back(glm::vec4(glm::vec3(e.intensity), 0.0f));
+    }
+  upload_storage(emitters, 6, emitters_, emitters_bytes_);
 }
 
 void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
                              const RenderSettings& settings, const SceneLighting& lighting,
                              double time, const gpu::RenderTarget& atlas, int cell_width,
-                             const gpu::RenderTarget& scene, MediaLighting media_lighting) {
+                             const gpu::RenderTarget& scene, MediaLighting media_lighting,
+                             const FireLights* fire) {
   const int scene_width = scene.width(), scene_height = scene.height();
   const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearNamedFramebufferfv(atlas.framebuffer(), GL_COLOR, 0, clear);
@@ -100,7 +134,10 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
   upload_detail_slice(time);
   if (media_lighting == MediaLighting::light_phase && list.light.size() != list.size())
     media_lighting = MediaLighting::unlit;  // no light phase ran for these particles
-  if (media_lighting == MediaLighting::exact) upload_casters(list, frame);
+  if (media_lighting == MediaLighting::exact) {
+    upload_casters(list, frame);
+    upload_fire_emitters(fire, frame);
+  }
   const bool planar = settings.particles == ParticleShape::planar;
   if (planar) {
     // Planar billboards are depth tested against the scene's depth, point-sampled down into
@@ -120,8 +157,9 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     static const char* const layer_names[3] = {"dust layer", "smoke layer", "fire layer"};
     const gpu::GpuPassScope pass(layer_names[m], true);
     // One program per medium kind: fire (shading 2) or dust and smoke (1), which are lit.
-    const bool fire = m == static_cast<int>(ParticleMedium::fire);
-    const gpu::Program& program = programs_.get(planar, fire ? 2 : 1, fire ? 0 : static_cast<int>(media_lighting));
+    const bool is_fire = m == static_cast<int>(ParticleMedium::fire);
+    const gpu::Program& program =
+        programs_.get(planar, is_fire ? 2 : 1, is_fire ? 0 : static_cast<int>(media_lighting));
     begin_sphere_billboards(program, frame, planar, scene.depth_texture());
     auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
     const glm::ivec2 cell(cell_width, atlas.height());
@@ -138,8 +176,11 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     glUniform1f(loc("u_albedo"), s.albedo);
     glUniform1f(loc("u_g"), s.g);
     glUniform1f(loc("u_detail_amplitude"), s.detail_amplitude);
-    if (!fire && media_lighting == MediaLighting::exact)
+    if (!is_fire && media_lighting == MediaLighting::exact) {
       glUniform1i(loc("u_caster_count"), static_cast<GLint>(list.size()));
+      glUniform1i(loc("u_fire_emitter_count"), fire ? static_cast<GLint>(fire->emitters.size()) : 0);
+    }
+    if (!is_fire && media_lighting == MediaLighting::light_phase) set_fire_light_uniforms(program, fire, frame);
     const GLuint vao = instances_[m].upload(l, true);
     glBindVertexArray(vao);
     // Each medium in its cell of the atlas (the scissor keeps it there).

@@ -8,6 +8,7 @@
 
 #include "components/draw_list.h"
 #include "components/explosion_shading.h"
+#include "components/fire_lights.h"
 #include "components/render_settings.h"
 #include "components/scene_lighting.h"
 #include "engine/gpu/gl_objects.h"
@@ -34,11 +35,12 @@ class ExplosionRenderer {
   // cell m of `atlas` (components/gpu_frame.h), `cell_width` columns wide.
   // `scene` holds the opaque scene's colour and depth (the spherical shader clips against its
   // full-resolution depth; planar billboards are depth tested against a point-sampled copy).
-  // `media_lighting` light_phase needs list.light.
+  // `media_lighting` light_phase needs list.light. Lit, dust and smoke also scatter `fire`'s
+  // light (may be null: none): its clustered lights, or with exact every emitter.
   void draw(const DrawList& list, const CameraFrame& frame, const RenderSettings& settings,
             const SceneLighting& lighting, double time, const gpu::RenderTarget& atlas,
             int cell_width, const gpu::RenderTarget& scene,
-            MediaLighting media_lighting = MediaLighting::unlit);
+            MediaLighting media_lighting = MediaLighting::unlit, const FireLights* fire = nullptr);
   const ExplosionShading& shading() const { return shading_; }
 
  private:
@@ -47,10 +49,12 @@ class ExplosionRenderer {
   std::array<InstanceBuffer, 3> instances_;
   std::array<DrawList, 3> split_;
   void upload_detail_slice(double time);
-  // MediaLighting::exact: every particle of `list` in view space, into casters_ (binding 5).
+  // MediaLighting::exact: every particle of `list` in view space, into casters_ (binding 5), and
+  // every fire emitter, into emitters_ (binding 6).
   void upload_casters(const DrawList& list, const CameraFrame& frame);
-  gpu::Buffer casters_;
-  GLsizeiptr casters_bytes_ = 0;
+  void upload_fire_emitters(const FireLights* fire, const CameraFrame& frame);
+  gpu::Buffer casters_, emitters_;
+  GLsizeiptr casters_bytes_ = 0, emitters_bytes_ = 0;
   gpu::Texture blackbody_, detail_;
   DetailNoise detail_volume_;
   float detail_time_ = -1.0f;

@@ -1,5 +1,6 @@
 #include "systems/mesh_render/mesh_render_system.h"
 
+#include "components/fire_lights.h"
 #include "components/gpu_frame.h"
 #include "components/mesh_instance.h"
 #include "components/render_settings.h"
@@ -15,7 +16,7 @@ ecs::SystemDesc mesh_render_system() {
   return {
       .name = "mesh_render",
       .phase = ecs::Phase::render,
-      .access = ecs::Access::of<ecs::Reads<MeshInstance, View, RenderSettings, SceneLighting, ShadowVolume>,
+      .access = ecs::Access::of<ecs::Reads<MeshInstance, View, RenderSettings, SceneLighting, ShadowVolume, FireLights>,
                                 ecs::Writes<GpuFrame, MeshRenderer>>(),
       .run =
           [](ecs::World& world) {
@@ -27,11 +28,12 @@ ecs::SystemDesc mesh_render_system() {
             const SceneLighting* lit = world.try_resource<const SceneLighting>();
             const SceneLighting lighting = lit ? *lit : SceneLighting{};
             const ShadowVolume* shadows = world.try_resource<const ShadowVolume>();
+            const FireLights* fire = world.try_resource<const FireLights>();
             MeshRenderer& renderer = world.resource<MeshRenderer>();
             GpuFrame& frame = world.resource<GpuFrame>();
             for (size_t v = 0; v < view.eyes.size() && v < frame.eyes.size(); ++v) {
               const int before = renderer.meshes_drawn() + renderer.images_restored();
-              renderer.draw(instances, view.eyes[v], settings, lighting, *frame.eyes[v].scene, shadows);
+              renderer.draw(instances, view.eyes[v], settings, lighting, *frame.eyes[v].scene, shadows, fire);
               if (renderer.meshes_drawn() + renderer.images_restored() != before)
                 ++frame.eyes[v].opaque_version;
             }

@@ -1,5 +1,8 @@
 #include "systems/mesh_render/mesh_renderer.h"
 
+#include <algorithm>
+#include <string>
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -12,6 +15,20 @@ MeshRenderer::MeshRenderer()
     : program_(gpu::load_program("mesh.vert", "mesh.frag")),
       encode_program_(gpu::load_program("mesh.vert", "mesh.frag",
                                         {"SRGB_ENCODE 1", srgb_polynomial_define()})) {}
+
+const gpu::Program& MeshRenderer::program_for(bool encode, int fire_lights) {
+  if (fire_lights == 0) return encode ? encode_program_ : program_;
+  gpu::Program& p = fire_programs_[{encode, fire_lights}];
+  if (p.get() == 0) {
+    std::vector<std::string> defines = {"FIRE_LIGHTS " + std::to_string(fire_lights)};
+    if (encode) {
+      defines.push_back("SRGB_ENCODE 1");
+      defines.push_back(srgb_polynomial_define());
+    }
+    p = gpu::load_program("mesh.vert", "mesh.frag", defines);
+  }
+  return p;
+}
 
 const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(MeshKind kind) {
   auto it = meshes_.find(kind);
@@ -54,7 +71,8 @@ namespace {
 // Everything the opaque image depends on, as numbers.
 std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                                const RenderSettings& settings, const SceneLighting& lighting,
-                               const gpu::RenderTarget& target, const ShadowVolume* shadows) {
+                               const gpu::RenderTarget& target, const ShadowVolume* shadows,
+                               const FireLights* fire) {
   std::vector<float> k;
   auto put = [&](const float* v, size_t n) { k.insert(k.end(), v, v + n); };
   put(glm::value_ptr(frame.view_projection), 16);
@@ -72,6 +90,10 @@ std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const
     k.push_back(static_cast<float>(shadows->version & 0xFFFFFFu));
     k.push_back(static_cast<float>((shadows->version >> 24) & 0xFFFFFFu));
   }
+  if (fire)
+    for (const PointEmitter& l : fire->lights)
+      for (double v : {l.position.x, l.position.y, l.position.z, l.radius, l.intensity.x, l.intensity.y, l.intensity.z})
+        k.push_back(static_cast<float>(v));
   for (const MeshInstance& m : instances) {
     k.push_back(static_cast<float>(m.kind));
     put(glm::value_ptr(m.position), 3);
@@ -79,6 +101,19 @@ std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const
     put(glm::value_ptr(m.color), 3);
   }
   return k;
+}
+
+// The fire lights of a program compiled for them (mesh.frag's FIRE_LIGHTS).
+void set_fire_light_uniforms(const gpu::Program& program, const FireLights* fire) {
+  const int count = fire ? std::min(static_cast<int>(fire->lights.size()), kMaxFireLights) : 0;
+  for (int j = 0; j < count; ++j) {
+    const PointEmitter& l = fire->lights[static_cast<size_t>(j)];
+    const std::string at = "[" + std::to_string(j) + "]";
+    glUniform4f(gpu::uniform_location(program, ("u_fire_lights" + at).c_str()), float(l.position.x),
+                float(l.position.y), float(l.position.z), float(l.radius));
+    glUniform3f(gpu::uniform_location(program, ("u_fire_intensity" + at).c_str()), float(l.intensity.x),
+                float(l.intensity.y), float(l.intensity.z));
+  }
 }
 
 void copy_image(GLuint from, GLuint to, const gpu::RenderTarget& target) {
@@ -90,8 +125,9 @@ void copy_image(GLuint from, GLuint to, const gpu::RenderTarget& target) {
 
 void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                         const RenderSettings& settings, const SceneLighting& lighting,
-                        const gpu::RenderTarget& target, const ShadowVolume* shadows) {
-  std::vector<float> inputs = draw_inputs(instances, frame, settings, lighting, target, shadows);
+                        const gpu::RenderTarget& target, const ShadowVolume* shadows,
+                        const FireLights* fire) {
+  std::vector<float> inputs = draw_inputs(instances, frame, settings, lighting, target, shadows, fire);
   Drawn& last = drawn_[target.serial()];
   if (last.color && last.inputs == inputs) {
     if (target.binds() != last.binds) {
@@ -103,7 +139,7 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
     last.binds = target.binds();
     return;
   }
-  draw_meshes(instances, frame, settings, lighting, target, shadows);
+  draw_meshes(instances, frame, settings, lighting, target, shadows, fire);
   ++meshes_drawn_;
   const glm::ivec3 shape(target.width(), target.height(), static_cast<int>(target.format()));
   if (!last.color || last.shape != shape) {
@@ -138,7 +174,7 @@ void MeshRenderer::leave_state(bool meshes, const RenderSettings& settings,
 void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
                                const CameraFrame& frame, const RenderSettings& settings,
                                const SceneLighting& lighting, const gpu::RenderTarget& target,
-                               const ShadowVolume* shadows) {
+                               const ShadowVolume* shadows, const FireLights* fire) {
   target.bind();
   glClearColor(settings.background.x, settings.background.y, settings.background.z, 1.0f);
   glClearDepth(1.0);
@@ -152,7 +188,8 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
   // An sRGB target is written by the shader's own encoding, cheaper than GL's on llvmpipe
   // (engine/math/color.h, linear_to_srgb_polynomial); the clear above was encoded by GL.
   const bool encode = target.format() == GL_SRGB8_ALPHA8;
-  const gpu::Program& program = encode ? encode_program_ : program_;
+  const int fire_lights = fire ? std::min(static_cast<int>(fire->lights.size()), kMaxFireLights) : 0;
+  const gpu::Program& program = program_for(encode, fire_lights);
   const GLboolean srgb_writes = glIsEnabled(GL_FRAMEBUFFER_SRGB);
   if (encode) glDisable(GL_FRAMEBUFFER_SRGB);
   glUseProgram(program.get());
@@ -163,6 +200,7 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
   glUniform3fv(gpu::uniform_location(program, "u_light_color"), 1, glm::value_ptr(lighting.sun_color));
   glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
   bind_shadows(program, shadows);
+  set_fire_light_uniforms(program, fire);
   const GLint offset = gpu::uniform_location(program, "u_offset");
   const GLint scale = gpu::uniform_location(program, "u_scale");
   const GLint albedo = gpu::uniform_location(program, "u_albedo");

@@ -1,10 +1,12 @@
 #pragma once
 // GPU state of the opaque pass: one vertex/index buffer pair per procedural mesh kind.
 #include <map>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "components/fire_lights.h"
 #include "components/mesh_instance.h"
 #include "components/render_settings.h"
 #include "components/scene_lighting.h"
@@ -25,10 +27,12 @@ class MeshRenderer {
   // drawn into it since (RenderTarget::binds(): particles in layers), else that image's colour
   // and depth are copied back (particles blended into it): the same bytes for a fraction of the
   // cost. The opaque scene of a still camera is drawn once. `shadows` (may be null or empty: no
-  // shadows): the particle media's optical depth toward the sun, which dims its light.
+  // shadows): the particle media's optical depth toward the sun, which dims its light. `fire`
+  // (may be null or empty): the explosion's fire lights, which light it too.
   void draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
             const RenderSettings& settings, const SceneLighting& lighting,
-            const gpu::RenderTarget& target, const ShadowVolume* shadows = nullptr);
+            const gpu::RenderTarget& target, const ShadowVolume* shadows = nullptr,
+            const FireLights* fire = nullptr);
   // How many of the draws so far drew the meshes, and how many copied the last image back (the
   // others found it in place).
   int meshes_drawn() const { return meshes_drawn_; }
@@ -44,7 +48,7 @@ class MeshRenderer {
   const GpuMesh& mesh_for(MeshKind kind);
   void draw_meshes(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                    const RenderSettings& settings, const SceneLighting& lighting,
-                   const gpu::RenderTarget& target, const ShadowVolume* shadows);
+                   const gpu::RenderTarget& target, const ShadowVolume* shadows, const FireLights* fire);
   // Sets the shadow uniforms of `program`, uploading `shadows` when it changed.
   void bind_shadows(const gpu::Program& program, const ShadowVolume* shadows);
   // The GL state a draw leaves, set again after a copy.
@@ -63,6 +67,9 @@ class MeshRenderer {
 
   gpu::Program program_;         // linear output: a floating-point target, or GL encodes
   gpu::Program encode_program_;  // writes sRGB itself (srgb_encode.glsl), GL_FRAMEBUFFER_SRGB off
+  // With n fire lights (mesh.frag's FIRE_LIGHTS n), by (encode, n), compiled on first use.
+  std::map<std::pair<bool, int>, gpu::Program> fire_programs_;
+  const gpu::Program& program_for(bool encode, int fire_lights);
   std::map<MeshKind, GpuMesh> meshes_;
   gpu::Texture shadow_texture_;
   glm::ivec3 shadow_size_{0};

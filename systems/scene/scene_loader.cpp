@@ -31,6 +31,7 @@
 #include <utility>
 #include <vector>
 
+#include "components/fire_lights.h"
 #include "components/stereo_camera.h"
 #include "engine/core/edit_distance.h"
 #include "engine/core/file_kind.h"
@@ -604,11 +605,13 @@ void read_light_source(ObjectReader& r, SceneDescription& s) {
   if (!keys.keys.empty()) sun = {keys.keys.front().direction, keys.keys.front().color, keys.keys.front().intensity};
 }
 
-// "shadows": lit media, {"method": "rays" | "map" | "none", "map_size", "map_slices"}.
+// "shadows": lit media, {"method": "rays" | "map" | "none", "map_size", "map_slices",
+// "fire_lights"}.
 void read_shadows(ObjectReader& r, ShadowSettings& s) {
   s.method = read_enum(r, "method", s.method);
   r.integer("map_size", 4, 2048, s.map_size);
   r.integer("map_slices", 4, 1024, s.map_slices);
+  r.integer("fire_lights", 0, kMaxFireLights, s.fire_lights);
 }
 
 void read_cloud(ObjectReader& r, CloudDescription& c) {

@@ -13,6 +13,7 @@
 #include "systems/emitter/cloud_emitter_system.h"
 #include "systems/emitter/emitter_system.h"
 #include "systems/flipbook_fire/flipbook_render_system.h"
+#include "systems/lighting/fire_lights.h"
 #include "systems/lighting/light_animation.h"
 #include "systems/lighting/lighting_system.h"
 #include "systems/mesh_render/mesh_render_system.h"
@@ -27,7 +28,7 @@ std::vector<ecs::SystemDesc> standard_systems(bool readback) {
       cloud_emitter_system(),   emitter_system(),          cloud_drift_system(),
       light_animation_system(),
       animation_system(),       lighting_system(),         shadow_map_system(),
-      shadow_ray_system(),      camera_orbit_system(),
+      shadow_ray_system(),      fire_light_system(),       camera_orbit_system(),
       stereo_camera_system(),   sorting_system(),          flipbook_orient_system(),
       mesh_render_system(),     flipbook_render_system(),  billboard_render_system(),
       composite_system()};

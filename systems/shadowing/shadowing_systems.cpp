@@ -61,9 +61,14 @@ ShadowCaster caster_of(const ParticlePool& p, std::size_t i, bool spheres) {
 
 std::vector<ShadowCaster> shadow_casters(ecs::World& world) {
   const bool spheres = sphere_casters(world);
+  // The lit sets in entity-index order, read only.
+  std::vector<std::pair<uint32_t, const ParticlePool*>> sets;
+  world.each<const ParticleSet, const ParticleLight>(
+      [&](ecs::Entity e, const ParticleSet& s, const ParticleLight&) { sets.push_back({e.index, &s.pool}); });
+  std::sort(sets.begin(), sets.end());
   std::vector<ShadowCaster> casters;
-  for (const auto& [index, set] : lit_sets(world)) {
-    const ParticlePool& p = *set.first;
+  for (const auto& [index, pool] : sets) {
+    const ParticlePool& p = *pool;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.density[i] > 0.0f) casters.push_back(caster_of(p, i, spheres));
   }

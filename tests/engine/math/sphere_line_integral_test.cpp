@@ -75,6 +75,27 @@ TEST(SphereLineIntegral, ProjectedDepthIntegratesToTheClosedForm) {
   EXPECT_NEAR(total, want, 1e-3 * want);
 }
 
+// The opacity over the projected disc: a midpoint sum over the disc, and its two limits (nearly
+// transparent: k times the projected depth's closed form; opaque: the disc's area).
+TEST(SphereLineIntegral, OpacityAreaMatchesTheDiscAndItsLimits) {
+  for (const double k : {0.3, 2.0, 9.0}) {
+    const ConeSphere s{{0.0, 0.0, 0.0}, 1.2, k};
+    const int n = 500;
+    const double cell = 2.0 * s.r / n;
+    double sum = 0.0;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const glm::dvec3 o(-s.r + (i + 0.5) * cell, -s.r + (j + 0.5) * cell, -10.0);
+        sum += (1.0 - std::exp(-sphere_optical_depth(s, o, {0.0, 0.0, 1.0}, -kInf, kInf))) * cell * cell;
+      }
+    EXPECT_NEAR(sphere_opacity_area(s.r, k), sum, 2e-3 * sum) << k;
+  }
+  const double r = 0.8;
+  EXPECT_NEAR(sphere_opacity_area(r, 1e-6), 1e-6 * 4.0 * kPi * r * r * r * (1.0 / 3.0 - kPi / 16.0), 1e-9);
+  EXPECT_NEAR(sphere_opacity_area(r, 1e6), kPi * r * r, 1e-3 * kPi * r * r);
+  EXPECT_EQ(sphere_opacity_area(r, 0.0), 0.0);
+}
+
 TEST(ShadowCaster, ASphereReachesItsRadiusAndAGaussianItsCube) {
   const ShadowCaster sphere(ConeSphere{{0.0, 0.0, 0.0}, 2.0, 1.0});
   const ShadowCaster gaussian(clamped_gaussian({0.0, 0.0, 0.0}, 3.0, 0.5));

@@ -115,7 +115,7 @@ TEST(PyroCliProfile, ProfileJsonHasEverySystemAndTheExplosionsParticles) {
                                           // scheduled in every scene, idle without fires
                                           "flipbook_orient", "flipbook_render",
                                           // and idle without a "shadows" block
-                                          "shadow_map", "shadow_rays"};
+                                          "shadow_map", "shadow_rays", "fire_lights"};
   std::set<std::string> names;
   for (const json& s : j["systems"]) {
     names.insert(s["name"]);
