@@ -28,10 +28,10 @@ void run_bench_explosion_shadows(ExplosionShadowsBenchOptions options, bool json
               options.scene.c_str(), options.width, options.height, double(options.layer_scale),
               j["off"]["fps"].get<double>(), j["off"]["rmse_vs_truth"].get<double>());
   for (const nlohmann::json& row : j["settings"])
-    std::printf("  %-5s %4dx%-3d %6.1f fps (%.2fx shadows off), RMSE %.4f\n",
+    std::printf("  %-5s %4dx%-3d %d fire lights %6.1f fps (%.2fx shadows off), RMSE %.4f\n",
                 row["method"].get<std::string>().c_str(), row["map_size"].get<int>(),
-                row["map_slices"].get<int>(), row["fps"].get<double>(), row["fps_over_off"].get<double>(),
-                row["rmse_vs_truth"].get<double>());
+                row["map_slices"].get<int>(), row["fire_lights"].get<int>(), row["fps"].get<double>(),
+                row["fps_over_off"].get<double>(), row["rmse_vs_truth"].get<double>());
 }
 
 }  // namespace

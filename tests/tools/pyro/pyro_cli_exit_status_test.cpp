@@ -146,6 +146,8 @@ const std::map<std::string, std::vector<std::string>>& cheap_json_runs() {
                      "--height", "16", "--vdb-render", "/bin/false"}},
       {"bench relight", {"bench", "relight", content_path("volumes/sample_cloud.vdb"), "--directions", "1",
                          "--width", "16", "--height", "16", "--frames", "1"}},
+      {"bench explosion-shadows", {"bench", "explosion-shadows", content_path("scenes/explosion.json"), "--width", "16",
+                                   "--height", "16", "--frames", "1", "--error-frames", "1"}},
   };
   return runs;
 }
