@@ -40,6 +40,8 @@ shot sunset sunset 30 480 360
 shot cloud_vdb cloud_vdb 0 480 270
 shot cloud_fitted cloud_fitted 0 480 270
 shot explosion explosion 30 384 384
+shot explosion_lit explosion 30 384 384 --shadows map
+shot explosion_dusk explosion_dusk 30 384 384
 shot explosion_behind_tower explosion_behind_tower 30 384 384
 shot flipbook_fire flipbook_fire 12 128 192
 shot campfire campfire 20 320 240 --stereo side-by-side
