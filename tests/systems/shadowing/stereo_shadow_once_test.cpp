@@ -1,10 +1,11 @@
-// Shadows are light-space work: in stereo the light phase's systems run once a frame, not once per
-// eye, while the camera and render phases serve both eyes (the schedule's per-system counts, as
+// Shadows and fire lights are light-space work: in stereo the light phase's systems run once a
+// frame, not once per eye, while the camera and render phases serve both eyes (the schedule's per-system counts, as
 // the profiler reports them), and both eyes see the same particles' light.
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include "components/fire_lights.h"
 #include "components/particle_light.h"
 #include "components/shadow_volume.h"
 #include "components/view.h"
@@ -44,6 +45,22 @@ TEST(StereoShadows, TheLightPhaseRunsOncePerFrameForBothEyes) {
     runtime.world().each<const ParticleLight>([&](const ParticleLight& l) { lit += l.others_depth.size(); });
     EXPECT_EQ(lit, 1500u);  // every particle lit, once
   }
+}
+
+TEST(StereoShadows, TheExplosionsShadowsAndFireLightsAreWorkedOutOncePerFrame) {
+  SceneDescription scene = load_scene(test::scene_path("explosion_dusk.json"));
+  ASSERT_TRUE(scene.shadows.has_value());
+  RuntimeOptions o;
+  o.width_override = 64;
+  o.height_override = 64;
+  o.stereo_mode = StereoMode::side_by_side;
+  SceneRuntime runtime(scene, o);
+  for (int f = 0; f < 3; ++f) runtime.draw_frame(f);
+  ASSERT_EQ(runtime.world().resource<const View>().eyes.size(), 2u);
+  for (const char* system : {"shadow_map", "shadow_rays", "fire_lights", "billboard_render"})
+    EXPECT_EQ(runs_of(runtime, system), 3u) << system;
+  EXPECT_EQ(runtime.world().resource<const ShadowVolume>().version, 3u);
+  EXPECT_EQ(runtime.world().resource<const FireLights>().lights.size(), size_t(scene.shadows->fire_lights));
 }
 
 }  // namespace
