@@ -32,7 +32,8 @@ struct ShadowSettings {
   // (components/fire_lights.h) light its dust, smoke and the ground; 0: fire lights nothing.
   int fire_lights = 2;
   // The explosion's media only: each fragment's transmittance summed exactly over every particle
-  // drawn (O(particles) a fragment; sphere_billboard.frag, LIT 2), whatever `method`: the truth
+  // drawn and its fire light over every fire emitter (O(particles) a fragment;
+  // sphere_billboard.frag, LIT 2), whatever `method`: the truth
   // that `pyro bench explosion-shadows` measures the methods against. Not in the scene format.
   bool exact_fragments = false;
 

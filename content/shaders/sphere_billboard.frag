@@ -97,7 +97,8 @@ float node_coord(float x, float lo, float hi, float n) {
 
 #if LIT == 2
 // The optical depth toward the light from view-space point x: every particle's chord beyond x,
-// times its extinction along that line.
+// times its extinction along that line (engine/math/sphere_line_integral.h's
+// sphere_optical_depth over [0, infinity), summed).
 float exact_depth_to_light(vec3 x, vec3 toward_light) {
   float total = 0.0;
   for (int j = 0; j < u_caster_count; ++j) {
