@@ -16,6 +16,12 @@ double henyey_greenstein(double mu, double g) {
   return inv_4pi * (1.0 - g * g) / (d * std::sqrt(d));
 }
 
+double sample_henyey_greenstein_cosine(double g, double xi) {
+  if (std::abs(g) < 1e-4) return 1.0 - 2.0 * xi;
+  const double s = (1.0 - g * g) / (1.0 - g + 2.0 * g * xi);
+  return std::clamp((1.0 + g * g - s * s) / (2.0 * g), -1.0, 1.0);
+}
+
 double cornette_shanks(double mu, double g) {
   const double d = 1.0 + g * g - 2.0 * g * mu;
   return inv_4pi * 3.0 * (1.0 - g * g) * (1.0 + mu * mu) / (2.0 * (2.0 + g * g) * d * std::sqrt(d));

@@ -18,6 +18,12 @@ enum class PhaseFunction { henyey_greenstein, cornette_shanks };
 // Henyey & Greenstein 1941: p(μ) = (1 − g²) / (4π (1 + g² − 2 g μ)^{3/2}). Mean cosine = g.
 double henyey_greenstein(double mu, double g);
 
+// The cosine μ of a direction drawn from Henyey–Greenstein for a uniform ξ in [0, 1): the
+// inverse of its cumulative distribution in μ, 2π ∫_{-1}^{μ} p = ξ, which solves to
+//   μ = (1 + g² − ((1 − g²) / (1 − g + 2 g ξ))²) / (2 g), and μ = 1 − 2ξ when g = 0.
+// ξ = 0 gives μ = −1 and ξ → 1 gives μ = 1.
+double sample_henyey_greenstein_cosine(double g, double xi);
+
 // Cornette & Shanks 1992, eq. 8 (the paper's section 3.1 formula):
 //   p(μ) = 1/(4π) · 3 (1 − g²) (1 + μ²) / (2 (2 + g²) (1 + g² − 2 g μ)^{3/2}).
 // g is its parameter, not its mean cosine; that is cornette_shanks_mean_cosine(g).

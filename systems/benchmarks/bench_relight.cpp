@@ -6,11 +6,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "components/directional_light.h"
 #include "engine/core/user_error.h"
 #include "engine/io/vdb_reader.h"
+#include "systems/benchmarks/sun_directions.h"
 #include "systems/cloud_import/cloud_import.h"
 #include "systems/cloud_import/grid_framing.h"
 #include "systems/cloud_import/scene_volume.h"
@@ -26,14 +26,6 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-// The sun of direction k of n: azimuth 360 k / n degrees, 40 degrees above the horizon (the
-// direction the light travels: down and across).
-glm::dvec3 sun_direction(int k, int n) {
-  const double azimuth = 2.0 * std::numbers::pi * k / n, elevation = 40.0 * std::numbers::pi / 180.0;
-  return -glm::dvec3(std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
-                     std::cos(elevation) * std::sin(azimuth));
 }
 
 // The particles in a scene of their own: the grid's framing camera, the medium's sun and ambient

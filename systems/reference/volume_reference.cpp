@@ -57,7 +57,8 @@ std::vector<float> light_optical_depth(const DenseGrid& grid, const VolumeMedium
 
 RgbImage render_volume_reference(const DenseGrid& grid, const std::vector<float>& light_depth,
                                  const CameraFrame& camera, const VolumeMedium& medium,
-                                 double step_voxels, int threads, VolumeRenderStats* stats) {
+                                 double step_voxels, int threads, VolumeRenderStats* stats,
+                                 const SunScattering& sun) {
   const auto start = std::chrono::steady_clock::now();
   RgbImage img;
   img.width = camera.width;
@@ -70,12 +71,14 @@ RgbImage render_volume_reference(const DenseGrid& grid, const std::vector<float>
   const double lo[3] = {-1, -1, -1}, hi[3] = {double(n[0]), double(n[1]), double(n[2])};
   const float* f = grid.values.data();
   const float* tl = light_depth.data();
+  const glm::dvec3 light = glm::normalize(medium.light_direction);
   std::vector<uint64_t> samples(img.height, 0);
   parallel_rows(img.height, threads, [&](int y) {
     for (int x = 0; x < img.width; ++x) {
       const glm::dvec3 wd = pixel_ray_direction(camera, x + 0.5, y + 0.5);
       glm::dvec3 L(0.0);
       double T = 1.0;
+      const double mu = -glm::dot(light, wd);  // the light's travel against the way to the eye
       if (!grid.empty()) {
         const glm::dvec3 d = to_local3 * wd;  // index units per world unit
         const double ipw = glm::length(d);
@@ -93,7 +96,7 @@ RgbImage render_volume_reference(const DenseGrid& grid, const std::vector<float>
             ++samples[y];
             if (rho <= 0.0f) continue;
             const double dtau = medium.extinction * rho * dt_world;
-            const double lit = std::exp(-double(sample_trilinear_clamped(tl, n, px, py, pz)));
+            const double lit = sun_scattering(sun, mu, double(sample_trilinear_clamped(tl, n, px, py, pz)));
             const glm::dvec3 S = medium.albedo * (medium.light_color * lit + medium.ambient);
             const double a = -std::expm1(-dtau);
             L += T * a * S;

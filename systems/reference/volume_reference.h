@@ -7,12 +7,16 @@
 //       `step_voxels` index units with the midpoint rule; each step of optical depth dtau adds
 //       T * (1 - exp(-dtau)) * S and multiplies T by exp(-dtau) (exact for piecewise-constant
 //       sigma_t and S: Max 1995, eq. 8). What is left of T shows the background.
+//       The sun's part of S is albedo * light_color * S_sun(mu, tau_light) with `sun`'s phase
+//       lobe and octaves (engine/math/scattering_octaves.h); the default is single scattering
+//       with an isotropic phase, S_sun = exp(-tau_light).
 // Rows are spread over std::threads; every pixel is computed independently, so the image does
 // not depend on the thread count.
 #include <vector>
 
 #include "components/volume_medium.h"
 #include "engine/io/vdb_reader.h"
+#include "engine/math/scattering_octaves.h"
 #include "engine/math/camera_math.h"
 #include "systems/reference/rgb_image.h"
 
@@ -35,6 +39,6 @@ struct VolumeRenderStats {
 RgbImage render_volume_reference(const DenseGrid& grid, const std::vector<float>& light_depth,
                                  const CameraFrame& camera, const VolumeMedium& medium,
                                  double step_voxels = 0.5, int threads = 0,
-                                 VolumeRenderStats* stats = nullptr);
+                                 VolumeRenderStats* stats = nullptr, const SunScattering& sun = {});
 
 }  // namespace pyro

@@ -57,5 +57,24 @@ TEST(PhaseFunction, PapersFormulaIsCornetteShanks) {
     }
 }
 
+TEST(PhaseFunction, HenyeyGreensteinSamplesHaveItsMoments) {
+  // Henyey–Greenstein's Legendre moments are g^l: E[μ] = g, E[P2(μ)] = E[(3μ² − 1) / 2] = g².
+  // A stratified ξ over 200000 strata estimates both to better than 1e-4.
+  for (double g : {-0.6, 0.0, 0.3, 0.85}) {
+    const int n = 200000;
+    double m1 = 0.0, m2 = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double mu = sample_henyey_greenstein_cosine(g, (i + 0.5) / n);
+      ASSERT_GE(mu, -1.0);
+      ASSERT_LE(mu, 1.0);
+      m1 += mu;
+      m2 += 0.5 * (3.0 * mu * mu - 1.0);
+    }
+    EXPECT_NEAR(m1 / n, g, 1e-4) << g;
+    EXPECT_NEAR(m2 / n, g * g, 1e-4) << g;
+  }
+  EXPECT_DOUBLE_EQ(sample_henyey_greenstein_cosine(0.5, 0.0), -1.0);
+}
+
 }  // namespace
 }  // namespace pyro
