@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "engine/core/enum_names.h"
+#include "engine/math/scattering_octaves.h"
 
 namespace pyro {
 
@@ -31,6 +32,10 @@ struct ShadowSettings {
   // The explosion's fire as light: this many point lights clustered from the fire particles
   // (components/fire_lights.h) light its dust, smoke and the ground; 0: fire lights nothing.
   int fire_lights = 2;
+  // How the splats scatter the sun towards the eye: a Henyey–Greenstein lobe and octaves of
+  // multiple scattering (engine/math/scattering_octaves.h). The default, one isotropic octave,
+  // is single scattering as the reference computes it.
+  SunScattering scattering{};
   // The explosion's media only: each fragment's transmittance summed exactly over every particle
   // drawn and its fire light over every fire emitter (O(particles) a fragment;
   // sphere_billboard.frag, LIT 2), whatever `method`: the truth

@@ -10,6 +10,7 @@ namespace pyro {
 
 double sun_scattering(const SunScattering& s, double mu, double tau) {
   const ScatteringOctaves& o = s.octaves;
+  if (o.octaves == 1 && s.anisotropy == 0.0) return std::exp(-tau);
   double sum = 0.0, a = 1.0, b = 1.0, c = 1.0;
   for (int i = 0; i < o.octaves; ++i) {
     sum += b * 4.0 * std::numbers::pi * henyey_greenstein(mu, c * s.anisotropy) * std::exp(-a * tau);

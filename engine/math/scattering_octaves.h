@@ -19,11 +19,15 @@ struct ScatteringOctaves {
   double attenuation = 0.25;  // a in (0, 1]: how much deeper light reaches in each octave
   double contribution = 0.5;  // b in [0, 1]: the weight of each octave over the one before
   double eccentricity = 0.5;  // c in [0, 1]: how much each octave's phase lobe flattens
+
+  bool operator==(const ScatteringOctaves&) const = default;
 };
 
 struct SunScattering {
   double anisotropy = 0.0;  // g of the Henyey–Greenstein lobe, (−1, 1); 0 = isotropic
   ScatteringOctaves octaves;
+
+  bool operator==(const SunScattering&) const = default;
 };
 
 // S_sun(μ, τ) above.

@@ -7,17 +7,14 @@
 #include <cmath>
 #include <limits>
 
-#include "components/directional_light.h"
 #include "engine/core/user_error.h"
 #include "engine/io/vdb_reader.h"
+#include "systems/benchmarks/relit_particles.h"
 #include "systems/benchmarks/sun_directions.h"
 #include "systems/cloud_import/cloud_import.h"
 #include "systems/cloud_import/grid_framing.h"
-#include "systems/cloud_import/scene_volume.h"
 #include "systems/reference/volume_reference.h"
 #include "systems/reference/world_snapshot.h"
-#include "systems/scene_runtime/resolve_scene.h"
-#include "systems/scene_runtime/scene_assets.h"
 #include "systems/scene_runtime/scene_runtime.h"
 
 namespace pyro {
@@ -28,30 +25,11 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// The particles in a scene of their own: the grid's framing camera, the medium's sun and ambient
-// light, `shadows` (none: unlit, the particles' colours as they are).
 SceneRuntime relight_runtime(const std::vector<GaussianParticle>& particles, const VolumeMedium& medium,
-                             const CameraDescription& camera, const RelightBenchOptions& o,
-                             bool lit, bool readback) {
-  SceneDescription scene;
-  scene.camera = camera;
-  scene.background = glm::vec3(medium.background);
-  scene.directional_lights.front().direction = glm::vec3(medium.light_direction);
-  scene.directional_lights.front().color = glm::vec3(medium.light_color);
-  scene.ambient_lights.front().color = glm::vec3(medium.ambient);
-  if (lit) scene.shadows = o.shadows;
-  RuntimeOptions ro;
-  ro.readback = readback;
-  ro.width_override = o.width;
-  ro.height_override = o.height;
-  const ResolvedScene resolved = resolve_scene(scene, ro, std::numeric_limits<int>::max());
-  SceneAssets assets;
-  assets.volumes.push_back({to_particle_pool(particles), {}, {}});
-  return SceneRuntime(resolved, std::move(assets), ro);
-}
-
-void set_sun(SceneRuntime& runtime, const glm::dvec3& direction) {
-  runtime.world().each<DirectionalLight>([&](DirectionalLight& l) { l.direction = glm::vec3(direction); });
+                             const CameraDescription& camera, const RelightBenchOptions& o, bool lit,
+                             bool readback) {
+  return relit_particles_runtime(particles, medium, {camera, o.width, o.height, readback},
+                                 lit ? std::optional<ShadowSettings>(o.shadows) : std::nullopt);
 }
 
 // Frames per second over `frames` frames (the GPU finished each), the sun turning every frame
@@ -78,16 +56,11 @@ nlohmann::json bench_relight(const RelightBenchOptions& o) {
   if (!note.empty() && o.on_note) o.on_note(o.file + ": " + note);
   if (grid.empty()) throw UserError(o.file, "grid \"" + grid.name + "\"", "a grid with active voxels to relight");
   auto t = std::chrono::steady_clock::now();
-  // Imported as a lit scene imports its volumes: albedo kept (no sun, ambient 1).
-  CloudImportOptions import;
-  import.medium.extinction = default_extinction(grid);
-  import.medium.light_color = glm::dvec3(0.0);
-  import.medium.ambient = glm::dvec3(1.0);
-  import.tau_tolerance = tau_tolerance_for_error(o.error);
-  const std::vector<GaussianParticle> particles = import_cloud(grid, import);
-  const double import_seconds = seconds_since(t);
   VolumeMedium medium;  // the reference's: the default albedo, sun and ambient light
-  medium.extinction = import.medium.extinction;
+  medium.extinction = default_extinction(grid);
+  const std::vector<GaussianParticle> particles =
+      import_keeping_albedo(grid, medium.extinction, medium.albedo, o.error);
+  const double import_seconds = seconds_since(t);
   const CameraDescription camera = framing_camera(grid);
 
   SceneRuntime relit = relight_runtime(particles, medium, camera, o, true, true);

@@ -157,6 +157,7 @@ std::optional<SplatLighting> splat_lighting(ecs::World& world, const EyeDrawList
   s.sun_color = lighting.directional_lights > 0 ? lighting.sun_color : glm::vec3(0.0f);
   s.ambient = lighting.ambient;
   s.self_shadow = shadows->method != ShadowMethod::none;
+  s.scattering = shadows->scattering;
   return s;
 }
 

@@ -156,6 +156,10 @@ void BillboardRenderer::set_lighting_uniforms(const SplatLighting& lighting) con
   glUniform3fv(gpu::uniform_location(program, "u_sun_color"), 1, glm::value_ptr(lighting.sun_color));
   glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
   glUniform1f(gpu::uniform_location(program, "u_self_shadow"), lighting.self_shadow ? 1.0f : 0.0f);
+  const ScatteringOctaves& o = lighting.scattering.octaves;
+  glUniform1i(gpu::uniform_location(program, "u_octaves"), o.octaves);
+  glUniform4f(gpu::uniform_location(program, "u_scattering"), float(lighting.scattering.anisotropy),
+              float(o.attenuation), float(o.contribution), float(o.eccentricity));
   std::array<float, kTailPolynomialTerms> tail;
   for (size_t k = 0; k < tail.size(); ++k) tail[k] = float(tail_polynomial_[k]);
   glUniform1fv(gpu::uniform_location(program, "u_tail_polynomial"), GLsizei(tail.size()), tail.data());

@@ -13,6 +13,7 @@
 #include "engine/math/camera_math.h"
 #include "engine/math/footprint.h"
 #include "engine/math/gaussian_line_integral.h"
+#include "engine/math/scattering_octaves.h"
 #include "engine/gpu/mapped_ring.h"
 #include "systems/billboard_render/instance_buffer.h"  // UploadCost
 #include "systems/gpu_sorting/gpu_depth_sort.h"
@@ -28,6 +29,7 @@ struct SplatLighting {
   glm::vec3 toward_sun{0.0f, 1.0f, 0.0f};  // unit
   glm::vec3 sun_color{0.0f}, ambient{0.0f};
   bool self_shadow = true;  // false: lit without shadows
+  SunScattering scattering;  // the phase lobe and octaves (engine/math/scattering_octaves.h)
 };
 
 // CPU time of the particle pass since the last reset_cost(): packing the particles and copying

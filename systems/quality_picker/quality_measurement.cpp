@@ -10,6 +10,7 @@
 #include "components/gpu_frame.h"
 #include "components/particle_set.h"
 #include "components/scene_lighting.h"
+#include "components/shadow_settings.h"
 #include "components/view.h"
 #include "engine/core/sample_statistics.h"
 #include "engine/ecs/world.h"
@@ -81,6 +82,8 @@ std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, i
     sun.travel = glm::dvec3(lighting.sun_direction);
     sun.color = glm::dvec3(lighting.directional_lights > 0 ? lighting.sun_color : glm::vec3(0.0f));
     sun.ambient = glm::dvec3(lighting.ambient);
+    if (const auto* shadows = particles.world().try_resource<const ShadowSettings>())
+      sun.scattering = shadows->scattering;
     const RgbImage shadowed =
         shadowed_opaque_reference(pool, camera, sun, behind, rgb_of(sunless->image()), stop);
     images.push_back(render_lit_particles_reference_over(pool, camera, sun, shadowed, stop));

@@ -66,11 +66,12 @@ RgbImage render_lit_particles_reference_over(const ParticlePool& p, const Camera
     }
   const ShadowRayIndex index(std::vector<ShadowCaster>(gs.begin(), gs.end()), sun.travel);
   RgbImage img = behind;
-  const glm::dvec3 eye(camera.eye);
+  const glm::dvec3 eye(camera.eye), travel = glm::normalize(sun.travel);
   parallel_rows(img.height, threads, [&](int y) {
     RayPieces pieces;
     for (int x = 0; x < img.width; ++x) {
       const glm::dvec3 w = pixel_ray_direction(camera, x + 0.5, y + 0.5);
+      const double mu = -glm::dot(travel, w);
       const double t_stop = stop[static_cast<size_t>(y) * camera.width + x];
       add_particle_pieces(gs, eye, w, t_stop, pieces);
       const float* back = behind.at(x, y);
@@ -79,7 +80,7 @@ RgbImage render_lit_particles_reference_over(const ParticlePool& p, const Camera
           [&](size_t i) { return albedo[i]; }, glm::dvec3(back[0], back[1], back[2]), max_piece_depth,
           [&](double a, double b) {
             const glm::dvec3 mid = eye + 0.5 * (a + b) * w;
-            return sun.color * std::exp(-index.optical_depth_to_light(mid)) + sun.ambient;
+            return sun.color * sun_scattering(sun.scattering, mu, index.optical_depth_to_light(mid)) + sun.ambient;
           });
       float* px = img.at(x, y);
       for (int c = 0; c < 3; ++c) px[c] = float(L[c]);

@@ -4,11 +4,12 @@
 //
 // Along each pixel ray the particles are integrated as in particle_reference.h; each part of the
 // ray (of optical depth at most `max_piece_depth`) scatters its particles' mean albedo times
-//   L(x) = sun_color exp(-tau_sun(x)) + ambient,
+//   L(x) = sun_color S(mu, tau_sun(x)) + ambient,
 // x the part's midpoint and tau_sun(x) the exact optical depth of every particle from x toward the
-// sun (the closed-form line integrals, engine/math/shadow_ray_index.h). The engine's light phase
-// evaluates L once per particle, at its centre; this evaluates it along the rays, so it measures
-// that shortcut and the shadow method together.
+// sun (the closed-form line integrals, engine/math/shadow_ray_index.h), S the sun's scattering
+// towards the eye (engine/math/scattering_octaves.h; one isotropic octave: exp(-tau)). The
+// engine's light phase evaluates L once per particle, at its centre; this evaluates it along the
+// rays, so it measures that shortcut and the shadow method together.
 //
 // Opaque surfaces: the GL render of the opaque scene with the sun (`sunlit`) and without it
 // (`sunless`) give each pixel's sun term, sunlit - sunless; the surface point the pixel's ray
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "engine/math/camera_math.h"
+#include "engine/math/scattering_octaves.h"
 #include "engine/particles/particle_pool.h"
 #include "systems/reference/rgb_image.h"
 
@@ -25,6 +27,7 @@ struct ReferenceSun {
   glm::dvec3 travel{0.0, -1.0, 0.0};  // the direction the sunlight travels (not zero)
   glm::dvec3 color{1.0};              // sun colour times intensity
   glm::dvec3 ambient{0.0};
+  SunScattering scattering;  // the particles' phase lobe and octaves; the surfaces see exp(-tau)
 };
 
 // The opaque scene with the media's shadows: sunless + exp(-tau_sun(p)) (sunlit - sunless), p the

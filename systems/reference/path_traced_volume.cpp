@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "engine/core/rng.h"
 #include "engine/math/phase_function.h"
 #include "systems/reference/grid_sampling.h"
 #include "systems/reference/parallel_rows.h"
@@ -17,17 +18,11 @@ namespace pyro {
 
 namespace {
 
-// SplitMix64 (Steele, Lea & Flood 2014): a small generator whose streams, seeded apart, are
-// independent enough for Monte Carlo estimates.
+// Doubles in [0, 1) from SplitMix64 (engine/core/rng.h): 53 random bits each, as deep paths need
+// more resolution than the engine's 24-bit floats.
 struct Random {
   uint64_t state;
-  double uniform() {  // [0, 1)
-    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return double(z >> 11) * 0x1.0p-53;
-  }
+  double uniform() { return double(splitmix64(state) >> 11) * 0x1.0p-53; }
 };
 
 // The density field in the grid's local index space, with the world-to-index map: a world ray
@@ -171,8 +166,7 @@ PathTracedImage path_trace_volume(const DenseGrid& grid, const CameraFrame& came
   std::vector<uint64_t> events(img.height, 0), truncated(img.height, 0);
   parallel_rows(img.height, options.threads, [&](int y) {
     for (int x = 0; x < img.width; ++x) {
-      Random rng{options.seed * 0x632BE59BD9B4E019ull + uint64_t(y) * img.width + x};
-      rng.uniform();
+      Random rng{mix_seeds(options.seed, uint64_t(y) * img.width + x)};
       glm::dvec3 sum(0.0), sum2(0.0);
       for (int s = 0; s < spp; ++s) {
         const double jx = rng.uniform(), jy = rng.uniform();

@@ -605,13 +605,29 @@ void read_light_source(ObjectReader& r, SceneDescription& s) {
   if (!keys.keys.empty()) sun = {keys.keys.front().direction, keys.keys.front().color, keys.keys.front().intensity};
 }
 
+// "scattering": {"anisotropy", "octaves", "attenuation", "contribution", "eccentricity"}.
+void read_scattering(ObjectReader& r, SunScattering& s) {
+  float g = float(s.anisotropy), a = float(s.octaves.attenuation), b = float(s.octaves.contribution),
+        c = float(s.octaves.eccentricity);
+  r.number("anisotropy", Range{-0.99, 0.99}, g);
+  r.integer("octaves", 1, 16, s.octaves.octaves);
+  r.number("attenuation", Range{0.0, 1.0, true, false}, a);
+  r.number("contribution", kUnit, b);
+  r.number("eccentricity", kUnit, c);
+  s.anisotropy = g;
+  s.octaves.attenuation = a;
+  s.octaves.contribution = b;
+  s.octaves.eccentricity = c;
+}
+
 // "shadows": lit media, {"method": "rays" | "map" | "none", "map_size", "map_slices",
-// "fire_lights"}.
+// "fire_lights", "scattering"}.
 void read_shadows(ObjectReader& r, ShadowSettings& s) {
   s.method = read_enum(r, "method", s.method);
   r.integer("map_size", 4, 2048, s.map_size);
   r.integer("map_slices", 4, 1024, s.map_slices);
   r.integer("fire_lights", 0, kMaxFireLights, s.fire_lights);
+  r.object("scattering", [&](ObjectReader& sc) { read_scattering(sc, s.scattering); });
 }
 
 void read_cloud(ObjectReader& r, CloudDescription& c) {

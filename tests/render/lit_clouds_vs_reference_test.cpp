@@ -59,5 +59,20 @@ TEST_F(LitClouds, TheOpacityShadowMapIsWithinTheBar) { EXPECT_LE(rmse(ShadowMeth
 
 TEST_F(LitClouds, WithoutShadowsTheFrameIsNot) { EXPECT_GT(rmse(ShadowMethod::none), 0.02); }
 
+// A forward lobe and four octaves (engine/math/scattering_octaves.h): the splats and the
+// reference light the clouds alike, and differently from single scattering.
+TEST(LitCloudsScattering, ForwardLobeAndOctavesMatchTheReference) {
+  SceneDescription scene = lit_clouds(ShadowMethod::shadow_map);
+  scene.shadows->scattering = {0.6, {4, 0.25, 0.5, 0.5}};
+  const RgbImage engine = engine_frame(scene);
+  scene.shadows->method = ShadowMethod::rays;
+  const RgbImage reference = particle_scene_references(scene, kWidth, kHeight, {0}).at(0);
+  const double e = image_rmse(engine, reference);
+  const double single = image_rmse(engine_frame(lit_clouds(ShadowMethod::shadow_map)), reference);
+  std::printf("octaves: rmse %.5f; single scattering against them %.5f\n", e, single);
+  EXPECT_LE(e, 0.02);
+  EXPECT_GT(single, 2.0 * e);
+}
+
 }  // namespace
 }  // namespace pyro

@@ -1,4 +1,4 @@
-// pyro bench ecs | sort | scale | import-cases | render | johnson | layers | table1 | soak | vdb | relight | multiple-scattering | schedule ... [--json]
+// pyro bench ecs | sort | scale | import-cases | render | johnson | layers | table1 | soak | vdb | relight | multiple-scattering | cycles | schedule ... [--json]
 //
 // Each subcommand parses its options, runs the benchmark (systems/benchmarks; bench ecs:
 // tools/pyro/bench_ecs.h) and prints its result.
@@ -252,6 +252,7 @@ void add_bench_commands(CLI::App& app) {
   add_bench_import_scale_command(*bench);
   add_bench_relight_command(*bench);
   add_bench_multiple_scattering_command(*bench);
+  add_bench_cycles_command(*bench);
   add_bench_explosion_shadows_command(*bench);
 
   for (const auto add : {add_bench_ecs, add_bench_sort, add_bench_scale, add_bench_import_cases, add_bench_render, add_bench_johnson, add_bench_layers,

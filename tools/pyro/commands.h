@@ -23,6 +23,7 @@ void add_bench_schedule_command(CLI::App& bench);
 void add_bench_import_scale_command(CLI::App& bench);  // command_bench_import_scale.cpp
 void add_bench_relight_command(CLI::App& bench);       // command_bench_relight.cpp
 void add_bench_multiple_scattering_command(CLI::App& bench);  // command_bench_multiple_scattering.cpp
+void add_bench_cycles_command(CLI::App& bench);       // command_bench_cycles.cpp
 void add_bench_explosion_shadows_command(CLI::App& bench);  // command_bench_explosion_shadows.cpp
 
 // Subcommands of `pyro analyze`, registered by add_analyze_commands.

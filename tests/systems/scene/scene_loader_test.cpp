@@ -233,6 +233,24 @@ TEST(SceneLoader, LightsAreCheckedLikeEveryOtherKey) {
   expect_error(R"({"lights": [{"type": "directional", "intensity": -1}]})", "/lights/0/intensity", {"found -1"});
 }
 
+TEST(SceneLoader, ShadowsScatteringSetsTheLobeAndOctaves) {
+  const SceneDescription s = parse_scene(R"({"shadows": {"scattering": {"anisotropy": 0.6, "octaves": 4,
+      "attenuation": 0.3, "contribution": 0.45, "eccentricity": 0.7}}})", kFile);
+  ASSERT_TRUE(s.shadows.has_value());
+  const SunScattering& sc = s.shadows->scattering;
+  EXPECT_FLOAT_EQ(float(sc.anisotropy), 0.6f);
+  EXPECT_EQ(sc.octaves.octaves, 4);
+  EXPECT_FLOAT_EQ(float(sc.octaves.attenuation), 0.3f);
+  EXPECT_FLOAT_EQ(float(sc.octaves.contribution), 0.45f);
+  EXPECT_FLOAT_EQ(float(sc.octaves.eccentricity), 0.7f);
+  // Without the key: one isotropic octave, single scattering.
+  EXPECT_EQ(parse_scene(R"({"shadows": {}})", kFile).shadows->scattering, SunScattering{});
+  expect_error(R"({"shadows": {"scattering": {"anisotropy": 1}}})", "/shadows/scattering/anisotropy", {"found 1"});
+  expect_error(R"({"shadows": {"scattering": {"octaves": 0}}})", "/shadows/scattering/octaves", {"found 0"});
+  expect_error(R"({"shadows": {"scattering": {"attenuation": 0}}})", "/shadows/scattering/attenuation", {"(0, 1]"});
+  expect_error(R"({"shadows": {"scattering": {"phase": 0.5}}})", "/shadows/scattering/phase", {"unknown key"});
+}
+
 TEST(SceneLoader, LoadsFromFile) {
   TempDir dir;
   const std::string path = dir.write("scene.json", kFullScene);

@@ -146,6 +146,10 @@ const std::map<std::string, std::vector<std::string>>& cheap_json_runs() {
                      "--height", "16", "--vdb-render", "/bin/false"}},
       {"bench relight", {"bench", "relight", content_path("volumes/sample_cloud.vdb"), "--directions", "1",
                          "--width", "16", "--height", "16", "--frames", "1"}},
+      {"bench multiple-scattering", {"bench", "multiple-scattering", content_path("volumes/sample_cloud.vdb"),
+                                     "--directions", "1", "--samples", "2", "--width", "8", "--height", "8"}},
+      {"bench cycles", {"bench", "cycles", content_path("volumes/sample_cloud.vdb"), "--directions", "1",
+                        "--samples", "2", "--width", "8", "--height", "8", "--blender", "/bin/false"}},
       {"bench explosion-shadows", {"bench", "explosion-shadows", content_path("scenes/explosion.json"), "--width", "16",
                                    "--height", "16", "--frames", "1", "--error-frames", "1"}},
   };

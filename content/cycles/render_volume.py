@@ -3,16 +3,18 @@
 An independent multiple-scattering reference for Pyrocumulus' own volume path
 tracer. Run it headless with Blender 3.4 (Debian's `blender` package):
 
-  blender -b --factory-startup --python tools/cycles/render_volume.py -- \
+  blender -b --factory-startup --python content/cycles/render_volume.py -- \
      --vdb FILE --grid density --extinction K --albedo A --anisotropy G \
      --sun-direction DX DY DZ --light-color R G B \
      --camera-position X Y Z --camera-target X Y Z --camera-up X Y Z --fov-y DEG \
-     --width W --height H --samples N --bounces B [--background R G B] --out OUT.pfm
+     --width W --height H --samples N --bounces B [--background R G B] [--seed S]
+     --out OUT.pfm
 
 Conventions (the engine's; the script converts them to Blender's):
 
-* World coordinates are the VDB file's own world coordinates: the volume object
-  keeps an identity matrix_world (checked), so Blender units = VDB world units.
+* World coordinates are the VDB file's own world coordinates (Blender units =
+  VDB world units): the volume object is neither rotated nor scaled, and its
+  only translation undoes Cycles' half-voxel shift ("Half-voxel shift" below).
 * Extinction per world unit = K * grid value; single-scattering albedo A (grey);
   Henyey-Greenstein phase function with asymmetry G. No emission.
 * --sun-direction is the direction the light TRAVELS (sun -> scene). The sun is
@@ -24,9 +26,12 @@ Conventions (the engine's; the script converts them to Blender's):
   lights nothing. The sun is the only light.
 * --bounces B: Cycles volume bounces (0 = single scattering).
 * Pixel (x, y), y = 0 the TOP row, is the pinhole ray through the pixel centre;
-  vertical field of view --fov-y, square pixels. The output is a colour PFM
-  ("PF", little-endian float32 RGB, rows stored BOTTOM row first as the format
-  prescribes) holding linear radiance.
+  vertical field of view --fov-y, square pixels; each pixel averages its own
+  square (box filter of width 1). Checked by rendering small emissive spheres
+  at known points in a 160x96 image: their centroids land within 0.16 px of
+  the pinhole projection. The output is a colour PFM ("PF", little-endian
+  float32 RGB, rows stored BOTTOM row first as the format prescribes) holding
+  linear radiance.
 
 On success one line "PYRO_CYCLES {json}" is printed to stdout. On bad input the
 script prints "render_volume.py: error: ..." to stderr and Blender exits with
@@ -38,27 +43,48 @@ Input requirement: the density must be stored in LEAF VOXELS. Blender 3.4's
 Cycles renders nothing for density held in active tiles (e.g. the core of the
 Disney cloud); voxelise tiles into leaves (with OpenVDB) before calling this.
 
-Sun strength calibration (measured with this Blender 3.4.1, Cycles CPU):
-  Cycles' sun `energy` S is the irradiance on a surface facing the sun, in
-  scene units per unit area (no pi factor):
-  1. A white Diffuse BSDF plane (colour 1) facing a sun of energy S = 1 head-on
-     rendered as radiance 0.31831 (mean over 64x64 px, 16 spp; 1/pi = 0.318310),
-     i.e. E = pi * L_out = 1.000 * S.
-  2. An optically thin homogeneous box (Principled Volume, density 0.01,
-     albedo 1, g = 0, depth 1 along the view, sun energy S = 1, volume_bounces
-     0) rendered 7.95e-4 (1/(4pi) * sigma_s * depth * S = 7.958e-4, with the
-     path's self-attenuation exp(-0.005) about 0.5% lower: 7.918e-4).
-  Hence the engine's convention E = 4pi * light_color gives
-  sun energy = SUN_ENERGY_PER_LIGHT_COLOR * light_color with the factor 4pi.
+Sun strength (measured with Debian's Blender 3.4.1, Cycles on the CPU):
+  Cycles' sun `energy` S is the irradiance on a surface facing the sun, with no
+  factor pi:
+  1. A white Diffuse BSDF plane (colour 1) lit head-on by a sun of energy 1,
+     direct light only, renders 0.3183098 in every pixel (1/pi = 0.3183099), so
+     E = pi * L_out = 1.000 * S.
+  2. An optically thin homogeneous box (Principled Volume, density 0.01, albedo
+     1, depth 1 along the view, sun energy 1 at 90 degrees to the view,
+     volume_bounces 0, 4096 spp) renders a mean of 7.8794e-4 against
+     sigma_s * p * E * depth * (attenuation of both legs) =
+     0.01 / (4 pi) * 1 * 0.990058 = 7.8786e-4 (ratio 1.0001; per-pixel sd
+     8e-6). With g = 0.5 and the light travelling 45 degrees towards the camera
+     it renders 1.47712e-3 against 1.47712e-3 for forward-scattering HG.
+  So the engine's E = 4pi * light_color is sun energy = 4pi * light_color
+  (SUN_ENERGY_PER_LIGHT_COLOR).
+
+Half-voxel shift: OpenVDB (and the engine) put the value of voxel (i, j, k) at
+world point index_to_world * (i, j, k); Cycles 3.4's grid lookup puts it at
+index (i + 0.5, j + 0.5, k + 0.5), i.e. shifted by half a voxel along every
+index axis. Measured on openvdb_sample_sphere_levelset.vdb (centred on the
+origin, voxel 0.05) rendered as an opaque "SDF < 0" absorber: the silhouette
+centroid came out at +0.0256 in x, y and z; after the correction below, at
+0.0000. This script therefore translates the volume object by
+-0.5 * index_to_world * (1, 1, 1) (no rotation, no scale; checked); pass
+--keep-cycles-voxel-offset to leave matrix_world the exact identity.
+Cross-check: the transmittance of openvdb_sample_smoke1.vdb (extinction 0.2,
+albedo 0, background 1, 128x128, 64 spp) matches OpenVDB's own vdb_render
+(-absorb 0.2 * voxel size, since vdb_render's coefficient is per index unit;
+512x512 box-filtered to 128x128) to rms 4e-4, with ln T ratio median 0.9997;
+without the correction the rms difference is 0.012 (max 0.23).
 
 Ray-march settings: Cycles 3.4 ray-marches heterogeneous volumes with a fixed
-step (jittered per ray), for both camera/scatter and shadow rays, and silently
-enlarges the step when a segment needs more than `volume_max_steps` steps. We
-set the object's volume step size explicitly in world space to half the
-smallest voxel size (scene and material step rates left at 1), and set
-volume_max_steps so that the bounding box diagonal fits at that step. Grids are
-loaded at FULL float precision with voxel clipping 0 and trilinear
-interpolation.
+step (jittered per ray) for camera, scattered and shadow rays, and silently
+lengthens the step when a segment would need more than `volume_max_steps`
+steps. The object's volume step is set in world space to half the smallest
+voxel size (scene and material step rates stay 1) and volume_max_steps to
+cover the bounding box diagonal at that step (at least 1024, at most Cycles'
+limit 65536, with a warning if the limit bites). On the sample smoke (voxel
+0.476, step 0.238, diagonal about 550 steps) a 1/8-voxel step changes the
+single-scattering image mean by 0.03% and takes 5x longer. Grids are loaded at
+FULL float precision (Blender's default is HALF) with voxel clipping 0, and
+sampled with trilinear interpolation.
 """
 
 import argparse
@@ -77,7 +103,7 @@ import numpy as np
 
 PROG = "render_volume.py"
 
-# Cycles' sun energy is irradiance (see the calibration above); the engine's
+# Cycles' sun energy is irradiance (see "Sun strength" above); the engine's
 # light colour L stands for an irradiance of 4pi * L.
 SUN_ENERGY_PER_LIGHT_COLOR = 4.0 * math.pi
 
@@ -134,6 +160,7 @@ def parse_args(argv):
     add("--bounces", type=int, required=True, help="volume bounces (0 = single scattering)")
     add("--background", type=float, nargs=3, default=(0.0, 0.0, 0.0), metavar=("R", "G", "B"),
         help="radiance seen by camera rays that leave the scene (default 0 0 0)")
+    add("--seed", type=int, default=0, help="Cycles' sampling seed (default 0)")
     add("--out", required=True, help="output colour PFM")
     add("--keep-cycles-voxel-offset", action="store_true",
         help="do not undo Cycles' half-voxel shift (volume matrix_world = identity)")
@@ -335,15 +362,12 @@ def configure_render(args, exr_path, max_steps):
     cycles.samples = args.samples
     cycles.use_adaptive_sampling = False
     cycles.use_denoising = False
-    cycles.seed = 0
+    cycles.seed = args.seed
     cycles.use_animated_seed = False
     cycles.sample_clamp_direct = 0.0
     cycles.sample_clamp_indirect = 0.0
     cycles.light_sampling_threshold = 0.0
     cycles.use_guiding = False
-    cycles.caustics_reflective = True
-    cycles.caustics_refractive = True
-    cycles.blur_glossy = 0.0
     # Scattering order: volume_bounces; nothing else may cut a path short, and
     # Russian roulette only starts after all of them (min_*_bounces).
     cycles.volume_bounces = args.bounces
