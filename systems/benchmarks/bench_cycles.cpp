@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -41,6 +42,16 @@ struct ScratchFolder {
   ScratchFolder(const ScratchFolder&) = delete;
   ScratchFolder& operator=(const ScratchFolder&) = delete;
 };
+
+// Whether `program` runs: a path to an executable file, or a name found on PATH.
+bool program_exists(const std::string& program) {
+  if (program.find('/') != std::string::npos) return access(program.c_str(), X_OK) == 0;
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "");
+  for (std::string dir; std::getline(dirs, dir, ':');)
+    if (!dir.empty() && access((fs::path(dir) / program).c_str(), X_OK) == 0) return true;
+  return false;
+}
 
 std::string quoted(const std::string& s) {
   std::string q = "'";
@@ -134,19 +145,26 @@ nlohmann::json score_direction(const CyclesBenchOptions& o, const DenseGrid& gri
                       {"monte_carlo_error", truth.monte_carlo_error},
                       {"cycles_seconds", nullptr},
                       {"cycles_noise", nullptr},
+                      {"noise_rmse", nullptr},
                       {"rmse_vs_cycles", nullptr}};
   const CyclesRender a = render_with_cycles(o, leaf, grid, medium, cam, 1, scratch);
   if (a.image.rgb.empty()) return j;
   const CyclesRender b = render_with_cycles(o, leaf, grid, medium, cam, 2, scratch);
   j["cycles_seconds"] = a.seconds;
   j["rmse_vs_cycles"] = image_rmse(truth.image, a.image);
-  if (!b.image.rgb.empty()) j["cycles_noise"] = image_rmse(a.image, b.image) / std::sqrt(2.0);
+  if (b.image.rgb.empty()) return j;
+  const double cycles_noise = image_rmse(a.image, b.image) / std::sqrt(2.0);
+  j["cycles_noise"] = cycles_noise;
+  j["noise_rmse"] = std::hypot(truth.monte_carlo_error, cycles_noise);
   return j;
 }
 
 }  // namespace
 
 nlohmann::json bench_cycles(const CyclesBenchOptions& o) {
+  if (!program_exists(o.blender))
+    throw UserError(o.blender, "--blender",
+                    "the blender program, on PATH or as a path (Debian: apt-get install --no-install-recommends blender)");
   ProgressTask progress(o.progress, "bench cycles", o.files.size() * size_t(o.directions));
   const ScratchFolder scratch;
   nlohmann::json files = nlohmann::json::array();

@@ -5,7 +5,8 @@
 // its header). Each grid is written again with its density in leaf voxels (Cycles shows nothing
 // of density kept in OpenVDB's active tiles), lit by the sun from `directions` directions
 // (systems/benchmarks/sun_directions.h), seen from its framing camera, with a black sky.
-// A Cycles run that fails (no `blender` on PATH) is a note, and its direction has no score.
+// Without the blender program nothing runs (UserError); a Cycles run that fails is a note, and
+// its direction has no score.
 #include <functional>
 #include <string>
 #include <vector>
@@ -34,8 +35,9 @@ struct CyclesBenchOptions {
 
 // Fields: blender, width, height, samples, cycles_samples, bounces, albedo, anisotropy, files
 // [{file, grid, extinction, directions [{direction, path_traced_seconds, monte_carlo_error,
-// cycles_seconds, cycles_noise, rmse_vs_cycles}], max_rmse_vs_cycles}]. cycles_noise is the RMSE
-// between two Cycles renders with different seeds over √2: the noise of one. A direction whose
+// cycles_seconds, cycles_noise, noise_rmse, rmse_vs_cycles}], max_rmse_vs_cycles}]. cycles_noise
+// is the RMSE between two Cycles renders with different seeds over √2: the noise of one;
+// noise_rmse = √(monte_carlo_error² + cycles_noise²), the RMSE that noise alone would give. A direction whose
 // Cycles run failed has null in its Cycles fields. Throws UserError naming the file for a grid
 // without active voxels or with a rotated or non-uniform voxel transform (the leaf copy is
 // written with a uniform voxel size and a translation).
