@@ -109,6 +109,10 @@ QualityGroundTruth::QualityGroundTruth(const SceneDescription& scene, int width,
     finest.layer_scale = 1.0f;
     finest.footprint_size = scene.footprint.size;
     finest.substeps = has_dynamics(scene) ? kTruthSubsteps : 1;
+    if (scene.shadows) {  // lit explosions: every fragment's light summed over every particle
+      finest.shadows = shadow_choice(*scene.shadows);
+      finest.shadows->exact_fragments = true;
+    }
     SceneRuntime runtime(scene, mono_options(width, height, true, finest));
     for (int f : frames_) {
       runtime.draw_frame(f);
@@ -121,8 +125,9 @@ QualityGroundTruth::QualityGroundTruth(const SceneDescription& scene, int width,
 std::string QualityGroundTruth::description() const {
   return cpu_reference_
              ? "CPU reference (exact Gaussian integrals) over the GL-rendered opaque scene"
-             : "converged GL render (layers at full resolution, 4 substeps per frame): no CPU "
-               "reference exists for spherical or explosion-shaded particles";
+             : "converged GL render (layers at full resolution, 4 substeps per frame, lit media "
+               "summed exactly per fragment): no CPU reference exists for spherical or "
+               "explosion-shaded particles";
 }
 
 double measure_rmse(const SceneDescription& scene, int width, int height, const QualitySettings& q,

@@ -1,5 +1,6 @@
 #include "systems/quality_picker/quality_picker.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -29,9 +30,6 @@ QualityPick pick_from_json_unchecked(const nlohmann::json& j) {
   return p;
 }
 
-bool same_settings(const QualitySettings& a, const QualitySettings& b) {
-  return a.layer_scale == b.layer_scale && a.footprint_size == b.footprint_size && a.substeps == b.substeps;
-}
 
 }  // namespace
 
@@ -45,7 +43,7 @@ QualityPick quality_pick_from_json(const nlohmann::json& j, const SceneDescripti
   // A pick is one of the candidates this scene would measure (a damaged or hand-edited entry,
   // e.g. a footprint of 0 or 1e9, would otherwise reach the renderer).
   bool candidate = false;
-  for (const QualitySettings& q : quality_candidates(scene)) candidate = candidate || same_settings(q, p.settings);
+  for (const QualitySettings& q : quality_candidates(scene)) candidate = candidate || q == p.settings;
   if (!candidate)
     throw std::runtime_error("settings " + pyro::to_json(p.settings).dump() +
                              " are none of the scene's candidates");
@@ -75,6 +73,7 @@ QualitySettings full_resolution_defaults(const SceneDescription& scene) {
   q.layer_scale = 1.0f;
   q.footprint_size = scene.footprint.size;
   q.substeps = 1;
+  if (scene.shadows) q.shadows = shadow_choice(*scene.shadows);
   return q;
 }
 
@@ -84,10 +83,20 @@ std::vector<QualitySettings> quality_candidates(const SceneDescription& scene) {
   if (gaussian_particles(scene)) footprints = {16, 32, 64};
   std::vector<int> substeps = {1};
   if (has_dynamics(scene)) substeps = {1, 2};
+  // Lit media: the shadow methods of `pyro chart shadows` that the chart's Pareto fronts hold,
+  // with the scene's own setting.
+  std::vector<std::optional<ShadowChoice>> shadows = {std::nullopt};
+  if (scene.shadows) {
+    shadows = {ShadowChoice{ShadowMethod::none, 64, 32}, ShadowChoice{ShadowMethod::shadow_map, 32, 16},
+               ShadowChoice{ShadowMethod::shadow_map, 64, 32}, ShadowChoice{ShadowMethod::rays, 64, 32}};
+    const ShadowChoice own = shadow_choice(*scene.shadows);
+    if (std::find(shadows.begin(), shadows.end(), own) == shadows.end()) shadows.push_back(own);
+  }
   std::vector<QualitySettings> out;
   for (float scale : {1.0f, 0.5f, 0.25f, 0.125f})
     for (int n : footprints)
-      for (int k : substeps) out.push_back({scale, n, k});
+      for (int k : substeps)
+        for (const std::optional<ShadowChoice>& s : shadows) out.push_back({scale, n, k, s});
   return out;
 }
 
@@ -125,8 +134,7 @@ void consider(QualityPick& pick, PickState& state, const QualitySettings& q, dou
               double ms, bool qualifies) {
   pick.candidates.push_back(
       {{"settings", to_json(q)}, {"rmse", rmse}, {"ms_per_frame", ms}, {"qualifies", qualifies}});
-  if (q.layer_scale == pick.defaults.layer_scale && q.footprint_size == pick.defaults.footprint_size &&
-      q.substeps == pick.defaults.substeps) {
+  if (q == pick.defaults) {
     pick.defaults_rmse = rmse;
     pick.defaults_ms_per_frame = ms;
   }
@@ -186,13 +194,19 @@ std::optional<QualityPick> pick_scene_quality(const SceneDescription& scene,
                       scene.quality.max_rmse, renderer, true, QualitySearch{}, on_note);
 }
 
+std::string shadow_choice_text(const std::optional<ShadowChoice>& s) {
+  if (!s) return "";
+  if (s->method != ShadowMethod::shadow_map) return ", shadows " + std::string(name_of(s->method));
+  return ", shadows map " + std::to_string(s->map_size) + "x" + std::to_string(s->map_slices);
+}
+
 std::string quality_pick_note(const QualityPick& pick, const SceneDescription& scene) {
-  char line[512];
+  char line[640];
   std::snprintf(line, sizeof line,
-                "quality: max RMSE %g -> layer scale %g, footprint %d, %d step(s) per frame; "
+                "quality: max RMSE %g -> layer scale %g, footprint %d, %d step(s) per frame%s; "
                 "expected RMSE %.4f against the %s (%s)%s",
                 pick.max_rmse, pick.settings.layer_scale, pick.settings.footprint_size,
-                pick.settings.substeps, pick.expected_rmse,
+                pick.settings.substeps, shadow_choice_text(pick.settings.shadows).c_str(), pick.expected_rmse,
                 gaussian_particles(scene) ? "CPU reference" : "converged GL render",
                 pick.from_cache ? "cached" : "measured now",
                 pick.met ? "" : "; no candidate met the target, the most accurate was picked");

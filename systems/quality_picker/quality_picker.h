@@ -69,4 +69,8 @@ std::optional<QualityPick> pick_scene_quality(const SceneDescription& scene,
 // One line describing the pick, for the user: the target, the settings, the expected error.
 std::string quality_pick_note(const QualityPick& pick, const SceneDescription& scene);
 
+// ", shadows map 64x32" (or ", shadows rays", ", shadows none") for a pick that chooses the
+// shadows of lit media, else "".
+std::string shadow_choice_text(const std::optional<ShadowChoice>& shadows);
+
 }  // namespace pyro

@@ -51,10 +51,11 @@ void run_quality(const QualityArgs& a) {
   summary["width"] = width;
   summary["height"] = height;
   summary["renderer"] = renderer;
-  std::printf("%s at %dx%d, max RMSE %g: layer scale %g, footprint %d, %d step(s) per frame; "
+  std::printf("%s at %dx%d, max RMSE %g: layer scale %g, footprint %d, %d step(s) per frame%s; "
               "expected RMSE %.4f (%s)%s\n",
               scene.file.c_str(), width, height, target, pick.settings.layer_scale,
-              pick.settings.footprint_size, pick.settings.substeps, pick.expected_rmse,
+              pick.settings.footprint_size, pick.settings.substeps,
+              shadow_choice_text(pick.settings.shadows).c_str(), pick.expected_rmse,
               pick.from_cache ? "cached" : "measured now",
               pick.met ? "" : "; NO candidate met the target: the most accurate one was picked");
 

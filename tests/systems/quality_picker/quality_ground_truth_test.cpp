@@ -3,6 +3,7 @@
 // surface: the surface; no surface: the plain reference), and the candidate list.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -16,6 +17,7 @@
 #include "systems/quality_picker/quality_picker.h"
 #include "systems/reference/particle_reference.h"
 #include "systems/reference/pixel_ray.h"
+#include "tests/support/test_paths.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "systems/reference/world_snapshot.h"
 
@@ -151,6 +153,58 @@ TEST(QualityCandidates, SearchTheKnobsEachSceneHas) {
   const QualitySettings d = full_resolution_defaults(explosion);
   EXPECT_EQ(d.layer_scale, 1.0f);
   EXPECT_EQ(d.substeps, 1);
+}
+
+TEST(QualityCandidates, LitScenesAlsoChooseTheirShadows) {
+  SceneDescription lit;
+  lit.render.particles = ParticleShape::gaussian;
+  lit.shadows = ShadowSettings{};
+  lit.shadows->map_size = 96;  // the scene's own setting is a candidate too
+  const auto c = quality_candidates(lit);
+  EXPECT_EQ(c.size(), 4u * 3u * 5u);  // layer scales x footprints x (none, map 32, map 64, rays, own)
+  int rays = 0, none = 0, own = 0;
+  for (const QualitySettings& q : c) {
+    ASSERT_TRUE(q.shadows.has_value());
+    rays += q.shadows->method == ShadowMethod::rays;
+    none += q.shadows->method == ShadowMethod::none;
+    own += q.shadows->map_size == 96;
+  }
+  EXPECT_EQ(rays, 12);
+  EXPECT_EQ(none, 12);
+  EXPECT_EQ(own, 12);
+  const QualitySettings d = full_resolution_defaults(lit);
+  ASSERT_TRUE(d.shadows.has_value());
+  EXPECT_EQ(d.shadows->map_size, 96);
+  EXPECT_NE(std::find(c.begin(), c.end(), d), c.end());
+  // Applied, the choice replaces the scene's method and map, and survives the cache's JSON.
+  QualitySettings q = c.back();
+  q.shadows = ShadowChoice{ShadowMethod::rays, 32, 16};
+  const SceneDescription t = apply_quality_settings(lit, q);
+  EXPECT_EQ(t.shadows->method, ShadowMethod::rays);
+  EXPECT_EQ(t.shadows->map_slices, 16);
+  EXPECT_EQ(quality_settings_from_json(to_json(q)), q);
+  // An unlit scene keeps none.
+  EXPECT_FALSE(apply_quality_settings(SceneDescription{}, q).shadows.has_value());
+}
+
+// clouds.json lit: the pick measures every shadow method against the reference with exact
+// shadows, picks one that meets the target, and says which; lit without shadows never does.
+TEST(QualityPick, ALitSceneGetsAShadowMethodThatMeetsTheTarget) {
+  SceneDescription scene = load_scene(test::scene_path("clouds.json"));
+  scene.shadows = ShadowSettings{};
+  QualitySearch search;
+  search.frames = {0};
+  search.timed_frames = 1;
+  const QualityPick pick = pick_quality(scene, 80, 60, 0.03, "test", false, search, nullptr);
+  ASSERT_TRUE(pick.met);
+  ASSERT_TRUE(pick.settings.shadows.has_value());
+  EXPECT_NE(pick.settings.shadows->method, ShadowMethod::none);
+  EXPECT_LE(pick.expected_rmse, 0.85 * 0.03);
+  for (const nlohmann::json& c : pick.candidates)
+    if (c["settings"]["shadows"]["method"] == "none") {
+      EXPECT_FALSE(c["qualifies"].get<bool>()) << c.dump();
+    }
+  EXPECT_NE(quality_pick_note(pick, scene).find(", shadows "), std::string::npos) << quality_pick_note(pick, scene);
 }
 
 TEST(QualitySettings, ApplyingSubstepsMultipliesTheFrameRate) {
