@@ -16,7 +16,11 @@
 #include "engine/io/vdb_reader.h"
 #include "engine/io/vdb_resampled_volume.h"
 #include "engine/volume/procedural_cloud.h"
+#include "systems/benchmarks/relit_particles.h"
 #include "systems/cloud_import/cloud_import.h"
+#include "systems/cloud_import/grid_framing.h"
+#include "systems/reference/path_traced_volume.h"
+#include "systems/reference/world_snapshot.h"
 
 namespace pyro {
 
@@ -108,12 +112,36 @@ void discard_damaged_kept_file(const ImportScaleOptions& o, const std::string& f
   }
 }
 
+// The particles drawn by the GL splats against the path-traced single-scattering truth of the
+// sparse grid, both seen from the grid's framing camera through the import's medium.
+nlohmann::json measure_import(const SparseGrid& grid, const std::vector<GaussianParticle>& particles,
+                              const VolumeMedium& medium, const ImportScaleOptions& o) {
+  if (o.error_size <= 0 || o.error_samples <= 0) return {{"measured", false}};
+  const CameraDescription camera = framing_camera(grid);
+  SceneRuntime splats = relit_particles_runtime(particles, medium, {camera, o.error_size, o.error_size, true},
+                                                std::nullopt);
+  splats.draw_frame(0);
+  PathTraceOptions trace;
+  trace.samples_per_pixel = o.error_samples;
+  trace.max_scattering = 1;
+  trace.threads = o.threads;
+  const PathTracedImage truth =
+      path_trace_volume(grid, camera_frame(camera, o.error_size, o.error_size), medium, trace);
+  return {{"measured", true},
+          {"rmse_vs_reference", image_rmse(rgb_of(splats.image()), truth.image)},
+          {"reference_monte_carlo_error", truth.monte_carlo_error},
+          {"reference_seconds", truth.seconds},
+          {"error_size", o.error_size},
+          {"error_samples", o.error_samples},
+          {"reference", "single scattering path traced through the sparse bricks, exact shadows by ratio tracking"}};
+}
+
 }  // namespace
 
 nlohmann::json bench_import_scale(const ImportScaleOptions& o) {
   if (o.voxels == 0) throw UserError("", "--voxels", "a positive number of active voxels");
   check_kept_file(o);
-  ProgressTask task(o.progress, "bench import-scale", 3);
+  ProgressTask task(o.progress, "bench import-scale", 4);
   const bool temporary = o.keep.empty();
   const fs::path folder = temporary ? fs::temp_directory_path() / ("pyro_import_scale_" + std::to_string(::getpid())) : fs::path();
   const std::string file = temporary ? (folder / "import_scale.vdb").string() : o.keep;
@@ -151,9 +179,11 @@ nlohmann::json bench_import_scale(const ImportScaleOptions& o) {
   opt.threads = o.threads;
   CloudImportReport rep;
   t0 = Clock::now();
-  const size_t particles = import_cloud(grid, opt, &rep).size();
+  const std::vector<GaussianParticle> particles = import_cloud(grid, opt, &rep);
   const double import_seconds = seconds_since(t0);
-  task.update(3);
+  task.stage(3, "measure the import's error");
+  out.update(measure_import(grid, particles, opt.medium, o));
+  task.update(4);
 
   const uint64_t parent = peak_rss_bytes(RUSAGE_SELF), child = read_stats.child_peak_rss_bytes;
   const int threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
@@ -161,7 +191,7 @@ nlohmann::json bench_import_scale(const ImportScaleOptions& o) {
               {"bricks", grid.bricks()}, {"read_seconds", read_seconds}, {"import_seconds", import_seconds},
               {"light_seconds", rep.light_seconds}, {"fit_seconds", rep.fit_seconds},
               {"voxels_per_second", double(grid.active_voxels) / std::max(1e-9, read_seconds + import_seconds)},
-              {"particles", particles}, {"error_target", o.error}, {"threads", threads},
+              {"particles", particles.size()}, {"error_target", o.error}, {"threads", threads},
               {"parent_peak_rss_bytes", parent}, {"child_peak_rss_bytes", child},
               {"peak_rss_bytes", std::max(parent, child)},
               {"children_peak_rss_bytes", peak_rss_bytes(RUSAGE_CHILDREN)}});

@@ -24,6 +24,11 @@ struct ImportScaleOptions {
   // present, else the project's procedural cloud.
   std::string source;
   double error = 0.03;  // the import's error target (tau_tolerance_for_error), as import-vdb's default
+  // The import's error, measured: the particles drawn by the GL splats from the grid's framing
+  // camera at this size, against the single-scattering path-traced truth of the sparse grid
+  // (systems/reference/path_traced_volume.h) with this many paths per pixel. 0: not measured.
+  int error_size = 256;
+  int error_samples = 256;
   int threads = 0;      // the import's threads (0: one per core)
   int progress_fd = -1;  // where the child writing the file says how far it is (-1: nowhere)
   ProgressSink* progress = nullptr;
@@ -34,7 +39,10 @@ struct ImportScaleOptions {
 // active_voxels, box_voxels, bricks, read_seconds, import_seconds, light_seconds, fit_seconds,
 // voxels_per_second (active / (read + import)), particles, threads, parent_peak_rss_bytes
 // (getrusage RUSAGE_SELF), child_peak_rss_bytes (the reading child, wait4), peak_rss_bytes
-// (the larger), children_peak_rss_bytes (getrusage RUSAGE_CHILDREN: every child, the writer too).
+// (the larger), children_peak_rss_bytes (getrusage RUSAGE_CHILDREN: every child, the writer too);
+// measured, and when it is: rmse_vs_reference, reference_monte_carlo_error (the truth's own
+// noise, inside that RMSE), reference_seconds, error_size, error_samples, reference (what the
+// truth is). The peak memory figures include the measurement.
 nlohmann::json bench_import_scale(const ImportScaleOptions& options);
 
 }  // namespace pyro

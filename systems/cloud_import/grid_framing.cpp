@@ -10,10 +10,10 @@
 
 namespace pyro {
 
-CameraDescription framing_camera(const DenseGrid& grid) {
+CameraDescription framing_camera(const GridHeader& grid) {
   CameraDescription c;
   c.fov_y_deg = 45.0f;
-  if (grid.empty()) return c;
+  if (grid.box_voxels() == 0) return c;
   glm::dvec3 lo, hi;
   grid_world_bounds(grid, lo, hi);
   const glm::dvec3 centre = 0.5 * (lo + hi);

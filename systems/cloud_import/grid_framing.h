@@ -14,7 +14,8 @@ namespace pyro {
 
 // Looks at the centre of the grid's world bounds from the +z side, a little above and to the
 // right, far enough that the bounding sphere fits the vertical field of view (45 degrees).
-CameraDescription framing_camera(const DenseGrid& grid);
+// Takes the header alone: dense and sparse grids are framed alike.
+CameraDescription framing_camera(const GridHeader& grid);
 // The framing camera, then six more at its distance looking at the centre from +x, -x, +y, -y,
 // +z and -z: views from every side.
 std::vector<CameraDescription> views_around(const DenseGrid& grid);

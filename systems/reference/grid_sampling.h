@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "engine/io/vdb_reader.h"
+#include "engine/volume/sparse_grid.h"
 
 namespace pyro {
 
@@ -18,6 +19,21 @@ inline float sample_trilinear(const float* f, const int n[3], double x, double y
     if (i < 0 || j < 0 || k < 0 || i >= n[0] || j >= n[1] || k >= n[2]) return 0.0f;
     return f[(size_t(k) * n[1] + j) * n[0] + i];
   };
+  const float c00 = v(x0, y0, z0) + tx * (v(x0 + 1, y0, z0) - v(x0, y0, z0));
+  const float c10 = v(x0, y0 + 1, z0) + tx * (v(x0 + 1, y0 + 1, z0) - v(x0, y0 + 1, z0));
+  const float c01 = v(x0, y0, z0 + 1) + tx * (v(x0 + 1, y0, z0 + 1) - v(x0, y0, z0 + 1));
+  const float c11 = v(x0, y0 + 1, z0 + 1) + tx * (v(x0 + 1, y0 + 1, z0 + 1) - v(x0, y0 + 1, z0 + 1));
+  const float c0 = c00 + ty * (c10 - c00), c1 = c01 + ty * (c11 - c01);
+  return c0 + tz * (c1 - c0);
+}
+
+// sample_trilinear over a sparse grid's bricks (absent bricks and everything outside hold 0).
+inline float sample_trilinear_sparse(const SparseGrid& g, double x, double y, double z) {
+  if (!(x > -1.0 && y > -1.0 && z > -1.0 && x < g.dims[0] && y < g.dims[1] && z < g.dims[2])) return 0.0f;
+  const double fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
+  const int x0 = int(fx), y0 = int(fy), z0 = int(fz);
+  const float tx = float(x - fx), ty = float(y - fy), tz = float(z - fz);
+  const auto v = [&](int i, int j, int k) { return g.at(i, j, k); };
   const float c00 = v(x0, y0, z0) + tx * (v(x0 + 1, y0, z0) - v(x0, y0, z0));
   const float c10 = v(x0, y0 + 1, z0) + tx * (v(x0 + 1, y0 + 1, z0) - v(x0, y0 + 1, z0));
   const float c01 = v(x0, y0, z0 + 1) + tx * (v(x0 + 1, y0, z0 + 1) - v(x0, y0, z0 + 1));

@@ -25,16 +25,28 @@ struct Random {
   double uniform() { return double(splitmix64(state) >> 11) * 0x1.0p-53; }
 };
 
+// The trilinear density at a local index position, from the dense array or the sparse bricks.
+struct DenseDensity {
+  const DenseGrid& g;
+  float operator()(const glm::dvec3& p) const {
+    const int n[3] = {g.dims[0], g.dims[1], g.dims[2]};
+    return sample_trilinear(g.values.data(), n, p.x, p.y, p.z);
+  }
+};
+struct SparseDensity {
+  const SparseGrid& g;
+  float operator()(const glm::dvec3& p) const { return sample_trilinear_sparse(g, p.x, p.y, p.z); }
+};
+
 // The density field in the grid's local index space, with the world-to-index map: a world ray
 // (o, w) is the index-space line o + t M w, t in world units.
+template <class Density>
 struct GridField {
-  const float* f;
-  int n[3];
+  Density density;
   double lo[3], hi[3];
   glm::dmat3 to_index;
   double max_density;
 
-  float density(const glm::dvec3& p) const { return sample_trilinear(f, n, p.x, p.y, p.z); }
   // World distance from p to where the line leaves the sampled box (0 when outside it).
   double exit_distance(const glm::dvec3& p, const glm::dvec3& v) const {
     const double o[3] = {p.x, p.y, p.z}, d[3] = {v.x, v.y, v.z};
@@ -45,7 +57,8 @@ struct GridField {
 
 // Delta tracking: world distance to the next real collision from p along v = M w, or −1 when the
 // path leaves the grid first. sigma_bar: the majorant extinction per world unit.
-double free_path(const GridField& g, const glm::dvec3& p, const glm::dvec3& v, double sigma_bar,
+template <class Density>
+double free_path(const GridField<Density>& g, const glm::dvec3& p, const glm::dvec3& v, double sigma_bar,
                  Random& rng) {
   const double end = g.exit_distance(p, v);
   for (double t = 0.0;;) {
@@ -56,7 +69,8 @@ double free_path(const GridField& g, const glm::dvec3& p, const glm::dvec3& v, d
 }
 
 // Ratio tracking: an unbiased estimate of the transmittance from p to the grid's edge along v.
-double transmittance(const GridField& g, const glm::dvec3& p, const glm::dvec3& v, double sigma_bar,
+template <class Density>
+double transmittance(const GridField<Density>& g, const glm::dvec3& p, const glm::dvec3& v, double sigma_bar,
                      Random& rng) {
   const double end = g.exit_distance(p, v);
   double T = 1.0;
@@ -80,8 +94,9 @@ glm::dvec3 scatter_direction(const glm::dvec3& w, double g, Random& rng) {
   return glm::normalize(mu * w + s * (std::cos(phi) * t1 + std::sin(phi) * t2));
 }
 
+template <class Density>
 struct PathTracer {
-  GridField field;
+  GridField<Density> field;
   const VolumeMedium& medium;
   const PathTraceOptions& options;
   glm::dvec3 eye;            // in index space
@@ -121,6 +136,10 @@ struct PathTracer {
       const double mu = glm::dot(to_light, w);  // = the sun's travel against the way out, -w
       out.radiance += weight * sun_radiance * henyey_greenstein(mu, options.anisotropy) *
                       transmittance(field, p, light_v, sigma_bar, rng);
+      if (options.max_scattering == 1) {  // single scattering: the ray march's unshadowed ambient
+        out.radiance += weight * medium.albedo * medium.ambient;
+        return out;
+      }
       if (out.scattering >= options.max_scattering) {
         out.truncated = options.max_scattering > 1;
         return out;
@@ -136,26 +155,17 @@ struct PathTracer {
   }
 };
 
-}  // namespace
-
-PathTracedImage path_trace_volume(const DenseGrid& grid, const CameraFrame& camera,
-                                  const VolumeMedium& medium, const PathTraceOptions& options) {
+template <class Density>
+PathTracedImage trace_image(const GridHeader& grid, Density density, double max_density, const CameraFrame& camera,
+                            const VolumeMedium& medium, const PathTraceOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const glm::dmat4 to_local = world_to_local_index(grid);
-  PathTracer tracer{{grid.values.data(),
-                     {grid.dims[0], grid.dims[1], grid.dims[2]},
-                     {-1.0, -1.0, -1.0},
-                     {double(grid.dims[0]), double(grid.dims[1]), double(grid.dims[2])},
-                     glm::dmat3(to_local),
-                     0.0},
-                    medium, options,
-                    glm::dvec3(to_local * glm::dvec4(glm::dvec3(camera.eye), 1.0)),
-                    -glm::normalize(medium.light_direction),
-                    medium.albedo * 4.0 * std::numbers::pi * medium.light_color,
-                    0.0};
-  for (float v : grid.values) tracer.field.max_density = std::max(tracer.field.max_density, double(v));
-  tracer.sigma_bar = medium.extinction * tracer.field.max_density;
-
+  const PathTracer<Density> tracer{
+      {density, {-1.0, -1.0, -1.0},
+       {double(grid.dims[0]), double(grid.dims[1]), double(grid.dims[2])}, glm::dmat3(to_local), max_density},
+      medium, options, glm::dvec3(to_local * glm::dvec4(glm::dvec3(camera.eye), 1.0)),
+      -glm::normalize(medium.light_direction), medium.albedo * 4.0 * std::numbers::pi * medium.light_color,
+      medium.extinction * max_density};
   PathTracedImage out;
   RgbImage& img = out.image;
   img.width = camera.width;
@@ -170,7 +180,7 @@ PathTracedImage path_trace_volume(const DenseGrid& grid, const CameraFrame& came
       glm::dvec3 sum(0.0), sum2(0.0);
       for (int s = 0; s < spp; ++s) {
         const double jx = rng.uniform(), jy = rng.uniform();
-        const PathTracer::Path path = tracer.trace(pixel_ray_direction(camera, x + jx, y + jy), rng);
+        const typename PathTracer<Density>::Path path = tracer.trace(pixel_ray_direction(camera, x + jx, y + jy), rng);
         sum += path.radiance;
         sum2 += path.radiance * path.radiance;
         events[y] += uint64_t(path.scattering);
@@ -196,6 +206,24 @@ PathTracedImage path_trace_volume(const DenseGrid& grid, const CameraFrame& came
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+double largest(const std::vector<float>& values) {
+  double m = 0.0;
+  for (float v : values) m = std::max(m, double(v));
+  return m;
+}
+
+}  // namespace
+
+PathTracedImage path_trace_volume(const DenseGrid& grid, const CameraFrame& camera, const VolumeMedium& medium,
+                                  const PathTraceOptions& options) {
+  return trace_image(grid, DenseDensity{grid}, largest(grid.values), camera, medium, options);
+}
+
+PathTracedImage path_trace_volume(const SparseGrid& grid, const CameraFrame& camera, const VolumeMedium& medium,
+                                  const PathTraceOptions& options) {
+  return trace_image(grid, SparseDensity{grid}, largest(grid.values), camera, medium, options);
 }
 
 }  // namespace pyro

@@ -5,7 +5,9 @@
 // matches systems/reference/volume_reference.h), and a Henyey–Greenstein phase of `anisotropy`.
 // A path that leaves the grid after scattering sees a uniform sky of radiance `ambient` (the
 // physical counterpart of the ray march's unshadowed ambient term); a camera ray that leaves
-// without scattering sees `background`.
+// without scattering sees `background`. With max_scattering 1 (single scattering) the collision
+// adds albedo x ambient unshadowed instead, as the ray march does: the two estimate the same
+// image, the ray march's single-scattering model exactly.
 //   - Free paths: delta tracking against the grid's largest density (Woodcock et al. 1965), which
 //     samples the true collision density of the trilinear field without bias.
 //   - At each collision: next-event estimation of the sun, its transmittance by ratio tracking
@@ -21,6 +23,7 @@
 #include "components/volume_medium.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/math/camera_math.h"
+#include "engine/volume/sparse_grid.h"
 #include "systems/reference/rgb_image.h"
 
 namespace pyro {
@@ -44,6 +47,10 @@ struct PathTracedImage {
 };
 
 PathTracedImage path_trace_volume(const DenseGrid& grid, const CameraFrame& camera,
+                                  const VolumeMedium& medium, const PathTraceOptions& options);
+// The same over a sparse grid's bricks (engine/volume/sparse_grid.h): production-size grids,
+// whose dense box would not fit in memory. Its cost follows the optical depth, not the voxels.
+PathTracedImage path_trace_volume(const SparseGrid& grid, const CameraFrame& camera,
                                   const VolumeMedium& medium, const PathTraceOptions& options);
 
 }  // namespace pyro

@@ -1,4 +1,5 @@
-// pyro bench import-scale [--voxels N] [--keep FILE] [--source FILE] [--error E] [--threads T] [--json]
+// pyro bench import-scale [--voxels N] [--keep FILE] [--source FILE] [--error E] [--error-size N]
+//                         [--error-samples N] [--threads T] [--json]
 // The VDB import at production sizes (systems/benchmarks/import_scale.h): a synthetic file of at
 // least N active voxels read sparse and imported, voxels per second and peak resident memory.
 #include <unistd.h>
@@ -31,6 +32,12 @@ void print_import_scale(const nlohmann::json& j) {
               j["read_seconds"].get<double>(), j["import_seconds"].get<double>(), j["light_seconds"].get<double>(),
               j["fit_seconds"].get<double>(), j["voxels_per_second"].get<double>() / 1e6,
               j["particles"].get<unsigned long long>());
+  if (j["measured"].get<bool>())
+    std::printf("import error: RMSE %.4f against the path-traced truth of the sparse grid (%dx%d, %d paths per "
+                "pixel, its own Monte Carlo error %.4f, %.1f s)\n",
+                j["rmse_vs_reference"].get<double>(), j["error_size"].get<int>(), j["error_size"].get<int>(),
+                j["error_samples"].get<int>(), j["reference_monte_carlo_error"].get<double>(),
+                j["reference_seconds"].get<double>());
   std::printf("peak resident memory: engine %.2f GiB, reading child %.2f GiB\n",
               j["parent_peak_rss_bytes"].get<double>() / gib, j["child_peak_rss_bytes"].get<double>() / gib);
 }
@@ -53,6 +60,11 @@ void add_bench_import_scale_command(CLI::App& bench) {
   cmd->add_option("--source", o.source, "The small .vdb to resample (default: the Disney cloud beside the "
                                         "checkout, else the procedural cloud)");
   cmd->add_option("--error", o.error, "The import's error target (default 0.03)")->check(CLI::Range(1e-6, 1.0));
+  cmd->add_option("--error-size", o.error_size,
+                  "Width and height of the views where the import's error is measured (0: not measured; default 256)")
+      ->check(CLI::Range(0, 4096));
+  cmd->add_option("--error-samples", o.error_samples, "Paths per pixel of the truth (default 256)")
+      ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--threads", o.threads, "Import threads (0: one per core)")->check(CLI::Range(0, 256));
   cmd->add_flag("--json", args->json, "Print one JSON object");
   cmd->callback([args] {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engine/volume/sparse_grid.h"
 #include "systems/reference/path_traced_volume.h"
 #include "systems/reference/volume_reference.h"
 
@@ -60,7 +61,7 @@ double single_scattering_gap(double g, double& mc_error) {
   m.extinction = 3.0;
   m.albedo = 0.8;
   m.light_direction = {-0.3, -0.4, 1.0};  // towards the camera: the forward lobe shows
-  m.ambient = glm::dvec3(0.0);
+  m.ambient = {0.1, 0.12, 0.15};  // single scattering adds it unshadowed, as the ray march does
   const DenseGrid grid = soft_ball();
   PathTraceOptions o;
   o.samples_per_pixel = 1024;
@@ -109,6 +110,18 @@ TEST(PathTracedVolume, MultipleScatteringBrightensAndConverges) {
   const PathTracedImage more = path_trace_volume(soft_ball(), small_camera(), m, o);
   EXPECT_NEAR(more.monte_carlo_error / multiple.monte_carlo_error, 0.5, 0.075);
   EXPECT_LT(image_rmse(more.image, multiple.image), 3.0 * multiple.monte_carlo_error);
+}
+
+TEST(PathTracedVolume, SparseBricksTraceTheSameImage) {
+  VolumeMedium m;
+  m.extinction = 6.0;
+  PathTraceOptions o;
+  o.samples_per_pixel = 4;
+  const DenseGrid dense = soft_ball();
+  const PathTracedImage a = path_trace_volume(dense, small_camera(), m, o);
+  const PathTracedImage b = path_trace_volume(sparse_from_dense(dense), small_camera(), m, o);
+  EXPECT_EQ(a.image.rgb, b.image.rgb);
+  EXPECT_EQ(a.scattering_events, b.scattering_events);
 }
 
 }  // namespace

@@ -38,6 +38,12 @@ TEST(PyroCliBenchImportScale, ReportsVoxelsPerSecondAndPeakMemory) {
             std::max(r["parent_peak_rss_bytes"].get<uint64_t>(), r["child_peak_rss_bytes"].get<uint64_t>()));
   EXPECT_GE(r["bricks"].get<uint64_t>() * 512, r["active_voxels"].get<uint64_t>());
   EXPECT_EQ(r["file_bytes"].get<uint64_t>(), fs::file_size(keep));
+  // The import's error against the path-traced truth of the sparse grid: within the import's
+  // target beside the truth's own noise.
+  ASSERT_TRUE(r["measured"].get<bool>());
+  EXPECT_LT(r["reference_monte_carlo_error"].get<double>(), 0.03);
+  EXPECT_LE(r["rmse_vs_reference"].get<double>(), 0.03 + r["reference_monte_carlo_error"].get<double>());
+  EXPECT_GT(r["rmse_vs_reference"].get<double>(), 0.0);
 
   // Kept, then reused: the same grid, the same particles.
   const auto again = test::run_pyro({"bench", "import-scale", "--keep", keep, "--json"});
