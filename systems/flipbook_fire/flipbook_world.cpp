@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "systems/flipbook_fire/flipbook_emission.h"
 #include "systems/flipbook_fire/flipbook_layout.h"
 #include "systems/flipbook_fire/flipbook_renderer.h"
 
@@ -45,7 +46,9 @@ void add_flipbook_fires(ecs::World& world, const std::vector<FlipbookFire>& fire
     fire.texture = textures.at(index);
     fire.frame_count = static_cast<int>(assets.frames[index].rgba.size());
     fire.billboards = expand_flipbook_groups(fire);
-    world.emplace<FlipbookFire>(world.create(), std::move(fire));
+    const ecs::Entity e = world.create();
+    world.emplace<FlipbookEmission>(e, flipbook_emission(assets.frames[index], fire.blend));
+    world.emplace<FlipbookFire>(e, std::move(fire));
   }
 }
 

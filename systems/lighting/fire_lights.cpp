@@ -7,6 +7,9 @@
 #include <tbb/parallel_for.h>
 
 #include "components/fire_lights.h"
+#include "components/flipbook_emission.h"
+#include "components/flipbook_fire.h"
+#include "components/frame_clock.h"
 #include "components/particle_light.h"
 #include "components/particle_medium.h"
 #include "components/particle_set.h"
@@ -14,6 +17,7 @@
 #include "components/shadow_settings.h"
 #include "engine/math/shadow_ray_index.h"
 #include "engine/math/sphere_line_integral.h"
+#include "systems/lighting/flipbook_fire_lights.h"
 #include "systems/shadowing/shadowing_systems.h"
 
 namespace pyro {
@@ -38,13 +42,21 @@ const BlackbodyTable& emission_table(ecs::World& world, const ExplosionShading& 
   return cache.table;
 }
 
-void run_fire_lights(ecs::World& world) {
-  FireLights& out = world.resource<FireLights>();
-  out.lights.clear();
-  out.emitters.clear();
-  const ShadowSettings* settings = world.try_resource<const ShadowSettings>();
-  const RenderSettings* render = world.try_resource<const RenderSettings>();
-  if (!settings || settings->fire_lights <= 0 || !render || !render->media_layers()) return;
+// The flipbook fires' billboards as emitters, in entity order.
+void add_flipbook_emitters(ecs::World& world, std::vector<PointEmitter>& emitters) {
+  const FrameClock* clock = world.try_resource<const FrameClock>();
+  const double seconds = clock ? clock->time() : 0.0;
+  std::vector<std::pair<uint32_t, std::vector<PointEmitter>>> fires;
+  world.each<const FlipbookFire, const FlipbookEmission>(
+      [&](ecs::Entity e, const FlipbookFire& fire, const FlipbookEmission& emission) {
+        fires.push_back({e.index, flipbook_fire_emitters(fire, emission, seconds)});
+      });
+  std::sort(fires.begin(), fires.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& fire : fires) emitters.insert(emitters.end(), fire.second.begin(), fire.second.end());
+}
+
+// The explosion's fire particles as emitters.
+void add_explosion_emitters(ecs::World& world, std::vector<PointEmitter>& emitters) {
   const ExplosionShading* current = world.try_resource<const ExplosionShading>();
   const ExplosionShading shading = current ? *current : ExplosionShading{};
   const BlackbodyTable& table = emission_table(world, shading);
@@ -53,7 +65,19 @@ void run_fire_lights(ecs::World& world) {
   std::sort(sets.begin(), sets.end());  // entity-index order: the same lights whatever the storage
   std::vector<const ParticlePool*> pools;
   for (const auto& set : sets) pools.push_back(set.second);
-  out.emitters = fire_emitters(pools, shading, table, shadow_casters(world));
+  const std::vector<PointEmitter> fire = fire_emitters(pools, shading, table, shadow_casters(world));
+  emitters.insert(emitters.end(), fire.begin(), fire.end());
+}
+
+void run_fire_lights(ecs::World& world) {
+  FireLights& out = world.resource<FireLights>();
+  out.lights.clear();
+  out.emitters.clear();
+  const ShadowSettings* settings = world.try_resource<const ShadowSettings>();
+  const RenderSettings* render = world.try_resource<const RenderSettings>();
+  if (!settings || settings->fire_lights <= 0 || !render) return;
+  if (render->media_layers()) add_explosion_emitters(world, out.emitters);
+  add_flipbook_emitters(world, out.emitters);
   out.lights = cluster_point_lights(out.emitters, std::min(settings->fire_lights, kMaxFireLights));
 }
 
@@ -93,7 +117,8 @@ std::vector<PointEmitter> fire_emitters(const std::vector<const ParticlePool*>& 
 ecs::SystemDesc fire_light_system() {
   return {.name = "fire_lights",
           .phase = ecs::Phase::light,
-          .access = ecs::Access::of<ecs::Reads<ShadowSettings, RenderSettings, ExplosionShading, ParticleSet, ParticleLight>,
+          .access = ecs::Access::of<ecs::Reads<ShadowSettings, RenderSettings, ExplosionShading, ParticleSet,
+                                               ParticleLight, FlipbookFire, FlipbookEmission, FrameClock>,
                                     ecs::Writes<FireLights, FireEmissionCache>>(),
           .run = run_fire_lights,
           .setup =
