@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/volume/sparse_grid.h"
+#include "systems/benchmarks/sparse_import_error.h"
 
 #include "systems/benchmarks/vdb_import_evaluation.h"
 
@@ -49,19 +50,26 @@ FittedImport import_to_target(const DenseGrid& grid, double error, const VdbImpo
 nlohmann::json fitted_import_summary(const FittedImport& fit, const VdbImportReference& reference, double error);
 
 // A grid whose box is too large to be made dense (engine/io/vdb_reader.h, kMaxDenseGridVoxels)
-// cannot be fitted or measured against the dense reference: it is imported sparse by the octree
-// alone, at the error target's tolerance, as isotropic particles.
-struct UnmeasuredImport {
+// cannot be fitted against the dense reference: it is imported sparse by the octree alone, at the
+// error target's tolerance, as isotropic particles, and measured from the seven views around it
+// against single scattering path traced through its bricks (sparse_import_error.h), `samples`
+// paths per pixel at size x size. The target is met when every view's error, the truth's noise
+// taken out, is within it.
+struct SparseImport {
   std::vector<GaussianParticle> particles;
   CloudImportReport report;
   VolumeMedium medium;
   double tau_tolerance = 0.0;
   double import_seconds = 0.0;
-  std::string reason;  // why the error is not measured
+  std::vector<SparseViewError> views;  // views_around's order
+  double measure_seconds = 0.0;
+  bool target_met = false;
+  std::string reason;  // why the import is not fitted, and why the target is missed
 };
-UnmeasuredImport import_unmeasured(const SparseGrid& grid, double error);
-// The same fields as fitted_import_summary where they apply; the errors and target_met are null,
-// measured false, reason said.
-nlohmann::json unmeasured_import_summary(const UnmeasuredImport& import, double error);
+SparseImport import_sparse(const SparseGrid& grid, double error, int size, int samples);
+// The same fields as fitted_import_summary (rmse: the first view's; rmse_inside null), with
+// view_noise (the truth's noise in each view), rmse_views_max_without_noise, measure_seconds and
+// reference (what the truth is).
+nlohmann::json sparse_import_summary(const SparseImport& import, double error);
 
 }  // namespace pyro

@@ -41,7 +41,7 @@ struct ImportScaleOptions {
 // (getrusage RUSAGE_SELF), child_peak_rss_bytes (the reading child, wait4), peak_rss_bytes
 // (the larger), children_peak_rss_bytes (getrusage RUSAGE_CHILDREN: every child, the writer too);
 // measured, and when it is: rmse_vs_reference, reference_monte_carlo_error (the truth's own
-// noise, inside that RMSE), reference_seconds, error_size, error_samples, reference (what the
+// noise, inside that RMSE), rmse_without_noise (√(rmse² − noise²)), reference_seconds, error_size, error_samples, reference (what the
 // truth is). The peak memory figures include the measurement.
 nlohmann::json bench_import_scale(const ImportScaleOptions& options);
 

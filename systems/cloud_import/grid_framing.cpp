@@ -28,9 +28,9 @@ CameraDescription framing_camera(const GridHeader& grid) {
   return c;
 }
 
-std::vector<CameraDescription> views_around(const DenseGrid& grid) {
+std::vector<CameraDescription> views_around(const GridHeader& grid) {
   std::vector<CameraDescription> views = {framing_camera(grid)};
-  if (grid.empty()) return views;
+  if (grid.box_voxels() == 0) return views;
   const CameraDescription first = views[0];  // a copy: views grows below
   const glm::vec3 centre = first.target;
   const float distance = glm::length(first.position - centre);

@@ -18,7 +18,7 @@ namespace pyro {
 CameraDescription framing_camera(const GridHeader& grid);
 // The framing camera, then six more at its distance looking at the centre from +x, -x, +y, -y,
 // +z and -z: views from every side.
-std::vector<CameraDescription> views_around(const DenseGrid& grid);
+std::vector<CameraDescription> views_around(const GridHeader& grid);
 // A camera inside the volume, when its bounds are at least 8 voxels on every side: at the centre,
 // looking along +x with a 90-degree field of view.
 std::optional<CameraDescription> view_inside(const DenseGrid& grid);

@@ -1,5 +1,5 @@
 // pyro import-vdb FILE [--grid NAME | --grid-index I] [--error E] --out FILE [--json]
-//                 [--width W] [--height H]
+//                 [--width W] [--height H] [--samples N]
 // Reads one float grid, imports it as anisotropic Gaussian particles fitted to the grid until the
 // image error from every side meets the target (systems/benchmarks/fitted_import.h: the splats
 // drawn by the real GL renderer, offscreen, against the CPU reference render of the grid from
@@ -37,6 +37,7 @@ struct ImportArgs {
   int grid_index = -1;
   double error = 0.03;
   int width = 256, height = 256;
+  int samples = 256;  // the path-traced truth's paths per pixel (grids too large for a dense box)
   bool json = false;
   bool list = false;
 };
@@ -138,12 +139,12 @@ void run_import(const ImportArgs& a) {
   if (sparse.empty()) say(a, "grid \"" + sparse.name + "\" has no active voxels; writing 0 particles");
   ParticleFile pf;
   if (sparse.box_voxels() > kMaxDenseGridVoxels) {
-    progress.stage(2, "import (too large to measure)");
-    UnmeasuredImport u = import_unmeasured(sparse, a.error);
+    progress.stage(2, "import, and measure against the path-traced truth");
+    SparseImport u = import_sparse(sparse, a.error, std::min(a.width, a.height), a.samples);
     say(a, u.reason);
     progress.finish();
     pf.particles = std::move(u.particles);
-    return finish_import(a, sparse, std::move(pf), unmeasured_import_summary(u, a.error), read_seconds);
+    return finish_import(a, sparse, std::move(pf), sparse_import_summary(u, a.error), read_seconds);
   }
   const DenseGrid grid = dense_from_sparse(sparse);
   // The image error of what the engine draws against the ground truth, from every side.
@@ -178,6 +179,9 @@ void add_import_command(CLI::App& app) {
   cmd->add_flag("--list", args->list, "List the file's grids (index, name, type, class, voxels) and exit");
   cmd->add_option("--width", args->width, "Width of the evaluation image (default 256)")->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Height of the evaluation image (default 256)")->check(CLI::Range(1, 8192));
+  cmd->add_option("--samples", args->samples,
+                  "Paths per pixel of the path-traced truth for grids too large for a dense box (default 256)")
+      ->check(CLI::Range(2, 1 << 20));
   cmd->add_flag("--json", args->json, "Print a JSON summary");
   cmd->callback([args] { run_import(*args); });
 }
