@@ -6,7 +6,8 @@
 // LIT 1: the colour is the albedo times the light reaching the fragment's point p = centre +
 // offset (where the pixel's ray passes closest to the centre):
 //   L = sun S(mu, tau_others(c) + grad . offset + tau_self(p)) + ambient,
-// S the sun's scattering towards the eye (one isotropic octave: exp(-tau); below),
+// S the sun's scattering towards the eye (one isotropic octave: exp(-tau); below), plus the
+// fire lights' light at the centre (billboard.vert),
 //   tau_self(p) = tau0 exp(-d_perp^2 / (2 s^2)) tail(d_par / s),
 // tau0 = -ln(1 - rho) the optical depth through the centre, d_par and d_perp the offset along and
 // across the direction toward the sun, tail the fraction of a line's depth beyond d_par / s
@@ -23,6 +24,7 @@ flat in vec4 v_others_depth;
 flat in vec3 v_self;  // tau0, 1 / s, 1 / (2 s^2)
 in vec3 v_offset;
 flat in float v_view_cosine;  // mu, per particle
+flat in vec3 v_fire;          // the fire lights' scattered light, per particle (billboard.vert)
 uniform vec3 u_toward_sun;  // unit
 uniform vec3 u_sun_color;
 uniform vec3 u_ambient;
@@ -64,7 +66,7 @@ void main() {
   float tail = 0.5 - 0.5 * p * t;
   float tau_self = tau0 * exp(-d_perp2 * v_self.z) * tail;
   float tau = u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, v_offset) + tau_self);
-  vec3 light = u_sun_color * sun_scattering(v_view_cosine, max(tau, 0.0)) + u_ambient;
+  vec3 light = u_sun_color * sun_scattering(v_view_cosine, max(tau, 0.0)) + u_ambient + v_fire;
   // The opacity of the Gaussian's column through this point, 1 - exp(-tau0 f), f the footprint
   // scaled to 1 at the centre: rho at the centre as in the unlit splats, and the exact opacity
   // elsewhere (the unlit splats' rho f follows Johnson & McAllister's eq. 5, thinner off-centre).

@@ -28,7 +28,15 @@ flat out vec4 v_others_depth;
 flat out vec3 v_self;     // tau0 = -ln(1 - rho), 1 / s (s = radius / 3), 1 / (2 s^2)
 out vec3 v_offset;        // the fragment's place on the billboard, from the centre (world units)
 flat out float v_view_cosine;  // mu: the sunlight's direction of travel . the way to the eye
+flat out vec3 v_fire;          // the fire lights' light scattered at the centre toward the eye
 uniform vec3 u_toward_sun;     // unit
+uniform vec4 u_scattering;     // Henyey-Greenstein g first (billboard.frag)
+// The fire's clustered point lights (components/fire_lights.h), world position and radius, and
+// intensity: each scatters I p_HG(mu, g) / max(d^2, r^2) toward the eye (the sun's convention,
+// whose light colour is its irradiance over 4 pi: systems/reference/lit_particle_reference.h).
+uniform int u_fire_light_count;
+uniform vec4 u_fire_lights[8];
+uniform vec3 u_fire_intensity[8];
 #endif
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
 uniform uvec2 u_order_stride_offset;
@@ -76,7 +84,18 @@ void main() {
   v_self = vec3(-log(max(1.0 - a_color_density.a, 1e-12)), 1.0 / s, 0.5 / (s * s));
   v_offset = world - center;
   vec3 to_eye = u_eye - center;
-  v_view_cosine = length(to_eye) > 0.0 ? -dot(u_toward_sun, normalize(to_eye)) : 1.0;
+  vec3 eye_way = length(to_eye) > 0.0 ? normalize(to_eye) : vec3(0.0);
+  v_view_cosine = length(to_eye) > 0.0 ? -dot(u_toward_sun, eye_way) : 1.0;
+  v_fire = vec3(0.0);
+  float g = u_scattering.x;
+  for (int j = 0; j < u_fire_light_count; ++j) {
+    vec3 travel = center - u_fire_lights[j].xyz;
+    float d2 = dot(travel, travel);
+    float mu = d2 > 0.0 ? dot(travel, eye_way) * inversesqrt(d2) : 0.0;
+    float h = 1.0 + g * g - 2.0 * g * mu;
+    float phase = (1.0 - g * g) / (12.566370614359172 * h * sqrt(h));
+    v_fire += u_fire_intensity[j] * phase / max(d2, u_fire_lights[j].w * u_fire_lights[j].w);
+  }
 #endif
   gl_Position = u_view_projection * vec4(world, 1.0);
 }

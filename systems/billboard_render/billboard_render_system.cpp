@@ -158,6 +158,7 @@ std::optional<SplatLighting> splat_lighting(ecs::World& world, const EyeDrawList
   s.ambient = lighting.ambient;
   s.self_shadow = shadows->method != ShadowMethod::none;
   s.scattering = shadows->scattering;
+  s.fire = world.try_resource<const FireLights>();
   return s;
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <stdexcept>
+#include <string>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -160,6 +161,16 @@ void BillboardRenderer::set_lighting_uniforms(const SplatLighting& lighting) con
   glUniform1i(gpu::uniform_location(program, "u_octaves"), o.octaves);
   glUniform4f(gpu::uniform_location(program, "u_scattering"), float(lighting.scattering.anisotropy),
               float(o.attenuation), float(o.contribution), float(o.eccentricity));
+  const int fires = lighting.fire ? std::min(int(lighting.fire->lights.size()), kMaxFireLights) : 0;
+  glUniform1i(gpu::uniform_location(program, "u_fire_light_count"), fires);
+  for (int j = 0; j < fires; ++j) {
+    const PointEmitter& l = lighting.fire->lights[size_t(j)];
+    const std::string at = "[" + std::to_string(j) + "]";
+    glUniform4f(gpu::uniform_location(program, ("u_fire_lights" + at).c_str()), float(l.position.x),
+                float(l.position.y), float(l.position.z), float(l.radius));
+    glUniform3f(gpu::uniform_location(program, ("u_fire_intensity" + at).c_str()), float(l.intensity.x),
+                float(l.intensity.y), float(l.intensity.z));
+  }
   std::array<float, kTailPolynomialTerms> tail;
   for (size_t k = 0; k < tail.size(); ++k) tail[k] = float(tail_polynomial_[k]);
   glUniform1fv(gpu::uniform_location(program, "u_tail_polynomial"), GLsizei(tail.size()), tail.data());

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "components/draw_list.h"
+#include "components/fire_lights.h"
 #include "systems/scene/scene_description.h"
 #include "engine/gpu/buffer_range.h"
 #include "engine/gpu/gl_objects.h"
@@ -30,6 +31,7 @@ struct SplatLighting {
   glm::vec3 sun_color{0.0f}, ambient{0.0f};
   bool self_shadow = true;  // false: lit without shadows
   SunScattering scattering;  // the phase lobe and octaves (engine/math/scattering_octaves.h)
+  const FireLights* fire = nullptr;  // the fire's clustered point lights (none: no fire light)
 };
 
 // CPU time of the particle pass since the last reset_cost(): packing the particles and copying

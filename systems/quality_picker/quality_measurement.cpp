@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "components/fire_lights.h"
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
 #include "components/particle_set.h"
@@ -43,7 +44,9 @@ SceneDescription opaque_part(const SceneDescription& scene, bool sunless) {
   opaque.clouds.clear();
   opaque.volumes.clear();
   opaque.emitters.clear();
-  opaque.shadows.reset();
+  // Lit, the flipbook fires still light the ground (unshadowed, as the engine's opaque pass);
+  // without fires the opaque scene is drawn unlit and its sun shadowed by the reference.
+  if (opaque.fires.empty()) opaque.shadows.reset();
   opaque.render.layer_scale = 1.0f;
   if (!sunless) return opaque;
   for (DirectionalLight& light : opaque.directional_lights) light.intensity = 0.0f;
@@ -84,6 +87,7 @@ std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, i
     sun.ambient = glm::dvec3(lighting.ambient);
     if (const auto* shadows = particles.world().try_resource<const ShadowSettings>())
       sun.scattering = shadows->scattering;
+    if (const auto* fire = particles.world().try_resource<const FireLights>()) sun.point_lights = fire->lights;
     const RgbImage shadowed =
         shadowed_opaque_reference(pool, camera, sun, behind, rgb_of(sunless->image()), stop);
     images.push_back(render_lit_particles_reference_over(pool, camera, sun, shadowed, stop));

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "engine/math/phase_function.h"
 #include "engine/math/shadow_ray_index.h"
 #include "systems/reference/parallel_rows.h"
 #include "systems/reference/particle_reference.h"
@@ -27,6 +28,18 @@ void require_camera_size(const CameraFrame& camera, const RgbImage& image, const
   const size_t pixels = static_cast<size_t>(camera.width) * camera.height;
   if (image.width != camera.width || image.height != camera.height || stop.size() != pixels)
     throw std::invalid_argument(std::string(what) + ": image sizes differ from the camera's");
+}
+
+// The point lights' light scattered at x toward the eye (`to_eye`, unit).
+glm::dvec3 point_light_scattering(const ReferenceSun& sun, const glm::dvec3& x, const glm::dvec3& to_eye) {
+  glm::dvec3 sum(0.0);
+  for (const PointEmitter& l : sun.point_lights) {
+    const glm::dvec3 travel = x - l.position;
+    const double d2 = glm::dot(travel, travel);
+    const double mu = d2 > 0.0 ? glm::dot(travel, to_eye) / std::sqrt(d2) : 0.0;
+    sum += l.intensity * henyey_greenstein(mu, sun.scattering.anisotropy) / std::max(d2, l.radius * l.radius);
+  }
+  return sum;
 }
 
 }  // namespace
@@ -80,7 +93,8 @@ RgbImage render_lit_particles_reference_over(const ParticlePool& p, const Camera
           [&](size_t i) { return albedo[i]; }, glm::dvec3(back[0], back[1], back[2]), max_piece_depth,
           [&](double a, double b) {
             const glm::dvec3 mid = eye + 0.5 * (a + b) * w;
-            return sun.color * sun_scattering(sun.scattering, mu, index.optical_depth_to_light(mid)) + sun.ambient;
+            return sun.color * sun_scattering(sun.scattering, mu, index.optical_depth_to_light(mid)) + sun.ambient +
+                   point_light_scattering(sun, mid, -w);
           });
       float* px = img.at(x, y);
       for (int c = 0; c < 3; ++c) px[c] = float(L[c]);

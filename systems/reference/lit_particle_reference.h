@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "engine/math/camera_math.h"
+#include "engine/math/point_light_clusters.h"
 #include "engine/math/scattering_octaves.h"
 #include "engine/particles/particle_pool.h"
 #include "systems/reference/rgb_image.h"
@@ -28,6 +29,9 @@ struct ReferenceSun {
   glm::dvec3 color{1.0};              // sun colour times intensity
   glm::dvec3 ambient{0.0};
   SunScattering scattering;  // the particles' phase lobe and octaves; the surfaces see exp(-tau)
+  // Point lights (the fire's, components/fire_lights.h): each adds I p_HG(mu, g) / max(d^2, r^2)
+  // to L(x), mu between its light's way at x and the way to the eye. Unshadowed, as the splats'.
+  std::vector<PointEmitter> point_lights;
 };
 
 // The opaque scene with the media's shadows: sunless + exp(-tau_sun(p)) (sunlit - sunless), p the
