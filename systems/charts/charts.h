@@ -54,6 +54,20 @@ struct ShadowsChartOptions {
 };
 ChartTable chart_shadows(const ShadowsChartOptions& options);
 
+// The octave approximation of multiple scattering (engine/math/scattering_octaves.h) with each
+// count of octaves, drawn by the engine's lit splats (a grid imported once, relit by the light
+// phase) and timed, against the path-traced truth of the grid
+// (systems/reference/path_traced_volume.h), lit by the sun alone.
+struct ScatteringChartOptions {
+  std::string file;  // empty: content/volumes/sample_cloud.vdb
+  std::vector<int> octaves{1, 2, 3, 4, 6, 8};
+  double albedo = 0.95, anisotropy = 0.6;
+  int width = 160, height = 160;
+  int samples = 512;  // paths per pixel of the truth
+  int frames = 8;     // timed frames per setting
+};
+ChartTable chart_scattering(const ScatteringChartOptions& options);
+
 // Explosion media layers at 1, 1/2, 1/4, 1/8 with each upsampling method (`pyro bench layers`).
 struct LayerResolutionChartOptions {
   // Empty: content/scenes/explosion.json (the paper's view) and explosion_behind_tower.json (the

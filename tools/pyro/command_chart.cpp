@@ -55,8 +55,11 @@ void refuse_unused(const ChartArgs& a, bool size_used, bool frames_used) {
 
 ChartTable make_chart(const ChartArgs& a) {
   const bool renders = a.name == "billboard-modes" || a.name == "layer-resolution" ||
-                       a.name == "particle-budget" || a.name == "shadows";
-  refuse_unused(a, renders, a.name == "billboard-modes" || a.name == "layer-resolution" || a.name == "shadows");
+                       a.name == "particle-budget" || a.name == "shadows" ||
+                       a.name == "scattering";
+  refuse_unused(a, renders,
+                a.name == "billboard-modes" || a.name == "layer-resolution" || a.name == "shadows" ||
+                    a.name == "scattering");
   if (a.name == "footprint") return chart_footprint({});
   if (a.name == "integrators") return chart_integrators({});
   if (a.name == "billboard-modes") {
@@ -77,13 +80,19 @@ ChartTable make_chart(const ChartArgs& a) {
     if (a.frames > 0) o.frames = a.frames;
     return chart_shadows(o);
   }
+  if (a.name == "scattering") {
+    ScatteringChartOptions o;
+    override_size(o, a);
+    if (a.frames > 0) o.frames = a.frames;
+    return chart_scattering(o);
+  }
   if (a.name == "particle-budget") {
     ParticleBudgetChartOptions o;
     override_size(o, a);
     return chart_particle_budget(o);
   }
   throw UserError("command line", "NAME", "one of footprint, billboard-modes, layer-resolution, "
-                                          "particle-budget, integrators, shadows, scale; found \"" + a.name + "\"");
+                                          "particle-budget, integrators, shadows, scattering, scale; found \"" + a.name + "\"");
 }
 
 // Before any measuring: --out must be a folder or creatable as one, in a folder that can be
@@ -166,7 +175,8 @@ void run_chart(const ChartArgs& a) {
 }  // namespace
 
 std::vector<std::string> chart_names() {
-  return {"footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators", "shadows", "scale"};
+  return {"footprint",  "billboard-modes", "layer-resolution", "particle-budget",
+          "integrators", "shadows",         "scattering",       "scale"};
 }
 
 void add_chart_command(CLI::App& app) {

@@ -79,6 +79,23 @@ TEST(ChartShadows, EverySettingAgainstTheReferenceWithShadowsHelp) {
   EXPECT_GT(t.rows[1].extra[0], t.rows[0].extra[0]);  // rays cost the light phase more than none
 }
 
+TEST(ChartScattering, OctavesComeCloserToThePathTracedTruthThanOne) {
+  ScatteringChartOptions o;
+  o.octaves = {1, 4};
+  o.width = 48;
+  o.height = 48;
+  o.samples = 128;
+  o.frames = 1;
+  const ChartTable t = chart_scattering(o);
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[0].group, "single scattering");
+  EXPECT_EQ(t.rows[1].label, "4 octaves");
+  const double noise = t.summary["monte_carlo_error"].get<double>();
+  EXPECT_LT(t.rows[1].error + 2.0 * noise, t.rows[0].error);
+  for (const auto& r : t.rows) EXPECT_GT(r.time, 0.0) << r.label;
+  EXPECT_TRUE(t.rows[1].pareto);
+}
+
 TEST(ChartParticleBudget, LooserTargetsKeepFewerParticlesAndCostError) {
   ParticleBudgetChartOptions o;
   o.files = {content_path("volumes/sample_cloud.vdb")};
