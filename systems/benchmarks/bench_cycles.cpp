@@ -11,6 +11,7 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "components/volume_medium.h"
 #include "engine/core/content_path.h"
@@ -57,6 +58,12 @@ std::string quoted(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
 }
 
 std::string vec(const glm::dvec3& v) {
@@ -106,17 +113,29 @@ CyclesRender render_with_cycles(const CyclesBenchOptions& o, const std::string& 
                                 const VolumeMedium& medium, const CameraDescription& cam, int seed,
                                 const fs::path& scratch) {
   const fs::path out = scratch / ("cycles_" + std::to_string(seed) + ".pfm"), log = scratch / "cycles.log";
-  const std::string cmd =
-      o.blender + " -b --factory-startup --python " + quoted(content_path("cycles/render_volume.py")) +
-      " -- --vdb " + quoted(leaf) + " --grid " + quoted(grid.name) + " --extinction " +
-      std::to_string(medium.extinction) + " --albedo " + std::to_string(medium.albedo) + " --anisotropy " +
-      std::to_string(o.anisotropy) + " --sun-direction " + vec(medium.light_direction) + " --light-color " +
-      vec(medium.light_color) + " --background " + vec(medium.background) + " --camera-position " +
-      vec(glm::dvec3(cam.position)) + " --camera-target " + vec(glm::dvec3(cam.target)) + " --camera-up " +
-      vec(glm::dvec3(cam.up)) + " --fov-y " + std::to_string(cam.fov_y_deg) + " --width " +
-      std::to_string(o.width) + " --height " + std::to_string(o.height) + " --samples " +
-      std::to_string(o.cycles_samples) + " --bounces " + std::to_string(o.bounces) + " --seed " +
-      std::to_string(seed) + " --out " + quoted(out.string()) + " > " + quoted(log.string()) + " 2>&1";
+  const std::pair<const char*, std::string> args[] = {
+      {"--vdb", quoted(leaf)},
+      {"--grid", quoted(grid.name)},
+      {"--extinction", num(medium.extinction)},
+      {"--albedo", num(medium.albedo)},
+      {"--anisotropy", num(o.anisotropy)},
+      {"--sun-direction", vec(medium.light_direction)},
+      {"--light-color", vec(medium.light_color)},
+      {"--background", vec(medium.background)},
+      {"--camera-position", vec(glm::dvec3(cam.position))},
+      {"--camera-target", vec(glm::dvec3(cam.target))},
+      {"--camera-up", vec(glm::dvec3(cam.up))},
+      {"--fov-y", num(cam.fov_y_deg)},
+      {"--width", std::to_string(o.width)},
+      {"--height", std::to_string(o.height)},
+      {"--samples", std::to_string(o.cycles_samples)},
+      {"--bounces", std::to_string(o.bounces)},
+      {"--seed", std::to_string(seed)},
+      {"--out", quoted(out.string())}};
+  std::string cmd =
+      quoted(o.blender) + " -b --factory-startup --python " + quoted(content_path("cycles/render_volume.py")) + " --";
+  for (const auto& [flag, value] : args) cmd += std::string(" ") + flag + " " + value;
+  cmd += " > " + quoted(log.string()) + " 2>&1";
   const auto t = std::chrono::steady_clock::now();
   const int status = std::system(cmd.c_str());
   CyclesRender r;
