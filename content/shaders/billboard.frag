@@ -3,11 +3,11 @@
 // the kernel texture holds the scaled footprint table, the colour is the particle's own.
 // Output is premultiplied; blending is (ONE, ONE_MINUS_SRC_ALPHA), back to front.
 //
-// LIT 1: the colour is the albedo times the light reaching the fragment's point p = centre +
+// LIT 1 and LIT 2: the colour is the albedo times the light reaching the fragment's point p = centre +
 // offset (where the pixel's ray passes closest to the centre):
 //   L = sun S(mu, tau_others(c) + grad . offset + tau_self(p)) + ambient,
-// S the sun's scattering towards the eye (one isotropic octave: exp(-tau); below), plus the
-// fire lights' light at the centre (billboard.vert),
+// S the sun's scattering towards the eye (LIT 1: one isotropic octave, exp(-tau); LIT 2: the
+// lobe and octaves below, plus the fire lights' light at the centre, billboard.vert),
 //   tau_self(p) = tau0 exp(-d_perp^2 / (2 s^2)) tail(d_par / s),
 // tau0 = -ln(1 - rho) the optical depth through the centre, d_par and d_perp the offset along and
 // across the direction toward the sun, tail the fraction of a line's depth beyond d_par / s
@@ -23,21 +23,22 @@ flat in vec4 v_albedo_density;
 flat in vec4 v_others_depth;
 flat in vec3 v_self;  // tau0, 1 / s, 1 / (2 s^2)
 in vec3 v_offset;
-flat in float v_view_cosine;  // mu, per particle
-flat in vec3 v_fire;          // the fire lights' scattered light, per particle (billboard.vert)
 uniform vec3 u_toward_sun;  // unit
 uniform vec3 u_sun_color;
 uniform vec3 u_ambient;
 uniform float u_self_shadow;  // 1: the particle shadows itself; 0: lit without shadows
 uniform float u_tail_polynomial[6];  // c_k of t^(2k+1), t = x / 3
-uniform int u_octaves;       // 1: single scattering
-uniform vec4 u_scattering;   // Henyey-Greenstein g; the octaves' a, b, c
+#endif
+#if LIT == 2
+flat in float v_view_cosine;  // mu, per particle
+flat in vec3 v_fire;          // the fire lights' scattered light, per particle (billboard.vert)
+uniform int u_octaves;        // 1: single scattering
+uniform vec4 u_scattering;    // Henyey-Greenstein g; the octaves' a, b, c
 
 // The sun's light scattered towards the eye per unit of sun colour (engine/math/scattering_octaves.h,
-// sun_scattering: the sum over octaves i of b^i 4 pi p_HG(mu, c^i g) exp(-a^i tau)). One
-// isotropic octave is exp(-tau).
+// sun_scattering: the sum over octaves i of b^i 4 pi p_HG(mu, c^i g) exp(-a^i tau)). LIT 1 is
+// one isotropic octave, exp(-tau), without fire light.
 float sun_scattering(float mu, float tau) {
-  if (u_octaves == 1 && u_scattering.x == 0.0) return exp(-tau);
   float sum = 0.0, a = 1.0, b = 1.0, g = u_scattering.x;
   for (int i = 0; i < u_octaves; ++i) {
     float d = 1.0 + g * g - 2.0 * g * mu;
@@ -66,7 +67,11 @@ void main() {
   float tail = 0.5 - 0.5 * p * t;
   float tau_self = tau0 * exp(-d_perp2 * v_self.z) * tail;
   float tau = u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, v_offset) + tau_self);
+#if LIT == 2
   vec3 light = u_sun_color * sun_scattering(v_view_cosine, max(tau, 0.0)) + u_ambient + v_fire;
+#else
+  vec3 light = u_sun_color * exp(-max(tau, 0.0)) + u_ambient;
+#endif
   // The opacity of the Gaussian's column through this point, 1 - exp(-tau0 f), f the footprint
   // scaled to 1 at the centre: rho at the centre as in the unlit splats, and the exact opacity
   // elsewhere (the unlit splats' rho f follows Johnson & McAllister's eq. 5, thinner off-centre).

@@ -27,6 +27,8 @@ flat out vec4 v_albedo_density;
 flat out vec4 v_others_depth;
 flat out vec3 v_self;     // tau0 = -ln(1 - rho), 1 / s (s = radius / 3), 1 / (2 s^2)
 out vec3 v_offset;        // the fragment's place on the billboard, from the centre (world units)
+#endif
+#if LIT == 2
 flat out float v_view_cosine;  // mu: the sunlight's direction of travel . the way to the eye
 flat out vec3 v_fire;          // the fire lights' light scattered at the centre toward the eye
 uniform vec3 u_toward_sun;     // unit
@@ -83,6 +85,8 @@ void main() {
   float s = a_center_radius.w / 3.0;
   v_self = vec3(-log(max(1.0 - a_color_density.a, 1e-12)), 1.0 / s, 0.5 / (s * s));
   v_offset = world - center;
+#endif
+#if LIT == 2
   vec3 to_eye = u_eye - center;
   vec3 eye_way = length(to_eye) > 0.0 ? normalize(to_eye) : vec3(0.0);
   v_view_cosine = length(to_eye) > 0.0 ? -dot(u_toward_sun, eye_way) : 1.0;

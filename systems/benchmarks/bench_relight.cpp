@@ -32,24 +32,42 @@ SceneRuntime relight_runtime(const std::vector<GaussianParticle>& particles, con
                                  lit ? std::optional<ShadowSettings>(o.shadows) : std::nullopt);
 }
 
-// Frames per second over `frames` frames (the GPU finished each), the sun turning every frame
+// Seconds for frames [first, first + count) (the GPU finished each), the sun turning every frame
 // when `turn`.
-double frames_per_second(SceneRuntime& runtime, int frames, int directions, bool turn) {
-  runtime.draw_frame(0);  // warm-up: shaders, tables, targets
-  glFinish();
+double time_frames(SceneRuntime& runtime, int first, int count, int directions, bool turn) {
   const auto t = std::chrono::steady_clock::now();
-  for (int f = 1; f <= frames; ++f) {
+  for (int f = first; f < first + count; ++f) {
     if (turn) set_sun(runtime, sun_direction(f % directions, directions));
     runtime.draw_frame(f);
     glFinish();
   }
-  return frames / seconds_since(t);
+  return seconds_since(t);
+}
+
+struct FrameRates {
+  double lit = 0.0, unlit = 0.0;
+};
+
+// Both runtimes timed in alternating blocks of about 4 frames, so that the machine's drift falls
+// on both alike: frames per second of each over `frames` frames.
+FrameRates alternating_frame_rates(SceneRuntime& lit, SceneRuntime& unlit, int frames, int directions) {
+  for (SceneRuntime* r : {&lit, &unlit}) {
+    r->draw_frame(0);  // warm-up: shaders, tables, targets
+    glFinish();
+  }
+  double lit_seconds = 0.0, unlit_seconds = 0.0;
+  for (int first = 1; first <= frames; first += 4) {
+    const int count = std::min(4, frames + 1 - first);
+    lit_seconds += time_frames(lit, first, count, directions, true);
+    unlit_seconds += time_frames(unlit, first, count, directions, false);
+  }
+  return {frames / lit_seconds, frames / unlit_seconds};
 }
 
 }  // namespace
 
 nlohmann::json bench_relight(const RelightBenchOptions& o) {
-  ProgressTask progress(o.progress, "bench relight", o.directions + 3);
+  ProgressTask progress(o.progress, "bench relight", o.directions + 2);
   progress.stage(0, "read and import");
   std::string note;
   const DenseGrid grid = read_vdb_grid(o.file, {o.grid, o.grid_index}, &note);
@@ -80,12 +98,11 @@ nlohmann::json bench_relight(const RelightBenchOptions& o) {
     const glm::dvec3 d = medium.light_direction;
     per_direction.push_back({{"direction", {d.x, d.y, d.z}}, {"rmse_vs_reference", rmse}});
   }
-  progress.stage(o.directions + 1, "time relit frames");
+  progress.stage(o.directions + 1, "time relit and unlit frames, alternating");
   SceneRuntime timed = relight_runtime(particles, medium, camera, o, true, false);
-  const double fps = frames_per_second(timed, o.frames, o.directions, true);
-  progress.stage(o.directions + 2, "time unlit frames");
   SceneRuntime unlit = relight_runtime(particles, medium, camera, o, false, false);
-  const double unlit_fps = frames_per_second(unlit, o.frames, o.directions, false);
+  const FrameRates rates = alternating_frame_rates(timed, unlit, o.frames, o.directions);
+  const double fps = rates.lit, unlit_fps = rates.unlit;
   progress.finish();
   return {{"file", o.file},
           {"particles", particles.size()},

@@ -4,7 +4,8 @@
 // (docs/lighting.md) from `directions` sun directions without importing again. Each direction's
 // frame is scored against the CPU volume reference lit from that direction (the grid itself,
 // ray marched with exact shadows: systems/reference/volume_reference.h), and the relit frames are
-// timed against the same particles drawn without per-frame lighting, in the same run.
+// timed against the same particles drawn without per-frame lighting, in the same run, in
+// alternating blocks of frames.
 #include <string>
 
 #include <nlohmann/json.hpp>

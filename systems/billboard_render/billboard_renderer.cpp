@@ -22,7 +22,8 @@ BillboardRenderer::BillboardRenderer(const FootprintTable& table)
     : table_(table),
       kernel_program_(gpu::load_program("billboard.vert", "billboard.frag")),
       trivial_program_(gpu::load_program("billboard.vert", "billboard_trivial.frag")),
-      lit_program_(gpu::load_program("billboard.vert", "billboard.frag", {"LIT 1"})) {
+      lit_program_(gpu::load_program("billboard.vert", "billboard.frag", {"LIT 1"})),
+      scattering_program_(gpu::load_program("billboard.vert", "billboard.frag", {"LIT 2"})) {
   // The kernel texture: one texel per footprint-table node (eq. 2 maps pixels to nodes),
   // sampled bilinearly between nodes and clamped at the billboard's edge.
   kernel_texture_ = gpu::make_texture(GL_TEXTURE_2D);
@@ -151,8 +152,13 @@ void BillboardRenderer::upload(const DrawList& list, const std::vector<const Par
   uploaded_shadow_.bind(GL_SHADER_STORAGE_BUFFER, 2);
 }
 
+const gpu::Program& BillboardRenderer::lit_program(const SplatLighting& lighting) const {
+  const bool fire = lighting.fire && !lighting.fire->lights.empty();
+  return fire || !(lighting.scattering == SunScattering{}) ? scattering_program_ : lit_program_;
+}
+
 void BillboardRenderer::set_lighting_uniforms(const SplatLighting& lighting) const {
-  const gpu::Program& program = lit_program_;
+  const gpu::Program& program = lit_program(lighting);
   glUniform3fv(gpu::uniform_location(program, "u_toward_sun"), 1, glm::value_ptr(lighting.toward_sun));
   glUniform3fv(gpu::uniform_location(program, "u_sun_color"), 1, glm::value_ptr(lighting.sun_color));
   glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
@@ -216,7 +222,7 @@ void BillboardRenderer::draw(const DrawList& list, const std::vector<const Parti
     if (lit) uploaded_shadow_.bind(GL_SHADER_STORAGE_BUFFER, 2);  // the sort's shaders bind 2 too
   }
   const gpu::Program& program =
-      lit ? lit_program_ : shading == BillboardShading::kernel ? kernel_program_ : trivial_program_;
+      lit ? lit_program(*lighting) : shading == BillboardShading::kernel ? kernel_program_ : trivial_program_;
   target.bind();
   use_particle_blending();
   glUseProgram(program.get());

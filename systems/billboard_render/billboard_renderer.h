@@ -76,7 +76,9 @@ class BillboardRenderer {
 
  private:
   FootprintTable table_;
-  gpu::Program kernel_program_, trivial_program_, lit_program_;
+  // lit_program_: single isotropic scattering of the sun (LIT 1); scattering_program_: the
+  // scattering lobe and octaves, and the fire lights (LIT 2).
+  gpu::Program kernel_program_, trivial_program_, lit_program_, scattering_program_;
   gpu::Texture kernel_texture_;
   // The lit program's self-shadow: gaussian_tail_polynomial's coefficients.
   std::array<double, kTailPolynomialTerms> tail_polynomial_ = gaussian_tail_polynomial();
@@ -88,6 +90,7 @@ class BillboardRenderer {
   void upload(const DrawList& list, const std::vector<const ParticlePool*>& pools,
               const SplatLighting* lighting = nullptr);
   // The lit program's uniforms.
+  const gpu::Program& lit_program(const SplatLighting& lighting) const;
   void set_lighting_uniforms(const SplatLighting& lighting) const;
   // The last upload's particles ordered by gpu_sort_ (made on first use).
   void order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools);
