@@ -33,11 +33,11 @@ void write_frame(const std::string& folder, const std::string& name, const RgbIm
             linear_rgba_to_srgb8(rgba, img.width, img.height));
 }
 
-void checked(const MultipleScatteringBenchOptions& o) {
+void check_octaves(const MultipleScatteringBenchOptions& o) {
   try {
     validate(o.sun);
   } catch (const std::invalid_argument& e) {
-    throw UserError("bench multiple-scattering", "the octave parameters", e.what());
+    throw UserError("", "--anisotropy, --octaves, --attenuation, --contribution, --eccentricity", e.what());
   }
 }
 
@@ -105,7 +105,7 @@ nlohmann::json score_direction(const DenseGrid& grid, const VolumeMedium& medium
 }  // namespace
 
 nlohmann::json bench_multiple_scattering(const MultipleScatteringBenchOptions& o) {
-  checked(o);
+  check_octaves(o);
   ProgressTask progress(o.progress, "bench multiple-scattering", size_t(o.directions) + 1);
   progress.stage(0, "read and import");
   std::string note;
