@@ -39,6 +39,7 @@ uniform vec4 u_scattering;     // Henyey-Greenstein g first (billboard.frag)
 uniform int u_fire_light_count;
 uniform vec4 u_fire_lights[8];
 uniform vec3 u_fire_intensity[8];
+#include "henyey_greenstein.glsl"
 #endif
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
 uniform uvec2 u_order_stride_offset;
@@ -96,9 +97,8 @@ void main() {
     vec3 travel = center - u_fire_lights[j].xyz;
     float d2 = dot(travel, travel);
     float mu = d2 > 0.0 ? dot(travel, eye_way) * inversesqrt(d2) : 0.0;
-    float h = 1.0 + g * g - 2.0 * g * mu;
-    float phase = (1.0 - g * g) / (12.566370614359172 * h * sqrt(h));
-    v_fire += u_fire_intensity[j] * phase / max(d2, u_fire_lights[j].w * u_fire_lights[j].w);
+    float r2 = u_fire_lights[j].w * u_fire_lights[j].w;
+    v_fire += u_fire_intensity[j] * henyey_greenstein(mu, g) / max(d2, r2);
   }
 #endif
   gl_Position = u_view_projection * vec4(world, 1.0);

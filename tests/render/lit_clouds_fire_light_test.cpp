@@ -10,6 +10,7 @@
 #include "systems/reference/world_snapshot.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "tests/support/rendered_frame.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -33,15 +34,7 @@ SceneDescription cloud_over_the_campfire(int fire_lights) {
   return scene;
 }
 
-RgbImage engine_frame(const SceneDescription& scene) {
-  RuntimeOptions o;
-  o.readback = true;
-  o.width_override = kWidth;
-  o.height_override = kHeight;
-  SceneRuntime runtime(scene, o);
-  runtime.draw_frame(4);
-  return rgb_of(runtime.image());
-}
+RgbImage engine_frame(const SceneDescription& scene) { return test::rendered_frame(scene, kWidth, kHeight, 4); }
 
 TEST(LitCloudsFireLight, SplatsReceiveTheFireAsTheReferenceDoes) {
   const SceneDescription lit = cloud_over_the_campfire(2);

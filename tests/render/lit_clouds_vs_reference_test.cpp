@@ -12,6 +12,7 @@
 #include "systems/reference/world_snapshot.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "tests/support/rendered_frame.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -27,15 +28,7 @@ SceneDescription lit_clouds(ShadowMethod method) {
   return scene;
 }
 
-RgbImage engine_frame(const SceneDescription& scene) {
-  RuntimeOptions o;
-  o.readback = true;
-  o.width_override = kWidth;
-  o.height_override = kHeight;
-  SceneRuntime runtime(scene, o);
-  runtime.draw_frame(0);
-  return rgb_of(runtime.image());
-}
+RgbImage engine_frame(const SceneDescription& scene) { return test::rendered_frame(scene, kWidth, kHeight); }
 
 class LitClouds : public testing::Test {
  protected:
