@@ -1,22 +1,42 @@
 #include "engine/math/shadow_caster.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace pyro {
 
+ShadowCaster::ShadowCaster(const AnisotropicGaussian& g)
+    : shape(CasterShape::ellipsoid),
+      c(g.centre),
+      size(double(kAnisotropicExtent) * std::max({g.scale.x, g.scale.y, g.scale.z})),
+      k(g.extinction),
+      whitening(whitening_matrix(g)) {}
+
+AnisotropicRaySegment ShadowCaster::ellipsoid(const glm::dvec3& o, const glm::dvec3& w) const {
+  const glm::dmat3 m(whitening);
+  return anisotropic_ray_segment(m, m * (o - c), k, w);
+}
+
 double caster_reach(const ShadowCaster& caster) {
-  return caster.shape == CasterShape::sphere ? caster.size : kGaussianCubeReach * caster.size;
+  return caster.shape == CasterShape::gaussian ? kGaussianCubeReach * caster.size : caster.size;
 }
 
 bool caster_span(const ShadowCaster& caster, const glm::dvec3& o, const glm::dvec3& w, double& a,
                  double& b) {
   if (caster.shape == CasterShape::gaussian) return gaussian_cube_span(caster.gaussian(), o, w, a, b);
+  if (caster.shape == CasterShape::ellipsoid) {
+    const AnisotropicRaySegment s = caster.ellipsoid(o, w);
+    a = s.t_enter;
+    b = s.t_exit;
+    return s.hit;
+  }
   double extinction;
   return sphere_chord(caster.sphere(), o, w, a, b, extinction);
 }
 
 double CasterRayProfile::cumulative(double t) const {
   if (shape == CasterShape::gaussian) return gaussian.cumulative(t);
+  if (shape == CasterShape::ellipsoid) return ellipsoid.depth(-std::numeric_limits<double>::infinity(), t);
   return extinction * (std::clamp(t, enter, leave) - enter);
 }
 
@@ -25,6 +45,8 @@ CasterRayProfile caster_ray_profile(const ShadowCaster& caster, const glm::dvec3
   p.shape = caster.shape;
   if (caster.shape == CasterShape::gaussian) {
     p.gaussian = gaussian_ray_profile(caster.gaussian(), o, w);
+  } else if (caster.shape == CasterShape::ellipsoid) {
+    p.ellipsoid = caster.ellipsoid(o, w);
   } else if (!sphere_chord(caster.sphere(), o, w, p.enter, p.leave, p.extinction)) {
     p.enter = p.leave = p.extinction = 0.0;
   }
@@ -34,6 +56,7 @@ CasterRayProfile caster_ray_profile(const ShadowCaster& caster, const glm::dvec3
 double caster_optical_depth(const ShadowCaster& caster, const glm::dvec3& o, const glm::dvec3& w,
                             double a, double b) {
   if (caster.shape == CasterShape::gaussian) return gaussian_optical_depth(caster.gaussian(), o, w, a, b);
+  if (caster.shape == CasterShape::ellipsoid) return caster.ellipsoid(o, w).depth(a, b);
   return sphere_optical_depth(caster.sphere(), o, w, a, b);
 }
 

@@ -1,34 +1,43 @@
 #pragma once
 // A particle that casts shadows, whichever its shape: a clamped Gaussian (the splats: clouds,
-// fog, mist, imported volumes; engine/math/gaussian_line_integral.h) or a spherical particle of
-// the explosion's billboards (engine/math/sphere_line_integral.h). The light phase's shadow maps
-// and shadow rays integrate both along a ray through the same few calls.
+// fog, mist, imported volumes; engine/math/gaussian_line_integral.h), a spherical particle of
+// the explosion's billboards (engine/math/sphere_line_integral.h) or an anisotropic Gaussian
+// (fitted imports; engine/math/anisotropic_optical_depth.h). The light phase's shadow maps and
+// shadow rays integrate all three along a ray through the same few calls.
 #include <cstdint>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
+#include "engine/math/anisotropic_optical_depth.h"
 #include "engine/math/gaussian_line_integral.h"
 #include "engine/math/sphere_line_integral.h"
 
 namespace pyro {
 
-enum class CasterShape : uint8_t { gaussian, sphere };
+enum class CasterShape : uint8_t { gaussian, sphere, ellipsoid };
 
 struct ShadowCaster {
   CasterShape shape = CasterShape::gaussian;
   glm::dvec3 c{0.0};
-  double size = 1.0;  // gaussian: the standard deviation s; sphere: the radius r
-  double k = 0.0;     // gaussian: the extinction at the centre; sphere: along a ray through it
+  double size = 1.0;  // gaussian: the standard deviation s; sphere: the radius r; ellipsoid:
+                      // its reach, kAnisotropicExtent times the largest scale
+  double k = 0.0;     // gaussian, ellipsoid: the extinction at the centre; sphere: along a ray
+                      // through it
+  glm::mat3 whitening{1.0f};  // ellipsoid: M = S^-1 R^T (whitening_matrix)
 
   ShadowCaster() = default;
   ShadowCaster(const ClampedGaussian& g) : shape(CasterShape::gaussian), c(g.c), size(g.s), k(g.k) {}
   ShadowCaster(const ConeSphere& s) : shape(CasterShape::sphere), c(s.c), size(s.r), k(s.k) {}
+  ShadowCaster(const AnisotropicGaussian& g);
   ClampedGaussian gaussian() const { return {c, size, k}; }
   ConeSphere sphere() const { return {c, size, k}; }
+  // An ellipsoid's line o + t w (|w| = 1) through it.
+  AnisotropicRaySegment ellipsoid(const glm::dvec3& o, const glm::dvec3& w) const;
 };
 
 // How far the caster reaches from its centre in any direction: a Gaussian's cube half-diagonal
-// (kGaussianCubeReach s), a sphere's radius.
+// (kGaussianCubeReach s), a sphere's radius, an ellipsoid's longest semi-axis.
 double caster_reach(const ShadowCaster& caster);
 
 // Where the ray o + t w (|w| = 1) can meet the caster: [a, b]; false if nowhere.
@@ -40,6 +49,7 @@ bool caster_span(const ShadowCaster& caster, const glm::dvec3& o, const glm::dve
 struct CasterRayProfile {
   CasterShape shape = CasterShape::gaussian;
   GaussianRayProfile gaussian;
+  AnisotropicRaySegment ellipsoid;
   double enter = 0.0, leave = 0.0, extinction = 0.0;  // sphere
   double cumulative(double t) const;
 };

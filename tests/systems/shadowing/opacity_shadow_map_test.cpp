@@ -10,21 +10,36 @@
 #include <glm/matrix.hpp>
 
 #include "engine/core/rng.h"
+#include "engine/particles/anisotropic_gaussian.h"
 #include "engine/math/shadow_ray_index.h"
 #include "systems/shadowing/opacity_shadow_map.h"
 
 namespace pyro {
 namespace {
 
-// Gaussians, and with `spheres` every third particle an explosion's sphere.
-std::vector<ShadowCaster> cloud(int n, bool spheres = false) {
+// Gaussians, every third particle of them (`other`) an explosion's sphere or a fitted import's
+// anisotropic Gaussian.
+enum class Other { none, spheres, ellipsoids };
+
+std::vector<ShadowCaster> cloud(int n, Other other = Other::none) {
   Rng rng(5);
   std::vector<ShadowCaster> gs;
   for (int i = 0; i < n; ++i) {
     const glm::dvec3 c(rng.uniform(-2.0f, 2.0f), rng.uniform(3.0f, 4.0f), rng.uniform(-2.0f, 2.0f));
     const float radius = rng.uniform(0.2f, 0.6f), density = rng.uniform(0.1f, 0.5f);
-    if (spheres && i % 3 == 0) gs.push_back(ConeSphere{c, radius, 4.0 * density});
-    else gs.push_back(clamped_gaussian(c, radius, density));
+    if (other == Other::spheres && i % 3 == 0) {
+      gs.push_back(ConeSphere{c, radius, 4.0 * density});
+    } else if (other == Other::ellipsoids && i % 3 == 0) {
+      AnisotropicGaussian g;
+      g.centre = glm::vec3(c);
+      g.rotation = glm::normalize(glm::quat(rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f),
+                                            rng.uniform(-1.0f, 1.0f), rng.uniform(-1.0f, 1.0f)));
+      g.scale = glm::vec3(radius / 3.0f) * glm::vec3(rng.uniform(0.3f, 2.0f), rng.uniform(0.3f, 2.0f), 1.0f);
+      g.extinction = 8.0f * density;
+      gs.push_back(g);
+    } else {
+      gs.push_back(clamped_gaussian(c, radius, density));
+    }
   }
   return gs;
 }
@@ -34,7 +49,7 @@ glm::vec3 texel_centre(const ShadowVolume& map, int i, int j, int k) {
   return glm::vec3(glm::inverse(map.world_to_texture) * glm::vec4(t, 1.0f));
 }
 
-class OpacityShadowMapOf : public ::testing::TestWithParam<bool> {};
+class OpacityShadowMapOf : public ::testing::TestWithParam<Other> {};
 
 TEST_P(OpacityShadowMapOf, HoldsTheExactDepthAtEveryTexelCentre) {
   const std::vector<ShadowCaster> gs = cloud(150, GetParam());
@@ -72,8 +87,13 @@ TEST_P(OpacityShadowMapOf, ReadsNothingBesideTheMediaAndTheWholeColumnBeyond) {
   EXPECT_NEAR(sample_optical_depth(map, ground), exact.optical_depth_to_light(glm::dvec3(ground)), 1e-4);
 }
 
-INSTANTIATE_TEST_SUITE_P(GaussiansAndSpheres, OpacityShadowMapOf, ::testing::Bool(),
-                         [](const auto& info) { return info.param ? "WithSpheres" : "Gaussians"; });
+INSTANTIATE_TEST_SUITE_P(GaussiansSpheresAndEllipsoids, OpacityShadowMapOf,
+                         ::testing::Values(Other::none, Other::spheres, Other::ellipsoids),
+                         [](const auto& info) {
+                           return info.param == Other::none      ? "Gaussians"
+                                  : info.param == Other::spheres ? "WithSpheres"
+                                                                 : "WithEllipsoids";
+                         });
 
 TEST(OpacityShadowMap, NoParticlesMakeAnEmptyMapAndANewVersion) {
   ShadowVolume map;
