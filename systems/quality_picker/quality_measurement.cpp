@@ -5,7 +5,9 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
+#include "components/anisotropic_cloud.h"
 #include "components/fire_lights.h"
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
@@ -15,6 +17,7 @@
 #include "components/view.h"
 #include "engine/core/sample_statistics.h"
 #include "engine/ecs/world.h"
+#include "systems/reference/anisotropic_reference.h"
 #include "systems/reference/lit_particle_reference.h"
 #include "systems/reference/particle_reference.h"
 #include "systems/reference/world_snapshot.h"
@@ -55,6 +58,15 @@ SceneDescription opaque_part(const SceneDescription& scene, bool sunless) {
   return opaque;
 }
 
+// Every anisotropic cloud's particles, in the order the billboard system draws them.
+std::vector<AnisotropicGaussian> anisotropic_particles(ecs::World& world) {
+  std::vector<AnisotropicGaussian> all;
+  world.each<const AnisotropicCloud>([&](const AnisotropicCloud& c) {
+    all.insert(all.end(), c.particles.begin(), c.particles.end());
+  });
+  return all;
+}
+
 }  // namespace
 
 std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, int width, int height,
@@ -74,8 +86,13 @@ std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, i
     const std::vector<float> stop =
         ray_stop_distances(camera, background.world().resource<GpuFrame>().eyes.at(0).scene->read_depth());
     const ParticlePool pool = gather_particles(particles.world());
+    const std::vector<AnisotropicGaussian> fitted = anisotropic_particles(particles.world());
+    if (!fitted.empty() && pool.size() > 0)
+      throw std::invalid_argument("particle_scene_references: the reference holds isotropic or anisotropic "
+                                  "Gaussians, not both");
     if (!sunless) {
-      images.push_back(render_particles_reference_over(pool, camera, behind, stop));
+      images.push_back(fitted.empty() ? render_particles_reference_over(pool, camera, behind, stop)
+                                      : render_anisotropic_reference_over(fitted, camera, behind, stop));
       continue;
     }
     // Lit media: single scattering with exact shadows, over the opaque scene with its shadows.
@@ -88,6 +105,12 @@ std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, i
     if (const auto* shadows = particles.world().try_resource<const ShadowSettings>())
       sun.scattering = shadows->scattering;
     if (const auto* fire = particles.world().try_resource<const FireLights>()) sun.point_lights = fire->lights;
+    if (!fitted.empty()) {
+      const RgbImage shadowed =
+          shadowed_opaque_reference(anisotropic_casters(fitted), camera, sun, behind, rgb_of(sunless->image()), stop);
+      images.push_back(render_lit_anisotropic_reference_over(fitted, camera, sun, shadowed, stop));
+      continue;
+    }
     const RgbImage shadowed =
         shadowed_opaque_reference(pool, camera, sun, behind, rgb_of(sunless->image()), stop);
     images.push_back(render_lit_particles_reference_over(pool, camera, sun, shadowed, stop));

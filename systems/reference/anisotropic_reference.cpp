@@ -3,9 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include <glm/geometric.hpp>
 
 #include "engine/math/anisotropic_optical_depth.h"
 #include "engine/math/projected_ellipsoid.h"
+#include "engine/math/shadow_ray_index.h"
 #include "systems/reference/parallel_rows.h"
 #include "systems/reference/pixel_ray.h"
 #include "systems/reference/ray_pieces.h"
@@ -35,11 +41,15 @@ bool pixel_span(const AnisotropicGaussian& g, const CameraFrame& camera, PixelSp
          span.y0 < h;
 }
 
-}  // namespace
-
-RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& particles,
-                                      const CameraFrame& camera, const glm::dvec3& background,
-                                      int threads, double max_piece_depth) {
+// The image with each part [a, b] of pixel ray w scattering its particles' colour times
+// light(a, b, w).
+template <class Light>
+RgbImage render_particles(const std::vector<AnisotropicGaussian>& particles, const CameraFrame& camera,
+                          const RgbImage& behind, const std::vector<float>& stop, int threads,
+                          double max_piece_depth, Light&& light) {
+  const std::size_t pixels = std::size_t(camera.width) * std::size_t(camera.height);
+  if (behind.width != camera.width || behind.height != camera.height || stop.size() != pixels)
+    throw std::invalid_argument("anisotropic reference: image sizes differ from the camera's");
   const glm::dvec3 eye(camera.eye);
   std::vector<std::size_t> visible;
   std::vector<PixelSpan> spans;
@@ -53,10 +63,7 @@ RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& pa
     whitening.push_back(whitening_matrix(particles[i]));
     eye_whitened.push_back(whitening.back() * (eye - glm::dvec3(particles[i].centre)));
   }
-  RgbImage img;
-  img.width = camera.width;
-  img.height = camera.height;
-  img.rgb.assign(std::size_t(3) * img.width * img.height, 0.0f);
+  RgbImage img = behind;
   parallel_rows(img.height, threads, [&](int y) {
     std::vector<std::size_t> row;  // indices into visible / spans
     for (std::size_t k = 0; k < visible.size(); ++k)
@@ -66,6 +73,7 @@ RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& pa
     RayPieces pieces;
     for (int x = 0; x < img.width; ++x) {
       const glm::dvec3 w = pixel_ray_direction(camera, x + 0.5, y + 0.5);
+      const double t_stop = stop[std::size_t(y) * std::size_t(camera.width) + std::size_t(x)];
       pieces.clear();
       segments.clear();
       owner.clear();
@@ -74,7 +82,7 @@ RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& pa
         const std::size_t i = visible[k];
         const AnisotropicRaySegment s =
             anisotropic_ray_segment(whitening[k], eye_whitened[k], double(particles[i].extinction), w);
-        const double a = std::max(s.t_enter, 0.0), b = s.t_exit;
+        const double a = std::max(s.t_enter, 0.0), b = std::min(s.t_exit, t_stop);
         if (!s.hit || b <= a) continue;
         pieces.add(a, b, s.t_closest, segments.size());
         segments.push_back(s);
@@ -82,7 +90,9 @@ RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& pa
       }
       const glm::dvec3 L = pieces.integrate(
           [&](std::size_t i, double a, double b) { return segments[i].depth(a, b); },
-          [&](std::size_t i) { return glm::dvec3(particles[owner[i]].color); }, background, max_piece_depth);
+          [&](std::size_t i) { return glm::dvec3(particles[owner[i]].color); },
+          glm::dvec3(behind.at(x, y)[0], behind.at(x, y)[1], behind.at(x, y)[2]), max_piece_depth,
+          [&](double a, double b) { return light(a, b, w); });
       float* px = img.at(x, y);
       px[0] = float(L.x);
       px[1] = float(L.y);
@@ -90,6 +100,59 @@ RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& pa
     }
   });
   return img;
+}
+
+// A uniform background, nothing opaque.
+RgbImage uniform_image(const CameraFrame& camera, const glm::dvec3& colour) {
+  RgbImage img;
+  img.width = camera.width;
+  img.height = camera.height;
+  img.rgb.resize(std::size_t(3) * img.width * img.height);
+  for (std::size_t i = 0; i < img.rgb.size(); ++i) img.rgb[i] = float(colour[int(i % 3)]);
+  return img;
+}
+
+std::vector<float> no_stop(const CameraFrame& camera) {
+  return std::vector<float>(std::size_t(camera.width) * std::size_t(camera.height),
+                            std::numeric_limits<float>::infinity());
+}
+
+}  // namespace
+
+RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& particles,
+                                      const CameraFrame& camera, const glm::dvec3& background,
+                                      int threads, double max_piece_depth) {
+  return render_anisotropic_reference_over(particles, camera, uniform_image(camera, background), no_stop(camera),
+                                           threads, max_piece_depth);
+}
+
+RgbImage render_anisotropic_reference_over(const std::vector<AnisotropicGaussian>& particles,
+                                           const CameraFrame& camera, const RgbImage& behind,
+                                           const std::vector<float>& stop, int threads, double max_piece_depth) {
+  return render_particles(particles, camera, behind, stop, threads, max_piece_depth,
+                          [](double, double, const glm::dvec3&) { return glm::dvec3(1.0); });
+}
+
+std::vector<ShadowCaster> anisotropic_casters(const std::vector<AnisotropicGaussian>& particles) {
+  std::vector<ShadowCaster> casters;
+  for (const AnisotropicGaussian& g : particles)
+    if (g.extinction > 0.0f) casters.emplace_back(g);
+  return casters;
+}
+
+RgbImage render_lit_anisotropic_reference_over(const std::vector<AnisotropicGaussian>& particles,
+                                               const CameraFrame& camera, const ReferenceSun& sun,
+                                               const RgbImage& behind, const std::vector<float>& stop,
+                                               int threads, double max_piece_depth) {
+  const ShadowRayIndex index(anisotropic_casters(particles), sun.travel);
+  const glm::dvec3 eye(camera.eye), travel = glm::normalize(sun.travel);
+  return render_particles(particles, camera, behind, stop, threads, max_piece_depth,
+                          [&](double a, double b, const glm::dvec3& w) {
+                            const glm::dvec3 mid = eye + 0.5 * (a + b) * w;
+                            return sun.color * sun_scattering(sun.scattering, -glm::dot(travel, w),
+                                                              index.optical_depth_to_light(mid)) +
+                                   sun.ambient;
+                          });
 }
 
 }  // namespace pyro

@@ -11,6 +11,7 @@
 
 #include "engine/math/camera_math.h"
 #include "engine/particles/anisotropic_gaussian.h"
+#include "systems/reference/lit_particle_reference.h"  // ReferenceSun
 #include "systems/reference/rgb_image.h"
 
 namespace pyro {
@@ -20,5 +21,25 @@ namespace pyro {
 RgbImage render_anisotropic_reference(const std::vector<AnisotropicGaussian>& particles,
                                       const CameraFrame& camera, const glm::dvec3& background,
                                       int threads = 0, double max_piece_depth = 0.02);
+
+// The same over `behind` (an opaque scene's image), each pixel's ray cut at `stop` (its distance
+// to the opaque surface; infinity: none).
+RgbImage render_anisotropic_reference_over(const std::vector<AnisotropicGaussian>& particles,
+                                           const CameraFrame& camera, const RgbImage& behind,
+                                           const std::vector<float>& stop, int threads = 0,
+                                           double max_piece_depth = 0.02);
+
+// The particles lit (their colours are albedos) as lit_particle_reference.h lights isotropic ones:
+// each part of a pixel's ray scatters its particles' mean albedo times
+//   L(x) = sun.color S(mu, tau_sun(x)) + sun.ambient
+// at its midpoint x, tau_sun the exact optical depth of every particle from x toward the sun (their
+// closed forms, through engine/math/shadow_ray_index.h). The sun's point lights are not used.
+RgbImage render_lit_anisotropic_reference_over(const std::vector<AnisotropicGaussian>& particles,
+                                               const CameraFrame& camera, const ReferenceSun& sun,
+                                               const RgbImage& behind, const std::vector<float>& stop,
+                                               int threads = 0, double max_piece_depth = 0.02);
+
+// The particles as shadow casters (their ellipsoids), for shadowed_opaque_reference.
+std::vector<ShadowCaster> anisotropic_casters(const std::vector<AnisotropicGaussian>& particles);
 
 }  // namespace pyro

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -47,9 +48,15 @@ glm::dvec3 point_light_scattering(const ReferenceSun& sun, const glm::dvec3& x, 
 RgbImage shadowed_opaque_reference(const ParticlePool& particles, const CameraFrame& camera,
                                    const ReferenceSun& sun, const RgbImage& sunlit,
                                    const RgbImage& sunless, const std::vector<float>& stop, int threads) {
+  return shadowed_opaque_reference(casters(particles), camera, sun, sunlit, sunless, stop, threads);
+}
+
+RgbImage shadowed_opaque_reference(std::vector<ShadowCaster> casters, const CameraFrame& camera,
+                                   const ReferenceSun& sun, const RgbImage& sunlit,
+                                   const RgbImage& sunless, const std::vector<float>& stop, int threads) {
   require_camera_size(camera, sunlit, stop, "shadowed_opaque_reference");
   require_camera_size(camera, sunless, stop, "shadowed_opaque_reference");
-  const ShadowRayIndex index(casters(particles), sun.travel);
+  const ShadowRayIndex index(std::move(casters), sun.travel);
   RgbImage out = sunlit;
   const glm::dvec3 eye(camera.eye);
   parallel_rows(camera.height, threads, [&](int y) {

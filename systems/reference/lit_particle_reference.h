@@ -19,6 +19,7 @@
 #include "engine/math/camera_math.h"
 #include "engine/math/point_light_clusters.h"
 #include "engine/math/scattering_octaves.h"
+#include "engine/math/shadow_caster.h"
 #include "engine/particles/particle_pool.h"
 #include "systems/reference/rgb_image.h"
 
@@ -37,6 +38,11 @@ struct ReferenceSun {
 // The opaque scene with the media's shadows: sunless + exp(-tau_sun(p)) (sunlit - sunless), p the
 // point at distance `stop` along each pixel's ray (none: the pixel is left as sunlit).
 RgbImage shadowed_opaque_reference(const ParticlePool& particles, const CameraFrame& camera,
+                                   const ReferenceSun& sun, const RgbImage& sunlit,
+                                   const RgbImage& sunless, const std::vector<float>& stop,
+                                   int threads = 0);
+// The same with the media's shadows cast by `casters`.
+RgbImage shadowed_opaque_reference(std::vector<ShadowCaster> casters, const CameraFrame& camera,
                                    const ReferenceSun& sun, const RgbImage& sunlit,
                                    const RgbImage& sunless, const std::vector<float>& stop,
                                    int threads = 0);
