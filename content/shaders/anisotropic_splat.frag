@@ -9,12 +9,36 @@
 // u_erf = kErfAs7126 {p, a1, a2, a3, a4, a5} from the same header.
 // Output is premultiplied (colour alpha, alpha), alpha = 1 - exp(-tau); blending is
 // (ONE, ONE_MINUS_SRC_ALPHA), back to front.
+//
+// LIT: the colour is the albedo times the light reaching the particle along the pixel's ray,
+// averaged over the particle's density there (three points, below):
+//   L(p) = sun S(mu, tau_others(c) + grad . (p - c) + tau_self(p)) + ambient,
+// tau_others and its gradient the light phase's (components/particle_light.h), tau_self(p) the
+// particle's own depth from p toward the sun in the same closed form (the segment from
+// u0 = M (p - c) along M toward_sun, over [0, infinity)), S the sun's scattering towards the eye
+// (sun_scattering.glsl), mu per pixel. One point, the densest, would shade a particle thick
+// toward the sun as dark as its core, where the truth averages exp(-tau) over its depth.
+#ifndef LIT
+#define LIT 0
+#endif
 noperspective in vec3 v_ray;           // d: the ray's direction, unnormalised
 noperspective in vec3 v_ray_whitened;  // M d, M = S^-1 R^T
 flat in vec3 v_eye_whitened;           // u0 = M (eye - c)
 flat in vec4 v_color_extinction;
 
 uniform float u_erf[6];
+#if LIT
+flat in vec4 v_others_depth;  // the others' depth toward the sun at the centre (x), its gradient (yzw)
+flat in vec3 v_eye_offset;    // eye - c
+flat in vec3 v_sun_whitened;  // M toward_sun
+uniform vec3 u_toward_sun;    // unit
+uniform vec3 u_sun_color;
+uniform vec3 u_ambient;
+uniform float u_self_shadow;  // 1: shadowed; 0: lit without shadows
+uniform int u_octaves;
+uniform vec4 u_scattering;
+#include "sun_scattering.glsl"
+#endif
 
 layout(location = 0) out vec4 o_color;
 
@@ -28,6 +52,24 @@ float erf_as_7_1_26(float x) {
   float y = 1.0 - poly * exp(-ax * ax);
   return x < 0.0 ? -y : y;
 }
+
+#if LIT
+// The particle's own optical depth from the point whose whitened coordinates are u toward the sun
+// (AnisotropicRaySegment::depth(0, infinity) of the segment from u along M toward_sun), peak
+// extinction k.
+float own_depth_toward_sun(vec3 u, float k) {
+  float e2 = kExtent * kExtent;
+  float a = dot(v_sun_whitened, v_sun_whitened);
+  float t_c = -dot(u, v_sun_whitened) / a;
+  vec3 nearest = u + t_c * v_sun_whitened;
+  float m2 = dot(nearest, nearest);
+  if (!(m2 < e2)) return 0.0;
+  float h = sqrt((e2 - m2) / a), rate = sqrt(0.5 * a);
+  float from = max(0.0, t_c - h), to = t_c + h;
+  if (!(to > from)) return 0.0;
+  return k * exp(-0.5 * m2) * sqrt(kPi / (2.0 * a)) * (erf_as_7_1_26(rate * (to - t_c)) - erf_as_7_1_26(rate * (from - t_c)));
+}
+#endif
 
 void main() {
   // anisotropic_ray_segment, with w = d / |d| and so v = M w = (M d) / |d|:
@@ -47,5 +89,22 @@ void main() {
   if (!(hi > lo)) discard;
   float tau = peak * (erf_as_7_1_26(rate * (hi - t_closest)) - erf_as_7_1_26(rate * (lo - t_closest)));
   float alpha = 1.0 - exp(-tau);
+#if LIT
+  // The light averaged over the particle's density along the ray, which is a normal profile in t
+  // about t_closest with variance 1 / a: three-point Gauss-Hermite quadrature (nodes 0 and
+  // +-sqrt(3) standard deviations, weights 2/3 and 1/6), nodes kept to the visible chord.
+  vec3 w = v_ray / length(v_ray);
+  float mu = dot(w, u_toward_sun), spread = sqrt(3.0 / a);
+  vec3 light = u_ambient;
+  for (int node = -1; node <= 1; ++node) {
+    float t_node = clamp(t_closest + float(node) * spread, lo, hi);
+    vec3 offset = v_eye_offset + t_node * w;
+    float tau_self = own_depth_toward_sun(v_eye_whitened + t_node * v, v_color_extinction.a);
+    float tau_sun = u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, offset) + tau_self);
+    light += (node == 0 ? 2.0 / 3.0 : 1.0 / 6.0) * u_sun_color * sun_scattering(mu, max(tau_sun, 0.0));
+  }
+  o_color = vec4(v_color_extinction.rgb * light * alpha, alpha);
+#else
   o_color = vec4(v_color_extinction.rgb * alpha, alpha);
+#endif
 }

@@ -14,8 +14,20 @@
 // it and the eye or holds the eye covers the whole viewport; one wholly behind the eye, nothing.
 // Depth is the centre's (the near plane's when the centre is not beyond it): the splat is depth
 // tested against opaque geometry there, as the isotropic billboards are.
+// LIT: binding 2 holds each particle's others' depth toward the sun and its gradient
+// (components/particle_light.h), in the records' order.
+#ifndef LIT
+#define LIT 0
+#endif
 layout(std430, binding = 0) readonly buffer ParticleRecords { vec4 records[]; };
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
+#if LIT
+layout(std430, binding = 2) readonly buffer OthersDepth { vec4 others_depth[]; };
+uniform vec3 u_toward_sun;
+flat out vec4 v_others_depth;
+flat out vec3 v_eye_offset;
+flat out vec3 v_sun_whitened;
+#endif
 
 uniform mat4 u_view_projection;
 uniform mat4 u_inverse_view_projection;
@@ -64,6 +76,11 @@ void main() {
   mat3 whitening = transpose(mat3(axis0 / scale.x, axis1 / scale.y, axis2 / scale.z));
   v_eye_whitened = whitening * (u_eye - centre);
   v_color_extinction = vec4(color, centre_extinction.w);
+#if LIT
+  v_others_depth = others_depth[particle];
+  v_eye_offset = u_eye - centre;
+  v_sun_whitened = whitening * u_toward_sun;
+#endif
 
   mat4 t = u_view_projection * mat4(vec4(axis0 * (kExtent * scale.x), 0.0), vec4(axis1 * (kExtent * scale.y), 0.0),
                                     vec4(axis2 * (kExtent * scale.z), 0.0), vec4(centre, 1.0));

@@ -34,21 +34,7 @@ flat in float v_view_cosine;  // mu, per particle
 flat in vec3 v_fire;          // the fire lights' scattered light, per particle (billboard.vert)
 uniform int u_octaves;        // 1: single scattering
 uniform vec4 u_scattering;    // Henyey-Greenstein g; the octaves' a, b, c
-#include "henyey_greenstein.glsl"
-
-// The sun's light scattered towards the eye per unit of sun colour (engine/math/scattering_octaves.h,
-// sun_scattering: the sum over octaves i of b^i 4 pi p_HG(mu, c^i g) exp(-a^i tau)). LIT 1 is
-// one isotropic octave, exp(-tau), without fire light.
-float sun_scattering(float mu, float tau) {
-  float sum = 0.0, a = 1.0, b = 1.0, g = u_scattering.x;
-  for (int i = 0; i < u_octaves; ++i) {
-    sum += b * 12.566370614359172 * henyey_greenstein(mu, g) * exp(-a * tau);
-    a *= u_scattering.y;
-    b *= u_scattering.z;
-    g *= u_scattering.w;
-  }
-  return sum;
-}
+#include "sun_scattering.glsl"
 #endif
 
 layout(binding = 0) uniform sampler2D u_kernel;

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "engine/core/user_error.h"
 #include "engine/io/durable_file.h"
 
@@ -159,6 +161,16 @@ ParticleFile read_particle_file(const std::string& path) {
   check_particles(path, f.particles);
   check_particles(path, f.anisotropic);
   return f;
+}
+
+double imported_albedo(const std::string& path, const ParticleFile& file) {
+  const nlohmann::json meta = nlohmann::json::parse(file.metadata_json, nullptr, false);
+  if (!meta.is_object()) throw UserError(path, "metadata", "a JSON object");
+  const auto albedo = meta.find("albedo");
+  if (albedo == meta.end()) return kImportAlbedoBeforeRecorded;
+  if (!albedo->is_number() || !(albedo->get<double>() >= 0.0 && albedo->get<double>() <= 1.0))
+    throw UserError(path, "metadata/albedo", "a number in [0, 1], found " + albedo->dump());
+  return albedo->get<double>();
 }
 
 }  // namespace pyro

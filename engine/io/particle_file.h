@@ -51,4 +51,12 @@ void write_particle_file(const std::string& path, const ParticleFile& file);
 // UserError(path, "particle I", why) for a value check_particles refuses.
 ParticleFile read_particle_file(const std::string& path);
 
+// The albedo of the medium the particles were imported from, which a lit scene relights them
+// with (their colours hold the import's lighting): the metadata's "albedo" (pyro import-vdb
+// writes it), else kImportAlbedoBeforeRecorded. Throws UserError(path, "metadata", why) when the
+// metadata is not a JSON object or its "albedo" is not a number in [0, 1].
+double imported_albedo(const std::string& path, const ParticleFile& file);
+// Every import written without an "albedo" was made with this one (the importer's default medium).
+inline constexpr double kImportAlbedoBeforeRecorded = 0.9;
+
 }  // namespace pyro

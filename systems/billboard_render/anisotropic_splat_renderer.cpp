@@ -35,6 +35,11 @@ std::vector<uint32_t> back_to_front_order(const std::vector<glm::vec3>& centres,
 AnisotropicSplatRenderer::AnisotropicSplatRenderer()
     : program_(gpu::load_program("anisotropic_splat.vert", "anisotropic_splat.frag")) {}
 
+const gpu::Program& AnisotropicSplatRenderer::lit_program() {
+  if (!lit_program_) lit_program_.emplace(gpu::load_program("anisotropic_splat.vert", "anisotropic_splat.frag", {"LIT 1"}));
+  return *lit_program_;
+}
+
 void AnisotropicSplatRenderer::upload(const std::vector<AnisotropicGaussian>& particles) {
   // Four vec4s per particle: centre and extinction, unit quaternion (x, y, z, w), scales, rgb.
   std::vector<glm::vec4> records(4 * particles.size());
@@ -53,8 +58,27 @@ void AnisotropicSplatRenderer::upload(const std::vector<AnisotropicGaussian>& pa
                     records.empty() ? nullptr : records.data(), GL_STATIC_DRAW);
 }
 
-void AnisotropicSplatRenderer::draw(const CameraFrame& frame, const gpu::RenderTarget& target) {
+void AnisotropicSplatRenderer::set_lighting(const AnisotropicLighting& lighting) {
+  std::vector<glm::vec4> depth = lighting.others_depth;
+  depth.resize(centres_.size(), glm::vec4(0.0f));
+  glNamedBufferData(others_depth_.get(), static_cast<GLsizeiptr>(depth.size() * sizeof(glm::vec4)), depth.data(),
+                    GL_STREAM_DRAW);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, others_depth_.get());
+  const gpu::Program& p = *lit_program_;
+  glUniform3fv(gpu::uniform_location(p, "u_toward_sun"), 1, glm::value_ptr(lighting.toward_sun));
+  glUniform3fv(gpu::uniform_location(p, "u_sun_color"), 1, glm::value_ptr(lighting.sun_color));
+  glUniform3fv(gpu::uniform_location(p, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
+  glUniform1f(gpu::uniform_location(p, "u_self_shadow"), lighting.self_shadow ? 1.0f : 0.0f);
+  const ScatteringOctaves& o = lighting.scattering.octaves;
+  glUniform1i(gpu::uniform_location(p, "u_octaves"), o.octaves);
+  glUniform4f(gpu::uniform_location(p, "u_scattering"), float(lighting.scattering.anisotropy), float(o.attenuation),
+              float(o.contribution), float(o.eccentricity));
+}
+
+void AnisotropicSplatRenderer::draw(const CameraFrame& frame, const gpu::RenderTarget& target,
+                                    const AnisotropicLighting* lighting) {
   if (centres_.empty()) return;
+  const gpu::Program& program = lighting ? lit_program() : program_;
   const std::vector<uint32_t> order = back_to_front_order(centres_, frame.eye);
   glNamedBufferData(order_.get(), static_cast<GLsizeiptr>(order.size() * sizeof(uint32_t)), order.data(),
                     GL_STREAM_DRAW);
@@ -62,18 +86,19 @@ void AnisotropicSplatRenderer::draw(const CameraFrame& frame, const gpu::RenderT
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, order_.get());
   target.bind();
   use_particle_blending();
-  glUseProgram(program_.get());
+  glUseProgram(program.get());
+  if (lighting) set_lighting(*lighting);
   const glm::mat4 inverse_vp(glm::inverse(glm::dmat4(frame.view_projection)));
-  glUniformMatrix4fv(gpu::uniform_location(program_, "u_view_projection"), 1, GL_FALSE,
+  glUniformMatrix4fv(gpu::uniform_location(program, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(frame.view_projection));
-  glUniformMatrix4fv(gpu::uniform_location(program_, "u_inverse_view_projection"), 1, GL_FALSE,
+  glUniformMatrix4fv(gpu::uniform_location(program, "u_inverse_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(inverse_vp));
-  glUniform3fv(gpu::uniform_location(program_, "u_eye"), 1, glm::value_ptr(frame.eye));
-  glUniform2f(gpu::uniform_location(program_, "u_pixel_ndc"), 2.0f / float(target.width()),
+  glUniform3fv(gpu::uniform_location(program, "u_eye"), 1, glm::value_ptr(frame.eye));
+  glUniform2f(gpu::uniform_location(program, "u_pixel_ndc"), 2.0f / float(target.width()),
               2.0f / float(target.height()));
   float erf_coefficients[6];
   for (int k = 0; k < 6; ++k) erf_coefficients[k] = float(kErfAs7126[k]);
-  glUniform1fv(gpu::uniform_location(program_, "u_erf"), 6, erf_coefficients);
+  glUniform1fv(gpu::uniform_location(program, "u_erf"), 6, erf_coefficients);
   glBindVertexArray(empty_vao_.get());  // no attributes: the shader pulls its instance
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(order.size()));
   glBindVertexArray(0);

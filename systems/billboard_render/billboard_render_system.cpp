@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "components/anisotropic_cloud.h"
+#include "components/particle_light.h"
 #include "components/draw_list.h"
 #include "components/explosion_shading.h"
 #include "components/frame_clock.h"
@@ -105,6 +106,29 @@ void draw_media(ecs::World& world, const EyeDrawLists& lists, const View& view, 
                     world.try_resource<const FireLights>());
 }
 
+// Lit media (a ShadowSettings resource): the anisotropic clouds' light, their ParticleLights
+// in the order make_anisotropic_pass uploaded the particles.
+std::optional<AnisotropicLighting> anisotropic_lighting(ecs::World& world) {
+  const ShadowSettings* shadows = world.try_resource<const ShadowSettings>();
+  if (!shadows) return std::nullopt;
+  const SceneLighting* lit = world.try_resource<const SceneLighting>();
+  const SceneLighting lighting = lit ? *lit : SceneLighting{};
+  AnisotropicLighting a;
+  if (glm::length(lighting.sun_direction) > 0.0f) a.toward_sun = -glm::normalize(lighting.sun_direction);
+  a.sun_color = lighting.directional_lights > 0 ? lighting.sun_color : glm::vec3(0.0f);
+  a.ambient = lighting.ambient;
+  a.self_shadow = shadows->method != ShadowMethod::none;
+  a.scattering = shadows->scattering;
+  world.each<const AnisotropicCloud>([&](ecs::Entity e, const AnisotropicCloud& c) {
+    const ParticleLight* light = world.try_get<const ParticleLight>(e);
+    const size_t start = a.others_depth.size();
+    a.others_depth.resize(start + c.particles.size(), glm::vec4(0.0f));
+    if (light && light->others_depth.size() == c.particles.size())
+      std::copy(light->others_depth.begin(), light->others_depth.end(), a.others_depth.begin() + long(start));
+  });
+  return a;
+}
+
 // After the other particles, into the target they were drawn into (a view's layer, prepared
 // by them, or its scene target).
 void draw_anisotropic_clouds(ecs::World& world, bool layers_prepared) {
@@ -113,10 +137,12 @@ void draw_anisotropic_clouds(ecs::World& world, bool layers_prepared) {
   const View& view = world.resource<const View>();
   GpuFrame& frame = world.resource<GpuFrame>();
   const size_t views = std::min(view.eyes.size(), frame.eyes.size());
+  const std::optional<AnisotropicLighting> lighting = anisotropic_lighting(world);
   for (size_t v = 0; v < views; ++v) {
     const gpu::GpuPassScope scope("anisotropic particles", true);  // profiling hook
     const EyeTargets& t = frame.eyes[v];
-    pass->renderer.draw(view.eyes[v], t.layer && layers_prepared ? *t.layer : *t.scene);
+    pass->renderer.draw(view.eyes[v], t.layer && layers_prepared ? *t.layer : *t.scene,
+                        lighting ? &*lighting : nullptr);
   }
 }
 
@@ -209,7 +235,8 @@ ecs::SystemDesc billboard_render_system() {
           .phase = ecs::Phase::render,
           .access = ecs::Access::of<
               ecs::Reads<EyeDrawLists, View, RenderSettings, SceneLighting, FrameClock,
-                         ExplosionShading, AnisotropicCloud, SortScratch, ShadowSettings, FireLights>,
+                         ExplosionShading, AnisotropicCloud, ParticleLight, SortScratch, ShadowSettings,
+                         FireLights>,
               ecs::Writes<GpuFrame, SortDeviceChoice>, Renderers>(),
           .run = draw_billboards,
           .setup = make_particle_renderer,

@@ -42,6 +42,12 @@ Placement placement_for(std::size_t n, Centre&& centre, const VolumeDescription&
   return p;
 }
 
+void use_albedo(ParticleFile& file, double albedo) {
+  const float a = float(albedo);
+  for (GaussianParticle& p : file.particles) p.r = p.g = p.b = a;
+  for (AnisotropicGaussian& g : file.anisotropic) g.color = glm::vec3(a);
+}
+
 }  // namespace
 
 void place_volume_particles(std::vector<GaussianParticle>& particles, const VolumeDescription& v) {
@@ -74,6 +80,9 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
   try {
     if (v.kind == VolumeFileKind::particles) {
       ParticleFile file = read_particle_file(v.path);
+      // Lit media ("shadows"): relit every frame from the medium's albedo, not the colours the
+      // import lit.
+      if (scene.shadows) use_albedo(file, imported_albedo(v.path, file));
       out.particles = std::move(file.particles);
       out.anisotropic = std::move(file.anisotropic);
     } else {

@@ -6,6 +6,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "components/anisotropic_cloud.h"
 #include "components/fire_lights.h"
 #include "components/flipbook_emission.h"
 #include "components/flipbook_fire.h"
@@ -118,7 +119,8 @@ ecs::SystemDesc fire_light_system() {
   return {.name = "fire_lights",
           .phase = ecs::Phase::light,
           .access = ecs::Access::of<ecs::Reads<ShadowSettings, RenderSettings, ExplosionShading, ParticleSet,
-                                               ParticleLight, FlipbookFire, FlipbookEmission, FrameClock>,
+                                               AnisotropicCloud, ParticleLight, FlipbookFire,
+                                               FlipbookEmission, FrameClock>,
                                     ecs::Writes<FireLights, FireEmissionCache>>(),
           .run = run_fire_lights,
           .setup =

@@ -106,12 +106,13 @@ void add_lights(ecs::World& world, const SceneDescription& scene) {
 }
 
 // Lit media (a "shadows" block): the light phase's settings, and a ParticleLight beside every
-// particle set for it to write.
+// particle set and anisotropic cloud for it to write.
 void add_shadowing(ecs::World& world, const SceneDescription& scene) {
   if (!scene.shadows) return;
   world.set_resource<ShadowSettings>(*scene.shadows);
   std::vector<ecs::Entity> sets;
   world.each<const ParticleSet>([&](ecs::Entity e, const ParticleSet&) { sets.push_back(e); });
+  world.each<const AnisotropicCloud>([&](ecs::Entity e, const AnisotropicCloud&) { sets.push_back(e); });
   for (const ecs::Entity e : sets) world.emplace<ParticleLight>(e);
 }
 

@@ -10,6 +10,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "components/anisotropic_cloud.h"
 #include "components/mesh_instance.h"
 #include "components/particle_light.h"
 #include "components/particle_set.h"
@@ -59,6 +60,19 @@ ShadowCaster caster_of(const ParticlePool& p, std::size_t i, bool spheres) {
 
 }  // namespace
 
+namespace {
+
+// The world's lit anisotropic clouds in entity-index order.
+std::vector<std::pair<uint32_t, std::pair<const AnisotropicCloud*, ParticleLight*>>> lit_clouds(ecs::World& world) {
+  std::vector<std::pair<uint32_t, std::pair<const AnisotropicCloud*, ParticleLight*>>> clouds;
+  world.each<const AnisotropicCloud, ParticleLight>(
+      [&](ecs::Entity e, const AnisotropicCloud& c, ParticleLight& l) { clouds.push_back({e.index, {&c, &l}}); });
+  std::sort(clouds.begin(), clouds.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  return clouds;
+}
+
+}  // namespace
+
 std::vector<ShadowCaster> shadow_casters(ecs::World& world) {
   const bool spheres = sphere_casters(world);
   // The lit sets in entity-index order, read only.
@@ -72,52 +86,78 @@ std::vector<ShadowCaster> shadow_casters(ecs::World& world) {
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.density[i] > 0.0f) casters.push_back(caster_of(p, i, spheres));
   }
+  // Then the anisotropic clouds', in entity-index order.
+  std::vector<std::pair<uint32_t, const AnisotropicCloud*>> clouds;
+  world.each<const AnisotropicCloud, const ParticleLight>(
+      [&](ecs::Entity e, const AnisotropicCloud& c, const ParticleLight&) { clouds.push_back({e.index, &c}); });
+  std::sort(clouds.begin(), clouds.end());
+  for (const auto& [index, cloud] : clouds)
+    for (const AnisotropicGaussian& g : cloud->particles)
+      if (g.extinction > 0.0f) casters.emplace_back(g);
   return casters;
 }
 
 namespace {
 
-// Particle i's light from `depth(p)`, the optical depth toward the sun at p of every particle:
-// that of the others at its centre and its gradient (central differences a third of its radius
-// apart: a Gaussian's standard deviation), its own closed form taken out.
+// A particle's light from `depth(p)`, the optical depth toward the sun at p of every particle:
+// that of the others at its centre and its gradient (central differences `h` apart, about a
+// standard deviation), its own closed form (`self`) taken out.
 template <class Depth>
-void light_particle(const ParticlePool& p, std::size_t i, bool spheres, const glm::dvec3& toward_sun,
-                    Depth&& depth, ParticleLight& light) {
-  const ShadowCaster self = caster_of(p, i, spheres);
+glm::vec4 particle_light(const ShadowCaster& self, double h, const glm::dvec3& toward_sun, Depth&& depth) {
   const glm::dvec3 c = self.c;
   const auto others = [&](const glm::dvec3& x) {
     return depth(x) - caster_optical_depth(self, x, toward_sun, 0.0, std::numeric_limits<double>::infinity());
   };
   glm::vec4 o(float(others(c)), 0.0f, 0.0f, 0.0f);
-  const double h = std::max(double(p.radius[i]) / 3.0, 1e-6);
+  h = std::max(h, 1e-6);
   for (int a = 0; a < 3; ++a) {
     glm::dvec3 e(0.0);
     e[a] = h;
     o[a + 1] = float((others(c + e) - others(c - e)) / (2.0 * h));
   }
-  light.others_depth[i] = o;
+  return o;
 }
 
-// Lights every particle from `depth` (see light_particle), set by set in entity-index order.
+// An anisotropic particle's standard deviation for the gradient: the geometric mean of its scales.
+double mean_scale(const AnisotropicGaussian& g) {
+  return std::cbrt(double(g.scale.x) * double(g.scale.y) * double(g.scale.z));
+}
+
+// Lights every particle from `depth` (see particle_light), set by set in entity-index order, then
+// the anisotropic clouds.
 template <class Depth>
 void write_particle_light(ecs::World& world, const glm::vec3& sun_direction, Depth&& depth) {
   const glm::dvec3 toward_sun = -glm::normalize(glm::dvec3(sun_direction));
   const bool spheres = sphere_casters(world);
+  const auto each_particle = [](std::size_t n, auto&& light) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kParticlesPerTask),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i < r.end(); ++i) light(i);
+                      });
+  };
   for (const auto& [index, set] : lit_sets(world)) {
     const ParticlePool& p = *set.first;
     ParticleLight& light = *set.second;
     light.others_depth.resize(p.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), kParticlesPerTask),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i < r.end(); ++i)
-                          light_particle(p, i, spheres, toward_sun, depth, light);
-                      });
+    each_particle(p.size(), [&](std::size_t i) {
+      light.others_depth[i] = particle_light(caster_of(p, i, spheres), double(p.radius[i]) / 3.0, toward_sun, depth);
+    });
+  }
+  for (const auto& [index, cloud] : lit_clouds(world)) {
+    const std::vector<AnisotropicGaussian>& gs = cloud.first->particles;
+    ParticleLight& light = *cloud.second;
+    light.others_depth.resize(gs.size());
+    each_particle(gs.size(), [&](std::size_t i) {
+      light.others_depth[i] = particle_light(ShadowCaster(gs[i]), mean_scale(gs[i]), toward_sun, depth);
+    });
   }
 }
 
 // Lit without shadows: no other particle stands between any particle and the sun.
 void write_unshadowed_light(ecs::World& world) {
   for (const auto& [index, set] : lit_sets(world)) set.second->others_depth.assign(set.first->size(), glm::vec4(0.0f));
+  for (const auto& [index, cloud] : lit_clouds(world))
+    cloud.second->others_depth.assign(cloud.first->particles.size(), glm::vec4(0.0f));
 }
 
 const SceneLighting& lighting_of(ecs::World& world) {
@@ -169,7 +209,8 @@ void run_shadow_rays(ecs::World& world) {
 ecs::SystemDesc shadow_map_system() {
   return {.name = "shadow_map",
           .phase = ecs::Phase::light,
-          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, RenderSettings, ParticleSet, MeshInstance>,
+          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, RenderSettings, ParticleSet, AnisotropicCloud,
+                                               MeshInstance>,
                                     ecs::Writes<ShadowVolume, ParticleLight>>(),
           .run = run_shadow_map,
           .setup =
@@ -182,7 +223,7 @@ ecs::SystemDesc shadow_map_system() {
 ecs::SystemDesc shadow_ray_system() {
   return {.name = "shadow_rays",
           .phase = ecs::Phase::light,
-          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, RenderSettings, ParticleSet>,
+          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, RenderSettings, ParticleSet, AnisotropicCloud>,
                                     ecs::Writes<ParticleLight>>(),
           .run = run_shadow_rays,
           .after = {"shadow_map"}};

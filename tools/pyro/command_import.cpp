@@ -71,7 +71,8 @@ void finish_import(const ImportArgs& a, const GridHeader& grid, ParticleFile pf,
                    double read_seconds) {
   pf.metadata_json = nlohmann::json{{"source", a.file},        {"grid", grid.name},
                                     {"grid_index", grid.file_index}, {"error_target", a.error},
-                                    {"extinction", summary["extinction"]}, {"rmse", summary["rmse"]},
+                                    {"extinction", summary["extinction"]}, {"albedo", summary["albedo"]},
+                                    {"rmse", summary["rmse"]},
                                     {"rmse_views_max", summary["rmse_views_max"]},
                                     {"target_met", summary["target_met"]}, {"active_voxels", grid.active_voxels}}
                          .dump();

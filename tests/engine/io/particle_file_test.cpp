@@ -168,5 +168,27 @@ TEST(ParticleFile, EveryBadValueIsRefusedNamingTheParticle) {
   EXPECT_EQ(read_particle_file(path.string()).anisotropic.size(), 2u);
 }
 
+// The albedo a lit scene relights an import with: the metadata's, else the one every import was
+// made with before it was recorded; malformed metadata is refused by name.
+TEST(ParticleFile, TheImportedAlbedoComesFromTheMetadata) {
+  ParticleFile f;
+  f.metadata_json = R"({"source": "a.vdb", "albedo": 0.7})";
+  EXPECT_DOUBLE_EQ(imported_albedo("a.pyrop", f), 0.7);
+  f.metadata_json = R"({"source": "a.vdb"})";
+  EXPECT_DOUBLE_EQ(imported_albedo("a.pyrop", f), kImportAlbedoBeforeRecorded);
+  for (const char* bad : {R"({"albedo": 1.5})", R"({"albedo": "grey"})", R"({"albedo": -0.1})"}) {
+    f.metadata_json = bad;
+    try {
+      imported_albedo("a.pyrop", f);
+      ADD_FAILURE() << bad;
+    } catch (const UserError& e) {
+      EXPECT_NE(std::string(e.what()).find("metadata/albedo"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("a.pyrop"), std::string::npos) << e.what();
+    }
+  }
+  f.metadata_json = "not json";
+  EXPECT_THROW(imported_albedo("a.pyrop", f), UserError);
+}
+
 }  // namespace
 }  // namespace pyro

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/user_error.h"
+#include "components/volume_medium.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/io/vdb_resampled_volume.h"
@@ -178,6 +179,9 @@ TEST(ImportVdbCli, SmallVolumeImportsAndTheParticleFileReadsBack) {
   EXPECT_EQ(j["error_target"], 0.03);
   EXPECT_EQ(j["target_met"].get<bool>(), j["rmse_views_max"].get<double>() <= 0.03);
   EXPECT_GE(j["rmse_views_max"].get<double>(), j["rmse_views_mean"].get<double>());
+  // What relighting needs beside each particle's extinction: the medium's albedo, recorded.
+  EXPECT_EQ(nlohmann::json::parse(f.metadata_json)["albedo"], j["albedo"]);
+  EXPECT_DOUBLE_EQ(imported_albedo(out.string(), f), VolumeMedium{}.albedo);
   // A target it cannot reach is said on stderr and in the JSON, and the file is still written.
   const fs::path strict_out = dir / "strict.pyrop";
   const auto strict = test::run_pyro({"import-vdb", path, "--out", strict_out.string(), "--json", "--width",
