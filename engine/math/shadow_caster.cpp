@@ -1,7 +1,7 @@
 #include "engine/math/shadow_caster.h"
 
 #include <algorithm>
-#include <limits>
+#include <cmath>
 
 namespace pyro {
 
@@ -36,7 +36,11 @@ bool caster_span(const ShadowCaster& caster, const glm::dvec3& o, const glm::dve
 
 double CasterRayProfile::cumulative(double t) const {
   if (shape == CasterShape::gaussian) return gaussian.cumulative(t);
-  if (shape == CasterShape::ellipsoid) return ellipsoid.depth(-std::numeric_limits<double>::infinity(), t);
+  if (shape == CasterShape::ellipsoid) {  // ellipsoid.depth(-infinity, t), its entry's erf kept
+    if (!ellipsoid.hit || !(t > ellipsoid.t_enter)) return 0.0;
+    const double hi = std::min(t, ellipsoid.t_exit);
+    return ellipsoid.peak * (std::erf(ellipsoid.rate * (hi - ellipsoid.t_closest)) - ellipsoid_entry_erf);
+  }
   return extinction * (std::clamp(t, enter, leave) - enter);
 }
 
@@ -47,6 +51,7 @@ CasterRayProfile caster_ray_profile(const ShadowCaster& caster, const glm::dvec3
     p.gaussian = gaussian_ray_profile(caster.gaussian(), o, w);
   } else if (caster.shape == CasterShape::ellipsoid) {
     p.ellipsoid = caster.ellipsoid(o, w);
+    p.ellipsoid_entry_erf = std::erf(p.ellipsoid.rate * (p.ellipsoid.t_enter - p.ellipsoid.t_closest));
   } else if (!sphere_chord(caster.sphere(), o, w, p.enter, p.leave, p.extinction)) {
     p.enter = p.leave = p.extinction = 0.0;
   }

@@ -50,6 +50,7 @@ struct CasterRayProfile {
   CasterShape shape = CasterShape::gaussian;
   GaussianRayProfile gaussian;
   AnisotropicRaySegment ellipsoid;
+  double ellipsoid_entry_erf = 0.0;  // erf(rate (t_enter - t_closest)), the same for every t
   double enter = 0.0, leave = 0.0, extinction = 0.0;  // sphere
   double cumulative(double t) const;
 };

@@ -9,6 +9,7 @@
 
 #include "engine/core/user_error.h"
 #include "engine/io/vdb_reader.h"
+#include "systems/benchmarks/fitted_import.h"
 #include "systems/benchmarks/relit_particles.h"
 #include "systems/benchmarks/sun_directions.h"
 #include "systems/cloud_import/cloud_import.h"
@@ -25,11 +26,36 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-SceneRuntime relight_runtime(const std::vector<GaussianParticle>& particles, const VolumeMedium& medium,
+// The grid's particles, imported once: the octree's isotropic ones, or the fitted anisotropic ones
+// (`baked`: as imported, lit for the default sun; `fitted`: the same with the albedo for colour).
+struct RelightParticles {
+  std::vector<GaussianParticle> isotropic;
+  std::vector<AnisotropicGaussian> baked, fitted;
+  std::size_t size() const { return isotropic.size() + fitted.size(); }
+};
+
+RelightParticles import_particles(const DenseGrid& grid, const VolumeMedium& medium, const RelightBenchOptions& o) {
+  RelightParticles p;
+  if (!o.fitted) {
+    p.isotropic = import_keeping_albedo(grid, medium.extinction, medium.albedo, o.error);
+    return p;
+  }
+  // As pyro import-vdb fits them: its seven views, at the frames' size up to its default 256.
+  const VdbImportReference reference =
+      make_vdb_import_reference(grid, std::min(o.width, 256), std::min(o.height, 256), true);
+  p.baked = import_to_target(grid, o.error, reference).best.fitted;
+  p.fitted = p.baked;
+  for (AnisotropicGaussian& g : p.fitted) g.color = glm::vec3(float(reference.medium.albedo));
+  return p;
+}
+
+SceneRuntime relight_runtime(const RelightParticles& particles, const VolumeMedium& medium,
                              const CameraDescription& camera, const RelightBenchOptions& o, bool lit,
                              bool readback) {
-  return relit_particles_runtime(particles, medium, {camera, o.width, o.height, readback},
-                                 lit ? std::optional<ShadowSettings>(o.shadows) : std::nullopt);
+  const RelitView view{camera, o.width, o.height, readback};
+  const std::optional<ShadowSettings> shadows = lit ? std::optional<ShadowSettings>(o.shadows) : std::nullopt;
+  if (!o.fitted) return relit_particles_runtime(particles.isotropic, medium, view, shadows);
+  return relit_particles_runtime(lit ? particles.fitted : particles.baked, medium, view, shadows);
 }
 
 // Seconds for frames [first, first + count) (the GPU finished each), the sun turning every frame
@@ -76,8 +102,7 @@ nlohmann::json bench_relight(const RelightBenchOptions& o) {
   auto t = std::chrono::steady_clock::now();
   VolumeMedium medium;  // the reference's: the default albedo, sun and ambient light
   medium.extinction = default_extinction(grid);
-  const std::vector<GaussianParticle> particles =
-      import_keeping_albedo(grid, medium.extinction, medium.albedo, o.error);
+  const RelightParticles particles = import_particles(grid, medium, o);
   const double import_seconds = seconds_since(t);
   const CameraDescription camera = framing_camera(grid);
 
@@ -106,6 +131,7 @@ nlohmann::json bench_relight(const RelightBenchOptions& o) {
   progress.finish();
   return {{"file", o.file},
           {"particles", particles.size()},
+          {"kind", o.fitted ? "fitted" : "isotropic"},
           {"width", o.width},
           {"height", o.height},
           {"shadows", {{"method", name_of(o.shadows.method)}, {"map_size", o.shadows.map_size},

@@ -11,8 +11,10 @@
 
 namespace pyro {
 
-SceneRuntime relit_particles_runtime(const std::vector<GaussianParticle>& particles, const VolumeMedium& medium,
-                                     const RelitView& view, const std::optional<ShadowSettings>& shadows) {
+namespace {
+
+SceneRuntime relit_runtime(VolumeAsset volume, const VolumeMedium& medium, const RelitView& view,
+                           const std::optional<ShadowSettings>& shadows) {
   SceneDescription scene;
   scene.camera = view.camera;
   scene.background = glm::vec3(medium.background);
@@ -26,8 +28,20 @@ SceneRuntime relit_particles_runtime(const std::vector<GaussianParticle>& partic
   ro.height_override = view.height;
   const ResolvedScene resolved = resolve_scene(scene, ro, std::numeric_limits<int>::max());
   SceneAssets assets;
-  assets.volumes.push_back({to_particle_pool(particles), {}, {}});
+  assets.volumes.push_back(std::move(volume));
   return SceneRuntime(resolved, std::move(assets), ro);
+}
+
+}  // namespace
+
+SceneRuntime relit_particles_runtime(const std::vector<GaussianParticle>& particles, const VolumeMedium& medium,
+                                     const RelitView& view, const std::optional<ShadowSettings>& shadows) {
+  return relit_runtime({to_particle_pool(particles), {}, {}}, medium, view, shadows);
+}
+
+SceneRuntime relit_particles_runtime(const std::vector<AnisotropicGaussian>& particles, const VolumeMedium& medium,
+                                     const RelitView& view, const std::optional<ShadowSettings>& shadows) {
+  return relit_runtime({ParticlePool(0), particles, {}}, medium, view, shadows);
 }
 
 std::vector<GaussianParticle> import_keeping_albedo(const DenseGrid& grid, double extinction, double albedo,

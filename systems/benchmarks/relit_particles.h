@@ -10,6 +10,7 @@
 #include "components/shadow_settings.h"
 #include "components/volume_medium.h"
 #include "engine/io/vdb_reader.h"
+#include "engine/particles/anisotropic_gaussian.h"
 #include "engine/particles/gaussian_particle.h"
 #include "systems/scene/scene_description.h"
 #include "systems/scene_runtime/scene_runtime.h"
@@ -23,6 +24,9 @@ struct RelitView {
 };
 
 SceneRuntime relit_particles_runtime(const std::vector<GaussianParticle>& particles, const VolumeMedium& medium,
+                                     const RelitView& view, const std::optional<ShadowSettings>& shadows);
+// The same for fitted anisotropic particles (an AnisotropicCloud; unlit, drawn in their colours).
+SceneRuntime relit_particles_runtime(const std::vector<AnisotropicGaussian>& particles, const VolumeMedium& medium,
                                      const RelitView& view, const std::optional<ShadowSettings>& shadows);
 
 // The grid imported as a lit scene imports its volumes (systems/cloud_import/scene_volume.cpp):

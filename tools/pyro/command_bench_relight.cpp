@@ -1,4 +1,4 @@
-// pyro bench relight FILE [--directions N] [--error E] [--grid NAME] [--width W] [--height H]
+// pyro bench relight FILE [--fitted] [--directions N] [--error E] [--grid NAME] [--width W] [--height H]
 //                         [--frames N] [--shadows map|rays|none] [--json]
 // An OpenVDB grid imported once and relit from N sun directions by the light phase
 // (systems/benchmarks/bench_relight.h).
@@ -55,6 +55,8 @@ void add_bench_relight_command(CLI::App& bench) {
   cmd->add_option("--frames", o.frames, "Timed frames, relit and unlit (default 16)")->check(CLI::Range(1, 100000));
   add_enum_option<ShadowMethod>(
       cmd, "--shadows", [&o](ShadowMethod m) { o.shadows.method = m; }, "Shadow method (default: map)");
+  cmd->add_flag("--fitted", o.fitted,
+                "Relight the anisotropic Gaussians import-vdb fits, instead of the octree's isotropic particles");
   cmd->add_flag("--json", args->json, "Print a JSON summary");
   cmd->callback([args] { run_bench_relight(args->options, args->json); });
 }
