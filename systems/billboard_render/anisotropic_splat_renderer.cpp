@@ -12,6 +12,7 @@
 #include "engine/gpu/shader_program.h"
 #include "engine/math/anisotropic_optical_depth.h"
 #include "systems/billboard_render/particle_blending.h"
+#include "systems/billboard_render/sun_uniforms.h"
 
 namespace pyro {
 
@@ -64,15 +65,8 @@ void AnisotropicSplatRenderer::set_lighting(const AnisotropicLighting& lighting)
   glNamedBufferData(others_depth_.get(), static_cast<GLsizeiptr>(depth.size() * sizeof(glm::vec4)), depth.data(),
                     GL_STREAM_DRAW);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, others_depth_.get());
-  const gpu::Program& p = *lit_program_;
-  glUniform3fv(gpu::uniform_location(p, "u_toward_sun"), 1, glm::value_ptr(lighting.toward_sun));
-  glUniform3fv(gpu::uniform_location(p, "u_sun_color"), 1, glm::value_ptr(lighting.sun_color));
-  glUniform3fv(gpu::uniform_location(p, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
-  glUniform1f(gpu::uniform_location(p, "u_self_shadow"), lighting.self_shadow ? 1.0f : 0.0f);
-  const ScatteringOctaves& o = lighting.scattering.octaves;
-  glUniform1i(gpu::uniform_location(p, "u_octaves"), o.octaves);
-  glUniform4f(gpu::uniform_location(p, "u_scattering"), float(lighting.scattering.anisotropy), float(o.attenuation),
-              float(o.contribution), float(o.eccentricity));
+  set_sun_uniforms(*lit_program_, lighting.toward_sun, lighting.sun_color, lighting.ambient, lighting.self_shadow,
+                   lighting.scattering);
 }
 
 void AnisotropicSplatRenderer::draw(const CameraFrame& frame, const gpu::RenderTarget& target,

@@ -15,6 +15,7 @@
 #include "engine/math/gaussian_line_integral.h"
 #include "systems/billboard_render/particle_blending.h"
 #include "systems/billboard_render/parallel_copy.h"
+#include "systems/billboard_render/sun_uniforms.h"
 
 namespace pyro {
 
@@ -159,14 +160,8 @@ const gpu::Program& BillboardRenderer::lit_program(const SplatLighting& lighting
 
 void BillboardRenderer::set_lighting_uniforms(const SplatLighting& lighting) const {
   const gpu::Program& program = lit_program(lighting);
-  glUniform3fv(gpu::uniform_location(program, "u_toward_sun"), 1, glm::value_ptr(lighting.toward_sun));
-  glUniform3fv(gpu::uniform_location(program, "u_sun_color"), 1, glm::value_ptr(lighting.sun_color));
-  glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
-  glUniform1f(gpu::uniform_location(program, "u_self_shadow"), lighting.self_shadow ? 1.0f : 0.0f);
-  const ScatteringOctaves& o = lighting.scattering.octaves;
-  glUniform1i(gpu::uniform_location(program, "u_octaves"), o.octaves);
-  glUniform4f(gpu::uniform_location(program, "u_scattering"), float(lighting.scattering.anisotropy),
-              float(o.attenuation), float(o.contribution), float(o.eccentricity));
+  set_sun_uniforms(program, lighting.toward_sun, lighting.sun_color, lighting.ambient, lighting.self_shadow,
+                   lighting.scattering);
   const int fires = lighting.fire ? std::min(int(lighting.fire->lights.size()), kMaxFireLights) : 0;
   glUniform1i(gpu::uniform_location(program, "u_fire_light_count"), fires);
   for (int j = 0; j < fires; ++j) {
