@@ -47,7 +47,8 @@ ChartTable chart_billboard_modes(const BillboardModesChartOptions& options);
 // The shadow methods (systems/shadowing: none, rays, the map at each size) on lit scenes, against
 // the CPU reference with exact shadows.
 struct ShadowsChartOptions {
-  std::vector<std::string> scenes;  // empty: clouds and fog from content/scenes, with shadows on
+  std::vector<std::string> scenes;  // empty: clouds, fog and cloud_fitted from content/scenes, with
+                                    // shadows on (a lit scene keeps its lobe and octaves)
   std::vector<int> map_sizes{16, 32, 64, 128, 256};
   int width = 160, height = 120;
   int frames = 5;  // timed frames per setting
