@@ -41,10 +41,6 @@ bool sunlit(const SceneLighting& lighting) {
   return lighting.directional_lights > 0 && glm::length(lighting.sun_direction) > 0.0f;
 }
 
-}  // namespace
-
-namespace {
-
 bool sphere_casters(ecs::World& world) {
   const RenderSettings* settings = world.try_resource<const RenderSettings>();
   return settings && settings->media_layers();
@@ -57,10 +53,6 @@ ShadowCaster caster_of(const ParticlePool& p, std::size_t i, bool spheres) {
   if (spheres) return ConeSphere{c, p.radius[i], double(density) * p.opacity[i]};
   return clamped_gaussian(c, p.radius[i], density);
 }
-
-}  // namespace
-
-namespace {
 
 // The world's lit anisotropic clouds in entity-index order.
 std::vector<std::pair<uint32_t, std::pair<const AnisotropicCloud*, ParticleLight*>>> lit_clouds(ecs::World& world) {
