@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
-#include <stdexcept>
 
 #include "components/anisotropic_cloud.h"
 #include "components/fire_lights.h"
@@ -16,6 +15,7 @@
 #include "components/shadow_settings.h"
 #include "components/view.h"
 #include "engine/core/sample_statistics.h"
+#include "engine/core/user_error.h"
 #include "engine/ecs/world.h"
 #include "systems/reference/anisotropic_reference.h"
 #include "systems/reference/lit_particle_reference.h"
@@ -88,8 +88,9 @@ std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, i
     const ParticlePool pool = gather_particles(particles.world());
     const std::vector<AnisotropicGaussian> fitted = anisotropic_particles(particles.world());
     if (!fitted.empty() && pool.size() > 0)
-      throw std::invalid_argument("particle_scene_references: the reference holds isotropic or anisotropic "
-                                  "Gaussians, not both");
+      throw UserError(scene.file.empty() ? "scene" : scene.file, "/volumes",
+                      "one kind of Gaussian for the CPU reference (the quality picker's and the charts' truth): "
+                      "isotropic particles or a fitted (version 2) particle file, found both");
     if (!sunless) {
       images.push_back(fitted.empty() ? render_particles_reference_over(pool, camera, behind, stop)
                                       : render_anisotropic_reference_over(fitted, camera, behind, stop));

@@ -40,7 +40,7 @@ class QualityGroundTruth {
 // The CPU reference images of `frames` (ascending) of a Gaussian particle scene (mono, width x
 // height): the exact particles over the GL-rendered opaque scene, lit with exact shadows when the
 // scene's media are lit (systems/reference/lit_particle_reference.h; fitted anisotropic particles:
-// anisotropic_reference.h). A scene holding both kinds of Gaussian throws std::invalid_argument.
+// anisotropic_reference.h). A scene holding both kinds of Gaussian throws UserError naming it.
 std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, int width, int height,
                                                 const std::vector<int>& frames);
 

@@ -13,6 +13,7 @@
 
 #include "components/anisotropic_cloud.h"
 #include "components/directional_light.h"
+#include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "systems/quality_picker/quality_measurement.h"
 #include "systems/reference/world_snapshot.h"
@@ -139,6 +140,29 @@ TEST(LitFittedParticle, AFlatParticleShadowsItselfAcrossItsFace) {
   // Shaded at the densest point of each pixel's ray alone, 0.0083 (the core's depth for all of
   // it); averaged over the density, 0.0015.
   EXPECT_LE(e, 0.004);
+}
+
+// The reference traces one kind of Gaussian: a scene with isotropic and fitted particles is
+// refused by name rather than measured against a truth that leaves some of them out.
+TEST(LitFittedParticle, TheReferenceRefusesAMixOfBothKinds) {
+  const std::filesystem::path dir = test::scratch_dir("lit_mixed_particles");
+  ParticleFile fitted, isotropic;
+  AnisotropicGaussian g;
+  g.extinction = 2.0f;
+  fitted.anisotropic.push_back(g);
+  isotropic.particles.push_back(GaussianParticle{0.5f, 0.0f, 0.0f, 0.3f, 0.4f, 0.8f, 0.8f, 0.8f});
+  write_particle_file((dir / "fitted.pyrop").string(), fitted);
+  write_particle_file((dir / "isotropic.pyrop").string(), isotropic);
+  const std::string path = (dir / "mixed.json").string();
+  std::ofstream(path) << R"({"output": {"width": 32, "height": 24}, "shadows": {},
+      "volumes": [{"file": "fitted.pyrop", "anchor": "origin"}, {"file": "isotropic.pyrop", "anchor": "origin"}]})";
+  try {
+    particle_scene_references(load_scene(path), 32, 24, {0});
+    ADD_FAILURE() << "a mix of both kinds was measured";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("mixed.json"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("found both"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
