@@ -17,6 +17,11 @@ AnisotropicRaySegment ShadowCaster::ellipsoid(const glm::dvec3& o, const glm::dv
   return anisotropic_ray_segment(m, m * (o - c), k, w);
 }
 
+void append_casters(const std::vector<AnisotropicGaussian>& particles, std::vector<ShadowCaster>& casters) {
+  for (const AnisotropicGaussian& g : particles)
+    if (g.extinction > 0.0f) casters.emplace_back(g);
+}
+
 double caster_reach(const ShadowCaster& caster) {
   return caster.shape == CasterShape::gaussian ? kGaussianCubeReach * caster.size : caster.size;
 }

@@ -5,6 +5,7 @@
 // (fitted imports; engine/math/anisotropic_optical_depth.h). The light phase's shadow maps and
 // shadow rays integrate all three along a ray through the same few calls.
 #include <cstdint>
+#include <vector>
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
@@ -35,6 +36,9 @@ struct ShadowCaster {
   // An ellipsoid's line o + t w (|w| = 1) through it.
   AnisotropicRaySegment ellipsoid(const glm::dvec3& o, const glm::dvec3& w) const;
 };
+
+// Appends the particles with extinction > 0 to `casters`, as ellipsoids.
+void append_casters(const std::vector<AnisotropicGaussian>& particles, std::vector<ShadowCaster>& casters);
 
 // How far the caster reaches from its centre in any direction: a Gaussian's cube half-diagonal
 // (kGaussianCubeReach s), a sphere's radius, an ellipsoid's longest semi-axis.

@@ -60,10 +60,14 @@ void AnisotropicSplatRenderer::upload(const std::vector<AnisotropicGaussian>& pa
 }
 
 void AnisotropicSplatRenderer::set_lighting(const AnisotropicLighting& lighting) {
-  std::vector<glm::vec4> depth = lighting.others_depth;
-  depth.resize(centres_.size(), glm::vec4(0.0f));
-  glNamedBufferData(others_depth_.get(), static_cast<GLsizeiptr>(depth.size() * sizeof(glm::vec4)), depth.data(),
+  // The particles past the given depths are unshadowed by others: the buffer is zeroed, then
+  // the given part copied in (no copy of the frame's depths on the CPU).
+  const std::size_t given = std::min(lighting.others_depth.size(), centres_.size());
+  glNamedBufferData(others_depth_.get(), static_cast<GLsizeiptr>(centres_.size() * sizeof(glm::vec4)), nullptr,
                     GL_STREAM_DRAW);
+  if (given < centres_.size()) glClearNamedBufferData(others_depth_.get(), GL_RGBA32F, GL_RGBA, GL_FLOAT, nullptr);
+  glNamedBufferSubData(others_depth_.get(), 0, static_cast<GLsizeiptr>(given * sizeof(glm::vec4)),
+                       lighting.others_depth.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, others_depth_.get());
   set_sun_uniforms(*lit_program_, lighting.toward_sun, lighting.sun_color, lighting.ambient, lighting.self_shadow,
                    lighting.scattering);

@@ -135,8 +135,7 @@ RgbImage render_anisotropic_reference_over(const std::vector<AnisotropicGaussian
 
 std::vector<ShadowCaster> anisotropic_casters(const std::vector<AnisotropicGaussian>& particles) {
   std::vector<ShadowCaster> casters;
-  for (const AnisotropicGaussian& g : particles)
-    if (g.extinction > 0.0f) casters.emplace_back(g);
+  append_casters(particles, casters);
   return casters;
 }
 

@@ -83,9 +83,7 @@ std::vector<ShadowCaster> shadow_casters(ecs::World& world) {
   world.each<const AnisotropicCloud, const ParticleLight>(
       [&](ecs::Entity e, const AnisotropicCloud& c, const ParticleLight&) { clouds.push_back({e.index, &c}); });
   std::sort(clouds.begin(), clouds.end());
-  for (const auto& [index, cloud] : clouds)
-    for (const AnisotropicGaussian& g : cloud->particles)
-      if (g.extinction > 0.0f) casters.emplace_back(g);
+  for (const auto& [index, cloud] : clouds) append_casters(cloud->particles, casters);
   return casters;
 }
 
