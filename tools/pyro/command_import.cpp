@@ -23,7 +23,9 @@
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/volume/sparse_grid.h"
+#include "systems/cloud_import/vdb_sequence_members.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/import_sequence.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"
 #include "systems/benchmarks/fitted_import.h"
@@ -40,6 +42,8 @@ struct ImportArgs {
   int samples = 256;  // the path-traced truth's paths per pixel (grids too large for a dense box)
   bool json = false;
   bool list = false;
+  double fps = 24.0;        // sequences: the source's frames per second
+  double extinction = 0.0;  // sequences: 0 is automatic
 };
 
 // --list: what the file holds, one grid a line (or a JSON array), nothing written.
@@ -121,6 +125,14 @@ void check_destination(const ImportArgs& a) {
 }
 
 void run_import(const ImportArgs& a) {
+  // An animated sequence (a printf pattern, a glob or a folder): tools/pyro/import_sequence.h.
+  if (names_vdb_sequence(a.file)) {
+    if (a.list)
+      throw UserError(a.file, "--list", "one OpenVDB file to list, found " +
+                                            (std::filesystem::is_directory(a.file) ? std::string("a folder (a sequence)")
+                                                                                   : std::string("a sequence pattern")));
+    return run_sequence_import({a.file, a.out, {a.grid, a.grid_index}, a.error, a.extinction, a.fps, a.json});
+  }
   if (const std::string kind = non_regular_file_kind(a.file); !kind.empty())
     throw UserError(a.file, "", "expected an OpenVDB file, found " + kind);
   if (a.list) {
@@ -172,17 +184,27 @@ void run_import(const ImportArgs& a) {
 void add_import_command(CLI::App& app) {
   auto args = std::make_shared<ImportArgs>();
   CLI::App* cmd = app.add_subcommand("import-vdb", "Import an OpenVDB density grid as Gaussian particles");
-  cmd->add_option("file", args->file, "OpenVDB file (.vdb)")->required();
+  cmd->add_option("file", args->file,
+                  "OpenVDB file (.vdb); or a sequence: a printf pattern (\"smoke_%06d.vdb\"), a glob "
+                  "(\"smoke_*.vdb\") or a folder")
+      ->required();
   cmd->add_option("--grid", args->grid, "Grid name (default: \"density\", else the first float grid)");
   cmd->add_option("--grid-index", args->grid_index, "Grid position in the file, from 0 (for repeated names)");
   cmd->add_option("--error", args->error, "Image error target in (0, 1] (default 0.03)");
-  cmd->add_option("--out", args->out, "Particle file to write (.pyrop); required unless --list");
+  cmd->add_option("--out", args->out,
+                  "Particle file to write (.pyrop), or for a sequence the folder (.pyroseq); required unless --list");
   cmd->add_flag("--list", args->list, "List the file's grids (index, name, type, class, voxels) and exit");
   cmd->add_option("--width", args->width, "Width of the evaluation image (default 256)")->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Height of the evaluation image (default 256)")->check(CLI::Range(1, 8192));
   cmd->add_option("--samples", args->samples,
                   "Paths per pixel of the path-traced truth for grids too large for a dense box (default 256)")
       ->check(CLI::Range(2, 1 << 20));
+  cmd->add_option("--fps", args->fps, "Sequences: the source's frames per second (default 24)")
+      ->check(CLI::Range(1e-3, 1e6));
+  cmd->add_option("--extinction", args->extinction,
+                  "Sequences: extinction per unit density per world unit (default: automatic, from the first "
+                  "frame with active voxels)")
+      ->check(CLI::Range(1e-9, 1e9));
   cmd->add_flag("--json", args->json, "Print a JSON summary");
   cmd->callback([args] { run_import(*args); });
 }

@@ -1,0 +1,22 @@
+#pragma once
+// pyro import-vdb PATTERN|GLOB|FOLDER --out NAME.pyroseq: an animated OpenVDB sequence imported
+// into one particle sequence (systems/cloud_import/vdb_sequence_import.h), staged beside the
+// output and put in its place only when every frame is written (engine/io/folder_replacement.h).
+#include <string>
+
+#include "engine/io/vdb_reader.h"
+
+namespace pyro::cli {
+
+struct SequenceImportArgs {
+  std::string input, out;
+  VdbGridChoice grid;
+  double error = 0.03;
+  double extinction = 0.0;  // 0: automatic, from the first frame with active voxels
+  double fps = 24.0;
+  bool json = false;
+};
+
+void run_sequence_import(const SequenceImportArgs& args);
+
+}  // namespace pyro::cli
