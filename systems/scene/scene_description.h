@@ -85,7 +85,18 @@ struct MeshDescription {
 // loaded (systems/cloud_import), or a particle file (.pyrop, docs/particle_format.md) made by
 // `pyro import-vdb`. Paths are resolved against the scene file's folder by the loader, which also
 // chooses between `file` and `fallback` (the first that exists).
-enum class VolumeFileKind { vdb, particles };
+// A particle sequence (a `.pyroseq` folder, engine/io/particle_sequence.h) is an animated volume:
+// `sequence` says how it plays.
+enum class VolumeFileKind { vdb, particles, sequence };
+
+// How a particle sequence plays (docs/scene_format.md, volumes[]): source frame position
+// s(t) = start + t * fps * speed at scene time t, the two frames around s cross-faded.
+struct SequencePlayback {
+  bool has_start_frame = false;
+  int64_t start_frame = 0;  // a source frame number of the sequence (checked against its manifest)
+  bool loop = false;        // wrap after the last frame (else hold it)
+  float speed = 1.0f;       // (0, 1000]: times the sequence's own fps
+};
 
 struct VolumeDescription {
   std::string name;                          // optional, for reports
@@ -110,6 +121,7 @@ struct VolumeDescription {
   glm::vec3 position{0.0f, 0.0f, 0.0f};
   float scale = 1.0f;                        // > 0
   float size = 0.0f;                         // > 0 when given; excludes `scale`
+  SequencePlayback sequence;                 // kind == sequence only
 };
 
 struct FootprintDescription {

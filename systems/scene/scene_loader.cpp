@@ -716,7 +716,7 @@ std::string read_volume_path(ObjectReader& r, std::string_view key, const json& 
                              VolumeFileKind& kind) {
   const std::string expected =
       "expected the path of a volume file ending in \".vdb\" (OpenVDB) or \".pyrop\" (particles), "
-      "relative to the scene file's folder";
+      "or of a folder ending in \".pyroseq\" (a particle sequence), relative to the scene file's folder";
   if (!v.is_string() || v.get<std::string>().empty())
     r.at(key).fail(expected + ", found " + describe(v));
   const std::string path = v.get<std::string>();
@@ -724,6 +724,8 @@ std::string read_volume_path(ObjectReader& r, std::string_view key, const json& 
     kind = VolumeFileKind::vdb;
   else if (ends_with_ci(path, ".pyrop"))
     kind = VolumeFileKind::particles;
+  else if (ends_with_ci(path, ".pyroseq") || ends_with_ci(path, ".pyroseq/"))
+    kind = VolumeFileKind::sequence;
   else
     r.at(key).fail(expected + ", found " + describe(v));
   return path;
@@ -737,9 +739,29 @@ std::string resolve_against(const std::string& scene_file, const std::string& re
   return (fs::path(scene_file).parent_path() / p).lexically_normal().string();
 }
 
-bool is_regular_file(const std::string& path) {
+// A volume file that can be read: a regular file, or for a particle sequence a folder holding
+// its manifest (engine/io/particle_sequence.h).
+bool is_volume_present(const std::string& path, VolumeFileKind kind) {
   std::error_code ec;
+  if (kind == VolumeFileKind::sequence)
+    return std::filesystem::is_regular_file(std::filesystem::path(path) / "sequence.json", ec);
   return std::filesystem::is_regular_file(path, ec);
+}
+
+// A particle sequence's playback keys, refused on any other volume.
+void read_sequence_playback(ObjectReader& r, bool any_sequence, SequencePlayback& p) {
+  for (std::string_view key : {"start_frame", "loop", "speed"})
+    if (!any_sequence && r.find(key) != nullptr)
+      r.at(key).fail("unexpected key " + in_quotes(key) + ": it applies to particle sequences (.pyroseq folders)");
+  if (r.find("start_frame") != nullptr) {
+    r.integer("start_frame", 0, 1'000'000'000, p.start_frame);
+    p.has_start_frame = true;
+  }
+  if (const json* v = r.find("loop")) {
+    if (!v->is_boolean()) r.at("loop").fail("expected true or false, found " + describe(*v));
+    p.loop = v->get<bool>();
+  }
+  r.number("speed", Range{0.0, 1000.0, true, false}, p.speed);
 }
 
 void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene_file) {
@@ -762,10 +784,13 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
     if (!any_vdb && r.find(key) != nullptr) {
       r.at(key).fail("unexpected key " + in_quotes(key) + ": it applies to OpenVDB (.vdb) volumes, "
                      "and " + in_quotes(v.file) + (has_fallback ? " and its fallback are" : " is") +
-                     " a particle file (.pyrop)");
+                     " not: " + (file_kind == VolumeFileKind::sequence ? "a particle sequence (.pyroseq), imported already"
+                                                                       : "a particle file (.pyrop)"));
     }
   };
   for (std::string_view key : {"grid", "grid_index", "error", "extinction"}) vdb_only(key);
+  read_sequence_playback(r, file_kind == VolumeFileKind::sequence || (has_fallback && fallback_kind == VolumeFileKind::sequence),
+                         v.sequence);
   r.string("grid", v.grid);
   if (r.find("grid_index") != nullptr) {
     r.integer("grid_index", 0, 1'000'000, v.grid_index);
@@ -785,12 +810,12 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
 
   // The file, else the fallback: the first that exists.
   const std::string file_path = resolve_against(scene_file, v.file);
-  if (is_regular_file(file_path)) {
+  if (is_volume_present(file_path, file_kind)) {
     v.path = file_path;
     v.kind = file_kind;
   } else if (has_fallback) {
     const std::string fallback_path = resolve_against(scene_file, v.fallback);
-    if (!is_regular_file(fallback_path)) {
+    if (!is_volume_present(fallback_path, fallback_kind)) {
       r.at("file").fail("expected an existing volume file, found neither one at " + in_quotes(file_path) +
                         " (" + non_regular_file_kind(file_path) + " there) nor at its fallback " +
                         in_quotes(fallback_path) + " (" + non_regular_file_kind(fallback_path) +
@@ -799,6 +824,11 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
     v.path = fallback_path;
     v.kind = fallback_kind;
     v.used_fallback = true;
+  } else if (file_kind == VolumeFileKind::sequence) {
+    r.at("file").fail("expected a particle sequence folder holding \"sequence.json\" (made by pyro import-vdb), "
+                      "found " + (std::filesystem::is_directory(file_path) ? std::string("a folder without it")
+                                                                            : non_regular_file_kind(file_path)) +
+                      " at " + in_quotes(file_path) + " (paths are relative to the scene file's folder)");
   } else {
     r.at("file").fail("expected an existing volume file, found " + non_regular_file_kind(file_path) +
                       " at " + in_quotes(file_path) + " (paths are relative to the scene file's folder)");

@@ -17,6 +17,7 @@
 #include "components/particle_set.h"
 #include "components/shadow_settings.h"
 #include "components/simulation_environment.h"
+#include "components/volume_sequence.h"
 #include "engine/core/rng.h"
 #include "systems/animation/particle_prewarm.h"
 #include "systems/billboard_render/billboard_renderer.h"
@@ -70,6 +71,7 @@ void add_volumes(ecs::World& world, std::vector<VolumeAsset>& volumes) {
     else
       world.emplace<ParticleSet>(e, ParticleSet{std::move(v.particles)});
     world.emplace<VolumeSource>(e, std::move(v.source));
+    if (v.sequence) world.emplace<VolumeSequence>(e, std::move(*v.sequence));
   }
 }
 

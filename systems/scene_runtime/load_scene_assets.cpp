@@ -5,6 +5,7 @@
 #include "systems/cloud_import/scene_volume.h"
 #include "systems/scene_runtime/flipbook_bake.h"
 #include "systems/scene_runtime/resolve_scene.h"
+#include "systems/volume_sequence/sequence_asset.h"
 
 namespace pyro {
 
@@ -26,9 +27,20 @@ std::string volume_file_note(const SceneDescription& scene, const VolumeDescript
   return place + "using volume file \"" + v.path + "\"";
 }
 
+// A particle sequence: nothing of its frames read yet; its pool sized for the largest drawn frame.
+VolumeAsset sequence_volume(const SceneDescription& scene, const VolumeDescription& v) {
+  SequenceAsset s = load_sequence_asset(scene, v);
+  return {ParticlePool(s.capacity), {}, VolumeSource{v.path, v.used_fallback, s.active_voxels, s.capacity},
+          std::move(s.sequence)};
+}
+
 void load_volumes(const SceneDescription& scene, SceneAssets& assets, const Notes& note) {
   for (const VolumeDescription& v : scene.volumes) {
     note(volume_file_note(scene, v));
+    if (v.kind == VolumeFileKind::sequence) {
+      assets.volumes.push_back(sequence_volume(scene, v));
+      continue;
+    }
     SceneVolume loaded = load_scene_volume(scene, v);
     if (!loaded.note.empty()) note(v.path + ": " + loaded.note);
     const uint64_t count = loaded.particles.size() + loaded.anisotropic.size();

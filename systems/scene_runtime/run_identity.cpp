@@ -14,7 +14,8 @@ namespace {
 nlohmann::json asset_digests(const SceneDescription& scene, DigestCache& digests,
                              const NoteSink& on_note) {
   nlohmann::json assets = nlohmann::json::object();
-  for (const VolumeDescription& v : scene.volumes) assets[v.pointer] = digests.file(v.path);
+  for (const VolumeDescription& v : scene.volumes)  // a particle sequence is a folder
+    assets[v.pointer] = v.kind == VolumeFileKind::sequence ? digests.folder(v.path) : digests.file(v.path);
   for (size_t i = 0; i < scene.fires.size(); ++i) {
     const std::string& folder = scene.fires[i].flipbook;
     assets["/fires/" + std::to_string(i) + "/flipbook"] =

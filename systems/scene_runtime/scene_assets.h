@@ -3,9 +3,11 @@
 // (particle files read, isotropic or anisotropic; VDB grids imported) and the flipbooks' frames (read from their folders,
 // prepared; the engine's default flipbook baked first when missing). Plain data:
 // load_scene_assets.h makes it, build_world.h consumes it.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "components/volume_sequence.h"
 #include "components/volume_source.h"
 #include "engine/particles/anisotropic_gaussian.h"
 #include "engine/particles/particle_pool.h"
@@ -17,6 +19,9 @@ struct VolumeAsset {
   ParticlePool particles;  // exactly sized, fixed after loading
   std::vector<AnisotropicGaussian> anisotropic;  // a version 2 particle file's particles
   VolumeSource source;
+  // A particle sequence: its playback, which fills `particles` (empty, sized for the largest
+  // drawn frame) every drawn frame (systems/volume_sequence).
+  std::optional<VolumeSequence> sequence = std::nullopt;
 };
 
 struct SceneAssets {

@@ -20,19 +20,21 @@
 #include "systems/output/frame_readback_system.h"
 #include "systems/shadowing/shadowing_systems.h"
 #include "systems/sorting/depth_sort.h"
+#include "systems/volume_sequence/volume_sequence_system.h"
 
 namespace pyro {
 
 std::vector<ecs::SystemDesc> standard_systems(bool readback) {
   std::vector<ecs::SystemDesc> systems = {
       cloud_emitter_system(),   emitter_system(),          cloud_drift_system(),
-      light_animation_system(),
+      light_animation_system(), volume_sequence_system(),
       animation_system(),       lighting_system(),         shadow_map_system(),
       shadow_ray_system(),      fire_light_system(),       camera_orbit_system(),
       stereo_camera_system(),   sorting_system(),          flipbook_orient_system(),
       mesh_render_system(),     flipbook_render_system(),  billboard_render_system(),
       composite_system()};
   if (readback) systems.push_back(frame_readback_system());
+  order_after_volume_sequence(systems);
   return systems;
 }
 
