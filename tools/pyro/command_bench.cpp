@@ -250,6 +250,7 @@ void add_bench_commands(CLI::App& app) {
   add_bench_vdb_command(*bench);
   add_bench_schedule_command(*bench);
   add_bench_import_scale_command(*bench);
+  add_bench_vdb_sequence_command(*bench);
   add_bench_relight_command(*bench);
   add_bench_multiple_scattering_command(*bench);
   add_bench_cycles_command(*bench);

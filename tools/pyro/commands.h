@@ -21,6 +21,7 @@ void add_billboard_mode_analysis(CLI::App& analyze);
 void add_bench_vdb_command(CLI::App& bench);
 void add_bench_schedule_command(CLI::App& bench);
 void add_bench_import_scale_command(CLI::App& bench);  // command_bench_import_scale.cpp
+void add_bench_vdb_sequence_command(CLI::App& bench);  // command_bench_vdb_sequence.cpp
 void add_bench_relight_command(CLI::App& bench);       // command_bench_relight.cpp
 void add_bench_multiple_scattering_command(CLI::App& bench);  // command_bench_multiple_scattering.cpp
 void add_bench_cycles_command(CLI::App& bench);       // command_bench_cycles.cpp
