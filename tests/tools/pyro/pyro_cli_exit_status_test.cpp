@@ -142,6 +142,7 @@ const std::map<std::string, std::vector<std::string>>& cheap_json_runs() {
                          "--error-samples", "0"}},
       {"bench import-cases", {"bench", "import-cases", "--errors", "0.9", "--width", "16", "--height", "16"}},
       {"bench import-scale", {"bench", "import-scale", "--voxels", "1000"}},
+      {"bench vdb-sequence", {"bench", "vdb-sequence", "--frames", "1", "--side", "8"}},
       {"bench vdb", {"bench", "vdb", content_path("volumes/sample_cloud.vdb"), "--error", "0.5", "--width", "16",
                      "--height", "16", "--vdb-render", "/bin/false"}},
       {"bench relight", {"bench", "relight", content_path("volumes/sample_cloud.vdb"), "--directions", "1",

@@ -115,7 +115,9 @@ TEST(PyroCliProfile, ProfileJsonHasEverySystemAndTheExplosionsParticles) {
                                           // scheduled in every scene, idle without fires
                                           "flipbook_orient", "flipbook_render",
                                           // and idle without a "shadows" block
-                                          "shadow_map", "shadow_rays", "fire_lights"};
+                                          "shadow_map", "shadow_rays", "fire_lights",
+                                          // and idle without a particle sequence
+                                          "volume_sequence"};
   std::set<std::string> names;
   for (const json& s : j["systems"]) {
     names.insert(s["name"]);
