@@ -1,9 +1,10 @@
 #pragma once
-// The animated VDB import's speed and memory against the sequence's length: a synthetic puff
-// sequence (engine/volume/puff_sequence.h) of the longest length asked for is written once, and
-// its first L frames are imported (systems/cloud_import/vdb_sequence_import.h) for each length L,
-// each import in a child process of its own, so that each one's peak resident memory is its own
-// (wait4), not the largest so far. A streaming import's peak does not grow with L.
+// The animated VDB import's speed and memory against the sequence's length: for each length L,
+// the synthetic puff's whole motion (engine/volume/puff_sequence.h) is written in L frames, so
+// every length holds the same range of frame sizes, and imported
+// (systems/cloud_import/vdb_sequence_import.h) in a child process of its own, so that each
+// import's peak resident memory is its own, not the largest so far. A streaming import's peak
+// does not grow with L.
 #include <string>
 #include <vector>
 
@@ -23,10 +24,12 @@ struct VdbSequenceBenchOptions {
   NoteSink on_note;
 };
 
-// Fields: side, generate_seconds, frames_written, runs: one per length with frames, particles,
+// Fields: side, error_target, generate_seconds (every length's files), runs: one per length with frames, particles,
 // particles_max, active_voxels, seconds, frames_per_second, check_seconds, read_seconds,
-// import_seconds, write_seconds, peak_rss_bytes (the importing process), reader_peak_rss_bytes
-// (the largest of its reading children's); peak_rss_ratio (longest run's over shortest's).
+// import_seconds, write_seconds, importer_peak_rss_bytes (the importing process alone,
+// getrusage), reader_peak_rss_bytes (the largest of its reading children's), peak_rss_bytes (the
+// whole tree, wait4: the larger of the two); peak_rss_ratio (the longest run's importer peak over
+// the shortest's).
 nlohmann::json bench_vdb_sequence(const VdbSequenceBenchOptions& options);
 
 }  // namespace pyro

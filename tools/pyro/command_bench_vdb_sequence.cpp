@@ -18,7 +18,7 @@ namespace {
 
 void print_vdb_sequence(const nlohmann::json& j) {
   const double mib = double(1 << 20);
-  std::printf("a %d^3 puff, %d frames written in %.1f s\n", j["side"].get<int>(), j["frames_written"].get<int>(),
+  std::printf("a %d^3 puff's motion, written at each length in %.1f s in all\n", j["side"].get<int>(),
               j["generate_seconds"].get<double>());
   for (const auto& r : j["runs"])
     std::printf("%4llu frames: %.2f s, %.2f frames/s (check %.2f s, read %.2f s, import %.2f s, write %.2f s), "
@@ -27,7 +27,7 @@ void print_vdb_sequence(const nlohmann::json& j) {
                 r["frames_per_second"].get<double>(), r["check_seconds"].get<double>(),
                 r["read_seconds"].get<double>(), r["import_seconds"].get<double>(), r["write_seconds"].get<double>(),
                 r["particles"].get<unsigned long long>(), r["particles_max"].get<unsigned long long>(),
-                r["peak_rss_bytes"].get<double>() / mib, r["reader_peak_rss_bytes"].get<double>() / mib);
+                r["importer_peak_rss_bytes"].get<double>() / mib, r["reader_peak_rss_bytes"].get<double>() / mib);
   std::printf("importer peak memory, longest run over shortest: %.3f\n", j["peak_rss_ratio"].get<double>());
 }
 
