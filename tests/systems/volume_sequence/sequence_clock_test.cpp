@@ -12,17 +12,19 @@
 namespace pyro {
 namespace {
 
+// The frames drawn at position s of `count` frames: a, b and b's weight (all exact: quarters).
+void expect_sample(double s, std::size_t count, bool loop, std::size_t a, std::size_t b, double weight) {
+  const SequenceSample got = sample_sequence(s, count, loop);
+  EXPECT_EQ(got.a, a) << "at " << s;
+  EXPECT_EQ(got.b, b) << "at " << s;
+  EXPECT_EQ(got.weight, weight) << "at " << s;
+}
+
 TEST(SequenceClock, PositionsBracketAndWeighTheSourceFrames) {
   // 24 fps played at 30 fps: frame 5 is 4 source frames in, from start index 2.
   EXPECT_EQ(sequence_position(5, 30.0, 24.0, 2), 6.0);
-  const SequenceSample s = sample_sequence(2.25, 5, false);
-  EXPECT_EQ(s.a, 2u);
-  EXPECT_EQ(s.b, 3u);
-  EXPECT_DOUBLE_EQ(s.weight, 0.25);
-  const SequenceSample exact = sample_sequence(3.0, 5, false);
-  EXPECT_EQ(exact.a, 3u);
-  EXPECT_EQ(exact.b, 3u);
-  EXPECT_EQ(exact.weight, 0.0);
+  expect_sample(2.25, 5, false, 2, 3, 0.25);
+  expect_sample(3.0, 5, false, 3, 3, 0.0);
 }
 
 TEST(SequenceClock, AFrameLandingOnASourceFrameDrawsItAlone) {
@@ -40,18 +42,9 @@ TEST(SequenceClock, AFrameLandingOnASourceFrameDrawsItAlone) {
 }
 
 TEST(SequenceClock, LoopsWrapIntoTheFirstFrameAndOthersHoldTheLast) {
-  const SequenceSample held = sample_sequence(7.5, 4, false);
-  EXPECT_EQ(held.a, 3u);
-  EXPECT_EQ(held.b, 3u);
-  EXPECT_EQ(held.weight, 0.0);
-  const SequenceSample wrap = sample_sequence(3.5, 4, true);  // between the last and the first
-  EXPECT_EQ(wrap.a, 3u);
-  EXPECT_EQ(wrap.b, 0u);
-  EXPECT_DOUBLE_EQ(wrap.weight, 0.5);
-  const SequenceSample again = sample_sequence(9.25, 4, true);
-  EXPECT_EQ(again.a, 1u);
-  EXPECT_EQ(again.b, 2u);
-  EXPECT_DOUBLE_EQ(again.weight, 0.25);
+  expect_sample(7.5, 4, false, 3, 3, 0.0);
+  expect_sample(3.5, 4, true, 3, 0, 0.5);  // between the last and the first
+  expect_sample(9.25, 4, true, 1, 2, 0.25);
 }
 
 TEST(SequenceCrossFade, FadedDensityScalesTheOpticalDepth) {
