@@ -40,6 +40,7 @@ shot sunset sunset 30 480 360
 shot cloud_vdb cloud_vdb 0 480 270
 shot cloud_fitted cloud_fitted 0 480 270
 shot cloud_fitted_baked cloud_fitted 0 480 270 --shadows off
+shot vdb_fire vdb_fire 0 360 480
 shot explosion explosion 30 384 384
 shot explosion_lit explosion 30 384 384 --shadows map
 shot explosion_dusk explosion_dusk 30 384 384
