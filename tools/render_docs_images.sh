@@ -40,11 +40,12 @@ shot sunset sunset 30 480 360
 shot cloud_vdb cloud_vdb 0 480 270
 shot cloud_fitted cloud_fitted 0 480 270
 shot cloud_fitted_baked cloud_fitted 0 480 270 --shadows off
+shot vdb_fire vdb_fire 0 360 480
 shot explosion explosion 30 384 384
 shot explosion_lit explosion 30 384 384 --shadows map
 shot explosion_dusk explosion_dusk 30 384 384
 shot explosion_behind_tower explosion_behind_tower 30 384 384
-shot flipbook_fire flipbook_fire 12 128 192
-shot campfire campfire 20 320 240 --stereo side-by-side
+shot flipbook_fire flipbook_fire 12 192 288
+shot campfire campfire 20 480 360 --stereo side-by-side
 shot flipbook_grid flipbook_grid 20 320 240 --stereo side-by-side
 shot explosion_anaglyph explosion 30 384 384 --stereo anaglyph

@@ -8,7 +8,9 @@
 // erf is Abramowitz & Stegun 7.1.26 (|error| <= 1.5e-7), its coefficients the uniform
 // u_erf = kErfAs7126 {p, a1, a2, a3, a4, a5} from the same header.
 // Output is premultiplied (colour alpha, alpha), alpha = 1 - exp(-tau); blending is
-// (ONE, ONE_MINUS_SRC_ALPHA), back to front.
+// (ONE, ONE_MINUS_SRC_ALPHA), back to front. A particle that emits (a fire's black-body light,
+// engine/math/temperature_emission.h) adds L_e alpha, lit or not: a Gaussian emitter with the
+// footprint of its own extinction (Max 1995, absorption plus emission).
 //
 // LIT: the colour is the albedo times the light reaching the particle along the pixel's ray,
 // averaged over the particle's density there (three points, below):
@@ -25,6 +27,7 @@ noperspective in vec3 v_ray;           // d: the ray's direction, unnormalised
 noperspective in vec3 v_ray_whitened;  // M d, M = S^-1 R^T
 flat in vec3 v_eye_whitened;           // u0 = M (eye - c)
 flat in vec4 v_color_extinction;
+flat in vec3 v_emission;
 
 uniform float u_erf[6];
 #if LIT
@@ -103,8 +106,8 @@ void main() {
     float tau_sun = u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, offset) + tau_self);
     light += (node == 0 ? 2.0 / 3.0 : 1.0 / 6.0) * u_sun_color * sun_scattering(mu, max(tau_sun, 0.0));
   }
-  o_color = vec4(v_color_extinction.rgb * light * alpha, alpha);
+  o_color = vec4((v_color_extinction.rgb * light + v_emission) * alpha, alpha);
 #else
-  o_color = vec4(v_color_extinction.rgb * alpha, alpha);
+  o_color = vec4((v_color_extinction.rgb + v_emission) * alpha, alpha);
 #endif
 }

@@ -1,9 +1,9 @@
 #version 450 core
 // Anisotropic Gaussian particles (engine/particles/anisotropic_gaussian.h), one instance each,
 // back to front; the four corners of a triangle strip come from gl_VertexID.
-// Vertex pulling: instance k is the particle draw_order[k], whose record is four vec4s (packed by
+// Vertex pulling: instance k is the particle draw_order[k], whose record is five vec4s (packed by
 // systems/billboard_render/anisotropic_splat_renderer.cpp): centre and peak extinction; the unit
-// rotation quaternion (x, y, z, w); the three scales; linear rgb.
+// rotation quaternion (x, y, z, w); the three scales; linear rgb; emitted radiance L_e (rgb).
 //
 // The quad is the screen rectangle of the particle's ellipsoid m <= 3 in closed form
 // (Sigg, Weyrich, Botsch, Gross 2006: the bounding box of a projected quadric), written out in
@@ -43,6 +43,7 @@ noperspective out vec3 v_ray_whitened;
 // M = S^-1 R^T (the whitening of engine/math/anisotropic_optical_depth.h) and u0 = M (eye - c).
 flat out vec3 v_eye_whitened;
 flat out vec4 v_color_extinction;
+flat out vec3 v_emission;
 
 const float kExtent = 3.0;  // engine/particles/anisotropic_gaussian.h: kAnisotropicExtent
 
@@ -63,10 +64,11 @@ vec2 edge_pair(vec4 r, vec4 r4) {
 
 void main() {
   uint particle = draw_order[gl_InstanceID];
-  vec4 centre_extinction = records[4u * particle];
-  vec4 q = records[4u * particle + 1u];
-  vec3 scale = records[4u * particle + 2u].xyz;
-  vec3 color = records[4u * particle + 3u].rgb;
+  vec4 centre_extinction = records[5u * particle];
+  vec4 q = records[5u * particle + 1u];
+  vec3 scale = records[5u * particle + 2u].xyz;
+  vec3 color = records[5u * particle + 3u].rgb;
+  v_emission = records[5u * particle + 4u].rgb;
   vec3 centre = centre_extinction.xyz;
   // The local axes in world space: the columns of the rotation matrix of the unit quaternion
   // (w, x, y, z) = (q.w, q.x, q.y, q.z).

@@ -3,9 +3,10 @@
 // resolution) with the reduced-resolution particle layer, if any, upsampled bilinearly and
 // composited over it (premultiplied "over"); or, for explosions, the media layers (Umenhoffer et
 // al. 2006, section 4) upsampled (depth-aware or bilinear) and composited over the scene, whose
-// lookup the fire distorts (heat shimmer). Then the output is L * left + R * right, clamped, on
-// linear values (engine/math/anaglyph.h gives the matrices: identity/zero for a single view,
-// Dubois or colour/half-colour for anaglyphs). The target is sRGB: with SRGB_ENCODE the shader
+// lookup the fire distorts (heat shimmer). Then the output is L * left + R * right on linear
+// values (engine/math/anaglyph.h gives the matrices: identity/zero for a single view, Dubois or
+// colour/half-colour for anaglyphs), its highlights rolled off without a hue shift
+// (highlight_rolloff.glsl). The target is sRGB: with SRGB_ENCODE the shader
 // encodes (GL_FRAMEBUFFER_SRGB off: cheaper on llvmpipe), else GL does (or the target is linear).
 //
 // Variants (defines from systems/composite/compositor.cpp; on llvmpipe a branch on a uniform
@@ -47,6 +48,7 @@
 #if SRGB_ENCODE
 #include "srgb_encode.glsl"
 #endif
+#include "highlight_rolloff.glsl"
 
 layout(binding = 0) uniform sampler2D u_left;
 layout(binding = 1) uniform sampler2D u_right;
@@ -229,7 +231,7 @@ void main() {
   c += u_right_matrix * view_color(u_right, u_right_layer, texel, uv);
 #endif
 #endif
-  c = clamp(c, 0.0, 1.0);
+  c = roll_off_highlights(c);
 #if SRGB_ENCODE
   c = srgb_encode(c);
 #endif

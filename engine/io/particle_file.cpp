@@ -80,14 +80,48 @@ void check_particles(const std::string& path, const std::vector<AnisotropicGauss
   }
 }
 
+void check_temperatures(const std::string& path, const std::vector<float>& temperature) {
+  for (size_t i = 0; i < temperature.size(); ++i)
+    if (!(std::abs(temperature[i]) <= kMaxParticleTemperature))
+      throw UserError(path, "particle " + std::to_string(i),
+                      "a finite temperature of magnitude at most 1e6, found " + std::to_string(temperature[i]));
+}
+
+namespace {
+
+// The particles' records, `fields` float32 each (the temperature last when there is one).
+std::vector<float> records_of(const ParticleFile& file, bool aniso, size_t fields) {
+  const size_t count = aniso ? file.anisotropic.size() : file.particles.size();
+  std::vector<float> records(fields * count);
+  for (size_t i = 0; i < count; ++i) {
+    float* r = &records[fields * i];
+    if (aniso) {
+      to_record(file.anisotropic[i], r);
+    } else {
+      const GaussianParticle& p = file.particles[i];
+      const float v[8] = {p.x, p.y, p.z, p.radius, p.density, p.r, p.g, p.b};
+      std::memcpy(r, v, sizeof v);
+    }
+    if (!file.temperature.empty()) r[fields - 1] = file.temperature[i];
+  }
+  return records;
+}
+
+}  // namespace
+
 void write_particle_file(const std::string& path, const ParticleFile& file) {
   const uint32_t version = version_to_write(path, file);
   check_particles(path, file.particles);  // never a file that read_particle_file refuses
   check_particles(path, file.anisotropic);
+  check_temperatures(path, file.temperature);
   const bool aniso = version == kAnisotropicVersion;
-  DurableFile out(path);
-  const uint32_t record = aniso ? kAnisotropicRecordBytes : uint32_t(sizeof(GaussianParticle));
   const uint64_t count = aniso ? file.anisotropic.size() : file.particles.size();
+  if (!file.temperature.empty() && file.temperature.size() != count)
+    throw UserError(path, "", "one temperature per particle (" + std::to_string(count) + "), given " +
+                                  std::to_string(file.temperature.size()));
+  const size_t fields = (aniso ? 14 : 8) + (file.temperature.empty() ? 0 : 1);
+  DurableFile out(path);
+  const uint32_t record = uint32_t(fields * sizeof(float));
   const uint32_t meta = static_cast<uint32_t>(file.metadata_json.size());
   out.write(kMagic, 8);
   out.write(&version, 4);
@@ -95,13 +129,8 @@ void write_particle_file(const std::string& path, const ParticleFile& file) {
   out.write(&count, 8);
   out.write(&meta, 4);
   out.write(file.metadata_json);
-  if (!aniso) {
-    out.write(file.particles.data(), count * sizeof(GaussianParticle));
-  } else {
-    std::vector<float> records(14 * count);
-    for (size_t i = 0; i < count; ++i) to_record(file.anisotropic[i], &records[14 * i]);
-    out.write(records.data(), records.size() * sizeof(float));
-  }
+  const std::vector<float> records = records_of(file, aniso, fields);
+  out.write(records.data(), records.size() * sizeof(float));
   out.commit();
 }
 
@@ -125,10 +154,12 @@ Header read_header(const std::string& path, std::ifstream& in, uint64_t size) {
   std::memcpy(&h.meta, head + 24, 4);
   if (h.version != kIsotropicVersion && h.version != kAnisotropicVersion)
     throw UserError(path, "", "particle file version 1 or 2, found " + std::to_string(h.version));
-  const uint32_t want = h.version == kIsotropicVersion ? 32 : kAnisotropicRecordBytes;
+  const uint32_t plain = h.version == kIsotropicVersion ? 32 : kAnisotropicRecordBytes;
+  const uint32_t want = h.record == plain + 4 ? plain + 4 : plain;
   if (h.record != want)
-    throw UserError(path, "", std::to_string(want) + " bytes per particle in version " +
-                                  std::to_string(h.version) + ", found " + std::to_string(h.record));
+    throw UserError(path, "", std::to_string(plain) + " bytes per particle in version " + std::to_string(h.version) +
+                                  " (or " + std::to_string(plain + 4) + " with a temperature), found " +
+                                  std::to_string(h.record));
   if (h.count > (size - kHeader) / want || kHeader + uint64_t(h.meta) + h.count * want != size)
     throw UserError(path, "", "a file of " + std::to_string(kHeader + uint64_t(h.meta) + h.count * want) +
                                   " bytes for its " + std::to_string(h.count) +
@@ -148,18 +179,23 @@ ParticleFile read_particle_file(const std::string& path) {
   f.version = h.version;
   f.metadata_json.resize(h.meta);
   in.read(f.metadata_json.data(), h.meta);
-  if (h.version == kIsotropicVersion) {
-    f.particles.resize(h.count);
-    in.read(reinterpret_cast<char*>(f.particles.data()), static_cast<std::streamsize>(h.count * 32));
-  } else {
-    std::vector<float> records(14 * h.count);
-    in.read(reinterpret_cast<char*>(records.data()), static_cast<std::streamsize>(h.count * h.record));
-    f.anisotropic.resize(h.count);
-    for (size_t i = 0; i < h.count; ++i) f.anisotropic[i] = from_record(&records[14 * i]);
-  }
+  const size_t fields = h.record / 4;
+  const bool with_temperature = h.record == (h.version == kIsotropicVersion ? 32u : kAnisotropicRecordBytes) + 4;
+  std::vector<float> records(fields * h.count);
+  in.read(reinterpret_cast<char*>(records.data()), static_cast<std::streamsize>(h.count * h.record));
   if (!in) throw UserError(path, "", "cannot read the particle file");
+  if (h.version == kIsotropicVersion) f.particles.resize(h.count);
+  else f.anisotropic.resize(h.count);
+  if (with_temperature) f.temperature.resize(h.count);
+  for (size_t i = 0; i < h.count; ++i) {
+    const float* r = &records[fields * i];
+    if (h.version == kIsotropicVersion) f.particles[i] = {r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]};
+    else f.anisotropic[i] = from_record(r);
+    if (with_temperature) f.temperature[i] = r[fields - 1];
+  }
   check_particles(path, f.particles);
   check_particles(path, f.anisotropic);
+  check_temperatures(path, f.temperature);
   return f;
 }
 
@@ -171,6 +207,28 @@ double imported_albedo(const std::string& path, const ParticleFile& file) {
   if (!albedo->is_number() || !(albedo->get<double>() >= 0.0 && albedo->get<double>() <= 1.0))
     throw UserError(path, "metadata/albedo", "a number in [0, 1], found " + albedo->dump());
   return albedo->get<double>();
+}
+
+std::optional<RecordedTemperature> recorded_temperature(const std::string& path, const ParticleFile& file) {
+  const nlohmann::json meta = nlohmann::json::parse(file.metadata_json, nullptr, false);
+  if (!meta.is_object()) throw UserError(path, "metadata", "a JSON object");
+  const auto t = meta.find("temperature");
+  if (t == meta.end() || t->is_null()) return std::nullopt;
+  const auto number = [&](const char* key, double fallback) {
+    const auto v = t->find(key);
+    if (v == t->end()) return fallback;
+    if (!v->is_number() || !std::isfinite(v->get<double>()))
+      throw UserError(path, std::string("metadata/temperature/") + key, "a finite number, found " + v->dump());
+    return v->get<double>();
+  };
+  if (!t->is_object()) throw UserError(path, "metadata/temperature", "a JSON object, found " + t->dump());
+  RecordedTemperature r;
+  const auto grid = t->find("grid");
+  if (grid != t->end() && grid->is_string()) r.grid = grid->get<std::string>();
+  r.max = number("max", 0.0);
+  r.scale = number("scale", 1.0);
+  r.offset = number("offset", 0.0);
+  return r;
 }
 
 }  // namespace pyro

@@ -12,6 +12,7 @@
 #include "engine/io/durable_file.h"
 #include "engine/io/png_structure_check.h"
 #include "engine/math/color.h"
+#include "engine/math/highlight_rolloff.h"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
@@ -48,8 +49,10 @@ void write_png(const std::string& path, int width, int height, int channels,
 std::vector<uint8_t> linear_rgba_to_srgb8(const std::vector<float>& rgba, int width, int height) {
   const size_t n = static_cast<size_t>(width) * height;
   std::vector<uint8_t> out(n * 3);
-  for (size_t i = 0; i < n; ++i)
-    for (int c = 0; c < 3; ++c) out[i * 3 + c] = to_byte(linear_to_srgb(rgba[i * 4 + c]));
+  for (size_t i = 0; i < n; ++i) {
+    const glm::vec3 shown = roll_off_highlights({rgba[i * 4], rgba[i * 4 + 1], rgba[i * 4 + 2]});
+    for (int c = 0; c < 3; ++c) out[i * 3 + c] = to_byte(linear_to_srgb(shown[c]));
+  }
   return out;
 }
 

@@ -12,7 +12,8 @@ namespace pyro {
 void write_png(const std::string& path, int width, int height, int channels,
                const std::vector<uint8_t>& pixels);
 
-// Linear RGBA floats to 8-bit sRGB RGB (alpha dropped: frames are opaque).
+// Linear RGBA floats to 8-bit sRGB RGB as the final pass shows them (highlights rolled off:
+// engine/math/highlight_rolloff.h; alpha dropped: frames are opaque).
 std::vector<uint8_t> linear_rgba_to_srgb8(const std::vector<float>& rgba, int width, int height);
 
 struct PngImage {

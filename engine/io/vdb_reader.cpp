@@ -471,30 +471,49 @@ void read_grid_in_this_process(const std::string& path, const VdbGridChoice& cho
   });
 }
 
-void write_fog_volume_in_this_process(const std::string& path, const std::string& grid_name,
-                                      const std::array<int, 3>& origin,
-                                      const std::array<int, 3>& dims,
-                                      const std::vector<float>& values, double voxel_size,
-                                      const std::array<double, 3>& translation, bool half_float) {
-  initialize_openvdb();
-  openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
+openvdb::math::Transform::Ptr transform_of(const VdbGridToWrite& g) {
+  openvdb::math::Transform::Ptr xf = openvdb::math::Transform::createLinearTransform(1.0);
+  xf->preScale(openvdb::Vec3d(g.voxel_size[0], g.voxel_size[1], g.voxel_size[2]));
+  xf->postTranslate(openvdb::Vec3d(g.translation[0], g.translation[1], g.translation[2]));
+  return xf;
+}
+
+template <class GridType, int Components>
+openvdb::GridBase::Ptr dense_to_grid(const VdbGridToWrite& g) {
+  typename GridType::Ptr grid = GridType::create();
   auto acc = grid->getAccessor();
   size_t k = 0;
-  for (int z = 0; z < dims[2]; ++z)
-    for (int y = 0; y < dims[1]; ++y)
-      for (int x = 0; x < dims[0]; ++x, ++k)
-        if (values[k] != 0.0f)
-          acc.setValue(openvdb::Coord(origin[0] + x, origin[1] + y, origin[2] + z), values[k]);
-  openvdb::math::Transform::Ptr xf = openvdb::math::Transform::createLinearTransform(voxel_size);
-  xf->postTranslate(openvdb::Vec3d(translation[0], translation[1], translation[2]));
-  grid->setTransform(xf);
-  grid->setName(grid_name);
-  grid->setGridClass(openvdb::GRID_FOG_VOLUME);
-  grid->setSaveFloatAsHalf(half_float);
+  for (int z = 0; z < g.dims[2]; ++z)
+    for (int y = 0; y < g.dims[1]; ++y)
+      for (int x = 0; x < g.dims[0]; ++x, ++k) {
+        const float* v = &g.values[Components * k];
+        const openvdb::Coord at(g.origin[0] + x, g.origin[1] + y, g.origin[2] + z);
+        if constexpr (Components == 1) {
+          if (v[0] != 0.0f) acc.setValue(at, v[0]);
+        } else if (v[0] != 0.0f || v[1] != 0.0f || v[2] != 0.0f) {
+          acc.setValue(at, openvdb::Vec3s(v[0], v[1], v[2]));
+        }
+      }
+  grid->setTransform(transform_of(g));
+  grid->setName(g.name);
+  grid->setGridClass(Components == 1 ? openvdb::GRID_FOG_VOLUME : openvdb::GRID_UNKNOWN);
+  grid->setSaveFloatAsHalf(g.half_float);
+  return grid;
+}
+
+void write_grids_in_this_process(const std::string& path, const std::vector<VdbGridToWrite>& grids) {
+  initialize_openvdb();
+  openvdb::GridPtrVec out;
+  for (const VdbGridToWrite& g : grids) {
+    const size_t voxels = size_t(std::max(g.dims[0], 0)) * size_t(std::max(g.dims[1], 0)) * size_t(std::max(g.dims[2], 0));
+    if (g.values.size() != voxels * (g.vec3 ? 3 : 1))
+      throw std::invalid_argument("write_vdb_grids: grid \"" + g.name + "\" has the wrong number of values");
+    out.push_back(g.vec3 ? dense_to_grid<openvdb::Vec3SGrid, 3>(g) : dense_to_grid<openvdb::FloatGrid, 1>(g));
+  }
   const std::string tmp = path + ".tmp";
   {
     openvdb::io::File file(tmp);
-    file.write({grid});
+    file.write(out);
     file.close();
   }
   std::error_code ec;
@@ -567,13 +586,21 @@ void write_vdb_fog_volume(const std::string& path, const std::string& grid_name,
                           const std::array<int, 3>& origin, const std::array<int, 3>& dims,
                           const std::vector<float>& values, double voxel_size,
                           const std::array<double, 3>& translation, bool half_float) {
-  // Also in a child: the parent process never starts OpenVDB or its TBB threads (isolated_call.h).
+  VdbGridToWrite g;
+  g.name = grid_name;
+  g.origin = origin;
+  g.dims = dims;
+  g.values = values;
+  g.voxel_size = {voxel_size, voxel_size, voxel_size};
+  g.translation = translation;
+  g.half_float = half_float;
+  write_vdb_grids(path, {g});
+}
+
+void write_vdb_grids(const std::string& path, const std::vector<VdbGridToWrite>& grids) {
+  // In a child: the parent process never starts OpenVDB or its TBB threads (isolated_call.h).
   run_isolated(
-      path, "writing the OpenVDB file",
-      [&](ResultWriter&) {
-        write_fog_volume_in_this_process(path, grid_name, origin, dims, values, voxel_size,
-                                         translation, half_float);
-      },
+      path, "writing the OpenVDB file", [&](ResultWriter&) { write_grids_in_this_process(path, grids); },
       [](std::string_view) {}, vdb_isolation_limits());
 }
 

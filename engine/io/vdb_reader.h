@@ -85,4 +85,21 @@ void write_vdb_fog_volume(const std::string& path, const std::string& grid_name,
                           const std::vector<float>& values, double voxel_size,
                           const std::array<double, 3>& translation, bool half_float = false);
 
+// One grid of a file written by write_vdb_grids: dense values over origin..origin+dims-1 (x fastest;
+// 3 floats a voxel for a vec3s grid), zeros skipped, with a per-axis voxel size and the world
+// position of index (0, 0, 0).
+struct VdbGridToWrite {
+  std::string name;
+  std::array<int, 3> origin{0, 0, 0}, dims{0, 0, 0};
+  std::vector<float> values;
+  bool vec3 = false;  // a vec3s grid (class "unknown"), else a float fog volume
+  bool half_float = false;  // saved as 16-bit floats
+  std::array<double, 3> voxel_size{1, 1, 1};
+  std::array<double, 3> translation{0, 0, 0};
+};
+
+// Writes several grids into one OpenVDB file, in the order given (tests and generators: e.g. a
+// fire's density, temperature and velocity). Written to a temporary name, then renamed.
+void write_vdb_grids(const std::string& path, const std::vector<VdbGridToWrite>& grids);
+
 }  // namespace pyro

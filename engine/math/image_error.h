@@ -1,6 +1,7 @@
 #pragma once
 // Image error measures used by every accuracy figure: RMSE over the RGB channels of linear
-// images, values clamped to [0, 1] (what a display can show), alpha ignored.
+// images as a display shows them (negative values at 0, highlights above 1 rolled off as the
+// final pass rolls them off: engine/math/highlight_rolloff.h), alpha ignored.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "engine/math/color.h"
+#include "engine/math/highlight_rolloff.h"
 
 namespace pyro {
 
@@ -16,10 +18,10 @@ inline double rgba_rmse(const std::vector<float>& a, const std::vector<float>& b
   if (a.size() != b.size() || a.size() % 4 != 0)
     throw std::invalid_argument("rgba_rmse: images differ in size");
   double sum = 0.0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (i % 4 == 3) continue;
-    const double d = std::clamp(a[i], 0.0f, 1.0f) - std::clamp(b[i], 0.0f, 1.0f);
-    sum += d * d;
+  for (size_t i = 0; i < a.size(); i += 4) {
+    const glm::vec3 d = roll_off_highlights({a[i], a[i + 1], a[i + 2]}) -
+                        roll_off_highlights({b[i], b[i + 1], b[i + 2]});
+    sum += double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z;
   }
   return a.empty() ? 0.0 : std::sqrt(sum / (a.size() / 4 * 3));
 }

@@ -6,6 +6,9 @@
 // principal axis; outside it the particle holds nothing). The isotropic Gaussian particle
 // (gaussian_particle.h) is the case scale = (s, s, s), apart from its truncation to a cube.
 // Colour is linear RGB with the lighting already applied, as for the isotropic particles.
+// Emission is the radiance L_e the particle's medium emits (a fire's black-body light,
+// engine/math/temperature_emission.h): along a ray of optical depth tau through the particle it
+// adds L_e (1 - exp(-tau)), weighted exactly like the particle's own opacity; 0 for smoke.
 #include <cmath>
 
 #include <glm/gtc/quaternion.hpp>
@@ -23,6 +26,7 @@ struct AnisotropicGaussian {
   glm::vec3 scale{1.0f};                       // standard deviations along the local axes
   float extinction = 0.0f;                     // peak extinction (per world unit) at the centre
   glm::vec3 color{1.0f};
+  glm::vec3 emission{0.0f};                    // emitted radiance, linear RGB (not lit)
 };
 
 // Sigma^-1 = R S^-2 R^T.

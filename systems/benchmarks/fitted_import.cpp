@@ -11,6 +11,7 @@
 #include "systems/cloud_import/gaussian_fit.h"
 #include "systems/cloud_import/grid_framing.h"
 #include "systems/cloud_import/gaussian_lighting.h"
+#include "systems/cloud_import/gaussian_temperature.h"
 #include "systems/scene_runtime/anisotropic_snapshot.h"
 
 namespace pyro {
@@ -28,6 +29,10 @@ VdbImportResult measured(const DenseGrid& grid, std::vector<GridGaussian>& gs, c
   VdbImportResult r;
   fit_lit_fractions(grid, gs, transmittance, 20, threads);
   r.fitted = lit_world_gaussians(grid, gs, reference.medium);
+  if (reference.emission.on()) {
+    r.temperatures = gaussian_temperatures(grid, reference.emission.temperature, gs, threads);
+    apply_emission(r.fitted, r.temperatures, reference.emission.emission);
+  }
   r.grid_gaussians = gs;
   r.report = octree;
   r.report.particles = r.fitted.size();

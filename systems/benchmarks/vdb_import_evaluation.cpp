@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <utility>
 
 #include "systems/reference/volume_reference.h"
 #include "systems/scene_runtime/particle_snapshot.h"
@@ -19,8 +20,9 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 }  // namespace
 
 VdbImportReference make_vdb_import_reference(const DenseGrid& grid, int width, int height,
-                                             bool every_view) {
+                                             bool every_view, VolumeEmission emission) {
   VdbImportReference r;
+  r.emission = std::move(emission);
   r.medium = default_medium(grid);
   r.width = width;
   r.height = height;
@@ -29,16 +31,17 @@ VdbImportReference make_vdb_import_reference(const DenseGrid& grid, int width, i
   r.camera = framing_camera(grid);
   r.light_depth = light_optical_depth(grid, r.medium);
   const std::vector<float>& light = r.light_depth;
-  r.image = render_volume_reference(grid, light, camera_frame(r.camera, width, height), r.medium);
+  const auto render = [&](const CameraDescription& camera) {
+    return render_volume_reference(grid, light, camera_frame(camera, width, height), r.medium, 0.5, 0, nullptr, {},
+                                   &r.emission);
+  };
+  r.image = render(r.camera);
   if (every_view) {
     r.view_cameras = views_around(grid);
     r.view_images.push_back(r.image);  // the first view is the framing camera's
-    for (size_t v = 1; v < r.view_cameras.size(); ++v)
-      r.view_images.push_back(
-          render_volume_reference(grid, light, camera_frame(r.view_cameras[v], width, height), r.medium));
+    for (size_t v = 1; v < r.view_cameras.size(); ++v) r.view_images.push_back(render(r.view_cameras[v]));
     r.inside_camera = view_inside(grid);
-    if (r.inside_camera)
-      r.inside_image = render_volume_reference(grid, light, camera_frame(*r.inside_camera, width, height), r.medium);
+    if (r.inside_camera) r.inside_image = render(*r.inside_camera);
   }
   r.seconds = seconds_since(t0);
   return r;

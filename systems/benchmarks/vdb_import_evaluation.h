@@ -17,6 +17,7 @@
 #include "systems/cloud_import/cloud_import.h"
 #include "systems/cloud_import/grid_gaussian.h"
 #include "systems/reference/rgb_image.h"
+#include "systems/reference/volume_emission.h"
 
 namespace pyro {
 
@@ -37,12 +38,16 @@ struct VdbImportReference {
   std::vector<RgbImage> view_images;
   std::optional<CameraDescription> inside_camera;
   RgbImage inside_image;
+  // A fire's temperature and its emission (off when empty): the reference emits L_e(T), and the
+  // fitted particles are given their temperatures and emission before every measurement
+  // (systems/cloud_import/gaussian_temperature.h), so the error target covers the fire's light.
+  VolumeEmission emission;
 };
 
 // Renders the reference of `grid` at width x height, from the framing camera alone or from
 // every view around it (`every_view`).
 VdbImportReference make_vdb_import_reference(const DenseGrid& grid, int width, int height,
-                                             bool every_view = false);
+                                             bool every_view = false, VolumeEmission emission = {});
 
 struct VdbImportResult {
   std::vector<GaussianParticle> particles;  // the octree's isotropic particles
@@ -51,6 +56,8 @@ struct VdbImportResult {
   // alone.
   std::vector<AnisotropicGaussian> fitted;
   std::vector<GridGaussian> grid_gaussians;
+  // With the reference's emission on: each fitted particle's temperature (grid units).
+  std::vector<float> temperatures;
   CloudImportReport report;
   double tau_tolerance = 0.0;
   double import_seconds = 0.0;

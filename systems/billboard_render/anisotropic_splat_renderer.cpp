@@ -42,17 +42,19 @@ const gpu::Program& AnisotropicSplatRenderer::lit_program() {
 }
 
 void AnisotropicSplatRenderer::upload(const std::vector<AnisotropicGaussian>& particles) {
-  // Four vec4s per particle: centre and extinction, unit quaternion (x, y, z, w), scales, rgb.
-  std::vector<glm::vec4> records(4 * particles.size());
+  // Five vec4s per particle: centre and extinction, unit quaternion (x, y, z, w), scales, rgb,
+  // emitted radiance.
+  std::vector<glm::vec4> records(5 * particles.size());
   centres_.resize(particles.size());
   for (std::size_t i = 0; i < particles.size(); ++i) {
     const AnisotropicGaussian& g = particles[i];
     const glm::dquat q =
         glm::normalize(glm::dquat(g.rotation.w, g.rotation.x, g.rotation.y, g.rotation.z));
-    records[4 * i] = glm::vec4(g.centre, g.extinction);
-    records[4 * i + 1] = glm::vec4(float(q.x), float(q.y), float(q.z), float(q.w));
-    records[4 * i + 2] = glm::vec4(g.scale, 0.0f);
-    records[4 * i + 3] = glm::vec4(g.color, 0.0f);
+    records[5 * i] = glm::vec4(g.centre, g.extinction);
+    records[5 * i + 1] = glm::vec4(float(q.x), float(q.y), float(q.z), float(q.w));
+    records[5 * i + 2] = glm::vec4(g.scale, 0.0f);
+    records[5 * i + 3] = glm::vec4(g.color, 0.0f);
+    records[5 * i + 4] = glm::vec4(g.emission, 0.0f);
     centres_[i] = g.centre;
   }
   glNamedBufferData(records_.get(), static_cast<GLsizeiptr>(std::max<std::size_t>(records.size(), 1) * sizeof(glm::vec4)),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -9,7 +10,11 @@
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
+#include "engine/io/vdb_temperature_grid.h"
 #include "systems/cloud_import/cloud_import.h"
+#include "systems/cloud_import/gaussian_temperature.h"
+#include "systems/cloud_import/grid_gaussian.h"
+#include "systems/cloud_import/volume_fire.h"
 #include "systems/lighting/lighting_system.h"
 
 namespace pyro {
@@ -48,6 +53,52 @@ void use_albedo(ParticleFile& file, double albedo) {
   for (AnisotropicGaussian& g : file.anisotropic) g.color = glm::vec3(a);
 }
 
+// Isotropic particles carry their emission in their colours, which a lit scene replaces by the
+// albedo: their fire is refused there rather than dropped.
+void refuse_lit_isotropic_fire(const SceneDescription& scene, const VolumeDescription& v) {
+  throw UserError(scene.file, v.pointer + "/emission",
+                  "a volume that emits in a scene with \"shadows\" to be anisotropic particles (a version 2 file "
+                  "made by pyro import-vdb); this one is isotropic. Import it with pyro import-vdb, or turn its "
+                  "fire off (\"temperature_grid\": \"none\" or \"emission\": {\"intensity\": 0})");
+}
+
+// A particle file's fire: its temperature channel, with the map its import recorded.
+std::string particle_file_fire(const SceneDescription& scene, const VolumeDescription& v, ParticleFile& file) {
+  if (file.temperature.empty()) return "";
+  const std::optional<RecordedTemperature> rec = recorded_temperature(v.path, file);
+  double hottest = rec ? rec->max : 0.0;
+  for (float t : file.temperature) hottest = std::max(hottest, double(t));
+  std::optional<TemperatureMapping> recorded;
+  if (rec) {
+    recorded.emplace();
+    recorded->scale = rec->scale;
+    recorded->offset = rec->offset;
+  }
+  const TemperatureEmission e = volume_temperature_emission(v.emission, recorded, hottest);
+  apply_emission(file.anisotropic, file.temperature, e);
+  if (add_emission_to_colours(file.particles, file.temperature, e) && scene.shadows) refuse_lit_isotropic_fire(scene, v);
+  return describe_volume_emission(rec ? rec->grid : "", v.emission, recorded.has_value(), e);
+}
+
+// A VDB file's fire, on load: the temperature grid beside the density, each imported particle's
+// temperature (gaussian_temperature.h) and its emission added to its colour.
+std::string vdb_fire(const SceneDescription& scene, const VolumeDescription& v, const DenseGrid& grid,
+                     const CloudImportOptions& opt, std::vector<GaussianParticle>& particles) {
+  std::optional<VdbGridInfo> info;
+  try {
+    info = choose_temperature_grid(v.path, list_vdb_grids(v.path), v.temperature_grid, "");
+  } catch (const UserError& e) {
+    throw UserError(scene.file, v.pointer + "/temperature_grid", v.path + ": " + e.expected());
+  }
+  if (!info) return "";
+  const DenseGrid heat = read_temperature_grid(v.path, *info, grid);
+  const std::vector<float> temperatures =
+      gaussian_temperatures(grid, heat, grid_gaussians_from_particles(grid, particles, opt.medium), opt.threads);
+  const TemperatureEmission e = volume_temperature_emission(v.emission, std::nullopt, heat.max_value);
+  if (add_emission_to_colours(particles, temperatures, e) && scene.shadows) refuse_lit_isotropic_fire(scene, v);
+  return describe_volume_emission(info->name, v.emission, false, e);
+}
+
 }  // namespace
 
 void place_volume_particles(std::vector<GaussianParticle>& particles, const VolumeDescription& v) {
@@ -83,6 +134,7 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
       // Lit media ("shadows"): relit every frame from the medium's albedo, not the colours the
       // import lit.
       if (scene.shadows) use_albedo(file, imported_albedo(v.path, file));
+      out.fire_note = particle_file_fire(scene, v, file);
       out.particles = std::move(file.particles);
       out.anisotropic = std::move(file.anisotropic);
     } else {
@@ -102,8 +154,10 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
       opt.tau_tolerance = tau_tolerance_for_error(v.error);
       opt.threads = threads;
       out.particles = import_cloud(grid, opt);
+      out.fire_note = vdb_fire(scene, v, grid, opt, out.particles);
     }
   } catch (const UserError& e) {
+    if (e.file() == scene.file) throw;  // the entry's own keys: already placed in the scene
     throw UserError(scene.file, place, std::string("cannot use volume file: ") + e.what());
   }
   place_volume_particles(out.particles, v);

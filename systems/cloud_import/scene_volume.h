@@ -22,6 +22,7 @@ struct SceneVolume {
   uint64_t active_voxels = 0;  // of the imported grid (0 for a particle file)
   std::string grid;            // the grid imported (empty for a particle file)
   std::string note;            // the reader's note when the grid was chosen by default
+  std::string fire_note;       // which temperature grid and map made the volume's fire (empty: none)
 };
 
 // Throws UserError(scene file, entry pointer + "/file" or "/fallback", why) when the file cannot

@@ -42,7 +42,7 @@ bool pixel_span(const AnisotropicGaussian& g, const CameraFrame& camera, PixelSp
 }
 
 // The image with each part [a, b] of pixel ray w scattering its particles' colour times
-// light(a, b, w).
+// light(a, b, w), and emitting their emission (unlit).
 template <class Light>
 RgbImage render_particles(const std::vector<AnisotropicGaussian>& particles, const CameraFrame& camera,
                           const RgbImage& behind, const std::vector<float>& stop, int threads,
@@ -92,7 +92,8 @@ RgbImage render_particles(const std::vector<AnisotropicGaussian>& particles, con
           [&](std::size_t i, double a, double b) { return segments[i].depth(a, b); },
           [&](std::size_t i) { return glm::dvec3(particles[owner[i]].color); },
           glm::dvec3(behind.at(x, y)[0], behind.at(x, y)[1], behind.at(x, y)[2]), max_piece_depth,
-          [&](double a, double b) { return light(a, b, w); });
+          [&](double a, double b) { return light(a, b, w); },
+          [&](std::size_t i) { return glm::dvec3(particles[owner[i]].emission); });
       float* px = img.at(x, y);
       px[0] = float(L.x);
       px[1] = float(L.y);

@@ -5,6 +5,8 @@
 // (engine/math/anisotropic_optical_depth.h) and the colours mixed piece by piece along the ray
 // (ray_pieces.h, as particle_reference.h does for the isotropic particles). Only particles whose
 // projected ellipsoid (engine/math/projected_ellipsoid.h) covers a pixel are visited there.
+// A particle's emission (a fire's L_e) is added unlit, weighted like its own opacity
+// (ray_pieces.h), in every function below, as the splats add it.
 #include <vector>
 
 #include <glm/vec3.hpp>

@@ -47,6 +47,16 @@ class RayPieces {
   template <class Depth, class Colour, class Light>
   glm::dvec3 integrate(Depth&& depth, Colour&& colour, const glm::dvec3& behind,
                        double max_piece_depth, Light&& light) {
+    return integrate(depth, colour, behind, max_piece_depth, light,
+                     [](std::size_t) { return glm::dvec3(0.0); });
+  }
+
+  // The same with each particle also emitting emission(element), unlit (a fire's radiance L_e,
+  // engine/math/temperature_emission.h): a part adds the dtau-weighted mean of its particles'
+  // L_e times its opacity, so one particle of constant L_e adds exactly L_e (1 - exp(-tau)).
+  template <class Depth, class Colour, class Light, class Emission>
+  glm::dvec3 integrate(Depth&& depth, Colour&& colour, const glm::dvec3& behind,
+                       double max_piece_depth, Light&& light, Emission&& emission) {
     glm::dvec3 radiance(0.0);
     double transmittance = 1.0;
     std::sort(cuts_.begin(), cuts_.end());
@@ -75,15 +85,16 @@ class RayPieces {
       for (int k = 0; k < parts; ++k) {
         const double pa = a + (b - a) * k / parts, pb = a + (b - a) * (k + 1) / parts;
         double dtau = 0.0;
-        glm::dvec3 col(0.0);
+        glm::dvec3 col(0.0), emitted(0.0);
         for (std::size_t h : active_) {
           const double t = depth(hits_[h].element, pa, pb);
           dtau += t;
           col += t * colour(hits_[h].element);
+          emitted += t * emission(hits_[h].element);
         }
         if (dtau <= 0.0) continue;
         const double alpha = -std::expm1(-dtau);
-        radiance += transmittance * alpha * (col / dtau) * light(pa, pb);
+        radiance += transmittance * alpha * ((col / dtau) * light(pa, pb) + emitted / dtau);
         transmittance *= 1.0 - alpha;
       }
     }

@@ -58,7 +58,7 @@ std::vector<float> light_optical_depth(const DenseGrid& grid, const VolumeMedium
 RgbImage render_volume_reference(const DenseGrid& grid, const std::vector<float>& light_depth,
                                  const CameraFrame& camera, const VolumeMedium& medium,
                                  double step_voxels, int threads, VolumeRenderStats* stats,
-                                 const SunScattering& sun) {
+                                 const SunScattering& sun, const VolumeEmission* emission) {
   const auto start = std::chrono::steady_clock::now();
   RgbImage img;
   img.width = camera.width;
@@ -72,6 +72,7 @@ RgbImage render_volume_reference(const DenseGrid& grid, const std::vector<float>
   const float* f = grid.values.data();
   const float* tl = light_depth.data();
   const glm::dvec3 light = glm::normalize(medium.light_direction);
+  const float* heat = emission && emission->on() ? emission->temperature.values.data() : nullptr;
   std::vector<uint64_t> samples(img.height, 0);
   parallel_rows(img.height, threads, [&](int y) {
     for (int x = 0; x < img.width; ++x) {
@@ -97,7 +98,8 @@ RgbImage render_volume_reference(const DenseGrid& grid, const std::vector<float>
             if (rho <= 0.0f) continue;
             const double dtau = medium.extinction * rho * dt_world;
             const double lit = sun_scattering(sun, mu, double(sample_trilinear_clamped(tl, n, px, py, pz)));
-            const glm::dvec3 S = medium.albedo * (medium.light_color * lit + medium.ambient);
+            glm::dvec3 S = medium.albedo * (medium.light_color * lit + medium.ambient);
+            if (heat) S += glm::dvec3(emitted_radiance(emission->emission, sample_trilinear(heat, n, px, py, pz)));
             const double a = -std::expm1(-dtau);
             L += T * a * S;
             T *= 1.0 - a;

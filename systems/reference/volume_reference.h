@@ -9,7 +9,9 @@
 //       sigma_t and S: Max 1995, eq. 8). What is left of T shows the background.
 //       The sun's part of S is albedo * light_color * S_sun(mu, tau_light) with `sun`'s phase
 //       lobe and octaves (engine/math/scattering_octaves.h); the default is single scattering
-//       with an isotropic phase, S_sun = exp(-tau_light).
+//       with an isotropic phase, S_sun = exp(-tau_light). With `emission` (a fire's temperature,
+//       volume_emission.h) S gains L_e(T(p)), the emitted radiance of the temperature
+//       reconstructed at the sample point (absorption plus emission, Max 1995, eq. 8).
 // Rows are spread over std::threads; every pixel is computed independently, so the image does
 // not depend on the thread count.
 #include <vector>
@@ -19,6 +21,7 @@
 #include "engine/math/scattering_octaves.h"
 #include "engine/math/camera_math.h"
 #include "systems/reference/rgb_image.h"
+#include "systems/reference/volume_emission.h"
 
 namespace pyro {
 
@@ -39,6 +42,7 @@ struct VolumeRenderStats {
 RgbImage render_volume_reference(const DenseGrid& grid, const std::vector<float>& light_depth,
                                  const CameraFrame& camera, const VolumeMedium& medium,
                                  double step_voxels = 0.5, int threads = 0,
-                                 VolumeRenderStats* stats = nullptr, const SunScattering& sun = {});
+                                 VolumeRenderStats* stats = nullptr, const SunScattering& sun = {},
+                                 const VolumeEmission* emission = nullptr);
 
 }  // namespace pyro

@@ -1,6 +1,7 @@
 #pragma once
 // What a scene file says, as plain data: the loader (scene_loader.h) fills it from JSON and
 // checks every value; the scene builder turns it into entities.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -98,6 +99,17 @@ struct SequencePlayback {
   float speed = 1.0f;       // (0, 1000]: times the sequence's own fps
 };
 
+// A volume's fire (docs/scene_format.md, volumes[].emission): how its temperature values become
+// kelvin and how bright the hottest glows (engine/math/temperature_emission.h).
+struct VolumeEmissionDescription {
+  bool automatic = true;  // no "temperature" map given: the file's recorded map, else the automatic one
+  float scale = 1.0f, offset = 0.0f;  // kelvin = scale * value + offset
+  std::vector<std::array<float, 2>> table;  // (value, kelvin), values ascending; used when not empty
+  // The largest component of the hottest temperature's emitted radiance (engine/math/
+  // temperature_emission.h, kDefaultEmissionIntensity).
+  float intensity = 4.0f;
+};
+
 struct VolumeDescription {
   std::string name;                          // optional, for reports
   std::string file;                          // as written in the scene
@@ -113,6 +125,8 @@ struct VolumeDescription {
   int grid_index = -1;                       // >= 0: overrides `grid`
   float error = 0.03f;                       // (0, 1]
   float extinction = 0.0f;                   // >= 0, world units^-1 per unit density
+  std::string temperature_grid;              // VDB only: empty: automatic; "none": off
+  VolumeEmissionDescription emission;
   // Placement: p_scene = position + scale * (p_file - anchor), where anchor is the centre of the
   // particles' bounding box (anchor "center") or the file's origin (anchor "origin"). `size`,
   // when given, sets scale so that the bounding box's longest side is `size` world units. Radii

@@ -764,6 +764,40 @@ void read_sequence_playback(ObjectReader& r, bool any_sequence, SequencePlayback
   r.number("speed", Range{0.0, 1000.0, true, false}, p.speed);
 }
 
+// volumes[].emission.temperature.table: [[value, kelvin], ...], at least two, values ascending.
+std::vector<std::array<float, 2>> read_temperature_table(const json& v, const Where& at) {
+  const std::string expected = "expected an array of 2 to 1024 [value, kelvin] pairs, values strictly ascending";
+  if (!v.is_array() || v.size() < 2 || v.size() > 1024) at.fail(expected + ", found " + describe(v));
+  std::vector<std::array<float, 2>> table;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Where entry = at.child(std::to_string(i));
+    if (!v[i].is_array() || v[i].size() != 2) entry.fail(expected + "; this entry is " + describe(v[i]));
+    table.push_back({read_number(v[i][0], entry.child("0"), kAnyRange),
+                     read_number(v[i][1], entry.child("1"), Range{0.0, 1e6})});
+    if (i > 0 && !(table[i][0] > table[i - 1][0]))
+      entry.child("0").fail(expected + "; " + format_float(table[i][0]) + " follows " + format_float(table[i - 1][0]));
+  }
+  return table;
+}
+
+// volumes[].emission: {"temperature": {"scale", "offset"} or {"table"}, "intensity"}.
+void read_volume_emission(ObjectReader& r, VolumeEmissionDescription& e) {
+  r.object("temperature", [&](ObjectReader& t) {
+    e.automatic = false;
+    if (const json* table = t.find("table")) {
+      if (t.find("scale") != nullptr || t.find("offset") != nullptr)
+        t.at("table").fail("expected either \"table\" or \"scale\" and \"offset\", found both");
+      e.table = read_temperature_table(*table, t.at("table"));
+      return;
+    }
+    if (t.find("scale") == nullptr && t.find("offset") == nullptr)
+      t.where().fail("expected \"scale\" and \"offset\" (kelvin = scale value + offset) or \"table\", found neither");
+    t.number("scale", Range{-1e6, 1e6}, e.scale);
+    t.number("offset", Range{-1e6, 1e6}, e.offset);
+  });
+  r.number("intensity", Range{0.0, 1e6}, e.intensity);
+}
+
 void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene_file) {
   v.pointer = r.where().pointer;
   r.string("name", v.name);
@@ -788,10 +822,12 @@ void read_volume(ObjectReader& r, VolumeDescription& v, const std::string& scene
                                                                        : "a particle file (.pyrop)"));
     }
   };
-  for (std::string_view key : {"grid", "grid_index", "error", "extinction"}) vdb_only(key);
+  for (std::string_view key : {"grid", "grid_index", "error", "extinction", "temperature_grid"}) vdb_only(key);
   read_sequence_playback(r, file_kind == VolumeFileKind::sequence || (has_fallback && fallback_kind == VolumeFileKind::sequence),
                          v.sequence);
   r.string("grid", v.grid);
+  r.string("temperature_grid", v.temperature_grid);
+  r.object("emission", [&](ObjectReader& e) { read_volume_emission(e, v.emission); });
   if (r.find("grid_index") != nullptr) {
     r.integer("grid_index", 0, 1'000'000, v.grid_index);
     if (r.find("grid") != nullptr)

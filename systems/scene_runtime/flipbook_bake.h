@@ -18,8 +18,8 @@ namespace pyro {
 
 struct FlipbookBakeOptions {
   int frames = 32;
-  int width = 128;
-  int height = 192;
+  int width = 256;
+  int height = 384;
   // A seamless loop: frames + loop_blend steps are simulated, and frame j < loop_blend becomes
   // the linear-light mix of simulated frames frames + j and j with weight w_j = (j + 1) /
   // (loop_blend + 1) on frame j, so that the last frame runs on into frame 0 as into frame

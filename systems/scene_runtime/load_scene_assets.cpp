@@ -43,6 +43,7 @@ void load_volumes(const SceneDescription& scene, SceneAssets& assets, const Note
     }
     SceneVolume loaded = load_scene_volume(scene, v);
     if (!loaded.note.empty()) note(v.path + ": " + loaded.note);
+    if (!loaded.fire_note.empty()) note(v.path + ": " + loaded.fire_note);
     const uint64_t count = loaded.particles.size() + loaded.anisotropic.size();
     assets.volumes.push_back({to_particle_pool(loaded.particles), std::move(loaded.anisotropic),
                               VolumeSource{v.path, v.used_fallback, loaded.active_voxels, count}});

@@ -1,5 +1,5 @@
-// pyro import-vdb FILE [--grid NAME | --grid-index I] [--error E] --out FILE [--json]
-//                 [--width W] [--height H] [--samples N]
+// pyro import-vdb FILE [--grid NAME | --grid-index I] [--temperature-grid NAME|none] [--error E]
+//                 --out FILE [--json] [--width W] [--height H] [--samples N]
 // Reads one float grid, imports it as anisotropic Gaussian particles fitted to the grid until the
 // image error from every side meets the target (systems/benchmarks/fitted_import.h: the splats
 // drawn by the real GL renderer, offscreen, against the CPU reference render of the grid from
@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -22,6 +23,8 @@
 #include "engine/io/io_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
+#include "engine/io/vdb_temperature_grid.h"
+#include "engine/math/temperature_emission.h"
 #include "engine/volume/sparse_grid.h"
 #include "systems/cloud_import/vdb_sequence_members.h"
 #include "tools/pyro/commands.h"
@@ -36,6 +39,7 @@ namespace {
 
 struct ImportArgs {
   std::string file, grid, out;
+  std::string temperature_grid;  // empty: the first of kTemperatureGridNames; "none": off
   int grid_index = -1;
   double error = 0.03;
   int width = 256, height = 256;
@@ -73,13 +77,18 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 // Writes the particles and prints the summary (the import's fields, the command's own added).
 void finish_import(const ImportArgs& a, const GridHeader& grid, ParticleFile pf, nlohmann::json summary,
                    double read_seconds) {
-  pf.metadata_json = nlohmann::json{{"source", a.file},        {"grid", grid.name},
-                                    {"grid_index", grid.file_index}, {"error_target", a.error},
-                                    {"extinction", summary["extinction"]}, {"albedo", summary["albedo"]},
-                                    {"rmse", summary["rmse"]},
-                                    {"rmse_views_max", summary["rmse_views_max"]},
-                                    {"target_met", summary["target_met"]}, {"active_voxels", grid.active_voxels}}
-                         .dump();
+  nlohmann::json meta{{"source", a.file},
+                      {"grid", grid.name},
+                      {"grid_index", grid.file_index},
+                      {"error_target", a.error},
+                      {"extinction", summary["extinction"]},
+                      {"albedo", summary["albedo"]},
+                      {"rmse", summary["rmse"]},
+                      {"rmse_views_max", summary["rmse_views_max"]},
+                      {"target_met", summary["target_met"]},
+                      {"active_voxels", grid.active_voxels}};
+  if (summary.contains("temperature") && !summary["temperature"].is_null()) meta["temperature"] = summary["temperature"];
+  pf.metadata_json = meta.dump();
   write_particle_file(a.out, pf);
   const double seconds = read_seconds + summary["import_seconds"].get<double>();
   summary.update({{"grid", grid.name}, {"read_seconds", read_seconds}, {"seconds", seconds},
@@ -124,6 +133,40 @@ void check_destination(const ImportArgs& a) {
     say(a, "removed " + std::to_string(removed) + " temporary file(s) of " + a.out + " that killed runs had left");
 }
 
+// The temperature grid beside the density (none, or read into the density's index space) and
+// the emission the import is measured with: the automatic mapping for its values at the default
+// intensity (engine/math/temperature_emission.h), as a scene shows it unless told otherwise.
+struct ImportTemperature {
+  std::optional<VdbGridInfo> grid;
+  VolumeEmission emission;
+  nlohmann::json summary;  // null without a temperature grid
+};
+
+ImportTemperature read_import_temperature(const ImportArgs& a, const GridHeader& density) {
+  ImportTemperature t;
+  t.grid = choose_temperature_grid(a.file, list_vdb_grids(a.file), a.temperature_grid, "--temperature-grid");
+  if (!t.grid) {
+    say(a, a.temperature_grid == "none" ? "temperature off (--temperature-grid none)"
+                                        : "no temperature grid (looked for \"temperature\", \"heat\", \"flame\"): smoke only");
+    return t;
+  }
+  t.emission.temperature = read_temperature_grid(a.file, *t.grid, density);
+  const double top = t.emission.temperature.max_value;
+  const TemperatureMapping mapping = automatic_temperature_mapping(top);
+  t.emission.emission = make_temperature_emission(mapping, kDefaultEmissionIntensity, top);
+  t.summary = {{"grid", t.grid->name},       {"grid_index", t.grid->index},
+               {"max", top},                 {"mapping", automatic_mapping_kind(top)},
+               {"scale", mapping.scale},     {"offset", mapping.offset},
+               {"intensity", kDefaultEmissionIntensity}, {"hottest_kelvin", t.emission.emission.hottest_kelvin}};
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "temperature grid \"%s\" (largest value %g: %s, kelvin = %g value + %g, hottest %.0f K)",
+                t.grid->name.c_str(), top, automatic_mapping_kind(top).c_str(), mapping.scale, mapping.offset,
+                t.emission.emission.hottest_kelvin);
+  say(a, text);
+  return t;
+}
+
 void run_import(const ImportArgs& a) {
   // An animated sequence (a printf pattern, a glob or a folder): tools/pyro/import_sequence.h.
   if (names_vdb_sequence(a.file)) {
@@ -152,6 +195,10 @@ void run_import(const ImportArgs& a) {
   if (sparse.empty()) say(a, "grid \"" + sparse.name + "\" has no active voxels; writing 0 particles");
   ParticleFile pf;
   if (sparse.box_voxels() > kMaxDenseGridVoxels) {
+    if (!a.temperature_grid.empty() && a.temperature_grid != "none")
+      throw UserError(a.file, "--temperature-grid",
+                      "a density grid small enough for a dense box to import a temperature beside it; \"" +
+                          sparse.name + "\" is imported sparse (use --temperature-grid none)");
     progress.stage(2, "import, and measure against the path-traced truth");
     SparseImport u = import_sparse(sparse, a.error, std::min(a.width, a.height), a.samples);
     say(a, u.reason);
@@ -160,9 +207,11 @@ void run_import(const ImportArgs& a) {
     return finish_import(a, sparse, std::move(pf), sparse_import_summary(u, a.error), read_seconds);
   }
   const DenseGrid grid = dense_from_sparse(sparse);
+  ImportTemperature temperature = read_import_temperature(a, grid);
   // The image error of what the engine draws against the ground truth, from every side.
   progress.stage(1, "reference views");
-  const VdbImportReference reference = make_vdb_import_reference(grid, a.width, a.height, true);
+  const VdbImportReference reference =
+      make_vdb_import_reference(grid, a.width, a.height, true, std::move(temperature.emission));
   progress.stage(2, "import and measure");
   const FittedImport fit = import_to_target(grid, a.error, reference);
   if (!fit.target_met) {
@@ -176,7 +225,10 @@ void run_import(const ImportArgs& a) {
   progress.update(3);
   progress.finish();
   pf.anisotropic = fit.best.fitted;
-  finish_import(a, grid, std::move(pf), fitted_import_summary(fit, reference, a.error), read_seconds);
+  pf.temperature = fit.best.temperatures;
+  nlohmann::json summary = fitted_import_summary(fit, reference, a.error);
+  summary["temperature"] = temperature.summary;
+  finish_import(a, grid, std::move(pf), std::move(summary), read_seconds);
 }
 
 }  // namespace
@@ -190,6 +242,9 @@ void add_import_command(CLI::App& app) {
       ->required();
   cmd->add_option("--grid", args->grid, "Grid name (default: \"density\", else the first float grid)");
   cmd->add_option("--grid-index", args->grid_index, "Grid position in the file, from 0 (for repeated names)");
+  cmd->add_option("--temperature-grid", args->temperature_grid,
+                  "Temperature grid for fire (default: \"temperature\", \"heat\" or \"flame\", the first present; "
+                  "\"none\": off)");
   cmd->add_option("--error", args->error, "Image error target in (0, 1] (default 0.03)");
   cmd->add_option("--out", args->out,
                   "Particle file to write (.pyrop), or for a sequence the folder (.pyroseq); required unless --list");

@@ -190,5 +190,80 @@ TEST(ParticleFile, TheImportedAlbedoComesFromTheMetadata) {
   EXPECT_THROW(imported_albedo("a.pyrop", f), UserError);
 }
 
+// The temperature channel: one float32 more per record, last, in either version.
+TEST(ParticleFile, TemperatureChannelIsTheRecordsLastFieldInBothVersions) {
+  const auto dir = test::scratch_dir("particle_file_temperature");
+  ParticleFile v2 = read_particle_file([&] {
+    std::string bytes = header(2, 56, 2, "{}");
+    append_floats(bytes, two_records());
+    write_bytes(dir / "plain.pyrop", bytes);
+    return (dir / "plain.pyrop").string();
+  }());
+  EXPECT_TRUE(v2.temperature.empty());  // files without the channel read as before
+  v2.temperature = {1850.0f, 0.25f};
+  write_particle_file((dir / "hot2.pyrop").string(), v2);
+  std::vector<float> records = two_records();
+  records.insert(records.begin() + 14, 1850.0f);
+  records.push_back(0.25f);
+  std::string want = header(2, 60, 2, "{}");
+  append_floats(want, records);
+  EXPECT_EQ(test::read_bytes(dir / "hot2.pyrop"), want);
+  EXPECT_EQ(read_particle_file((dir / "hot2.pyrop").string()).temperature, v2.temperature);
+
+  std::string v1 = header(1, 36, 1, "{}");
+  append_floats(v1, {0, 1, 2, 0.5f, 0.25f, 1, 0.5f, 0.25f, 0.75f});
+  write_bytes(dir / "hot1.pyrop", v1);
+  const ParticleFile back = read_particle_file((dir / "hot1.pyrop").string());
+  ASSERT_EQ(back.particles.size(), 1u);
+  EXPECT_EQ(back.particles[0].density, 0.25f);
+  EXPECT_EQ(back.temperature, std::vector<float>{0.75f});
+  write_particle_file((dir / "again1.pyrop").string(), back);
+  EXPECT_EQ(test::read_bytes(dir / "again1.pyrop"), v1);
+}
+
+TEST(ParticleFile, BadTemperaturesAreRefusedNamingFileAndParticle) {
+  const auto dir = test::scratch_dir("particle_file_bad_temperature");
+  std::string bytes = header(1, 36, 2, "{}");
+  append_floats(bytes, {0, 1, 2, 0.5f, 0.25f, 1, 0.5f, 0.25f, 1.0f, 0, 1, 2, 0.5f, 0.25f, 1, 0.5f, 0.25f,
+                        std::numeric_limits<float>::quiet_NaN()});
+  write_bytes(dir / "nan.pyrop", bytes);
+  try {
+    read_particle_file((dir / "nan.pyrop").string());
+    ADD_FAILURE() << "a NaN temperature was accepted";
+  } catch (const UserError& e) {
+    EXPECT_EQ(e.file(), (dir / "nan.pyrop").string());
+    EXPECT_EQ(e.place(), "particle 1");
+  }
+  ParticleFile f;
+  f.particles.resize(2);
+  f.temperature = {1.0f};  // one short
+  EXPECT_THROW(write_particle_file((dir / "short.pyrop").string(), f), UserError);
+  f.temperature = {1.0f, 2e6f};
+  EXPECT_THROW(write_particle_file((dir / "big.pyrop").string(), f), UserError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "short.pyrop"));
+  std::string odd = header(2, 64, 0, "{}");  // neither 56 nor 60
+  write_bytes(dir / "odd.pyrop", odd);
+  EXPECT_THROW(read_particle_file((dir / "odd.pyrop").string()), UserError);
+}
+
+TEST(ParticleFile, RecordedTemperatureMapComesFromTheMetadata) {
+  ParticleFile f;
+  EXPECT_FALSE(recorded_temperature("f.pyrop", f).has_value());
+  f.metadata_json = R"({"temperature": {"grid": "heat", "max": 3.5, "scale": 428.6, "offset": 1000}})";
+  const auto r = recorded_temperature("f.pyrop", f);
+  ASSERT_TRUE(r.has_value());
+  EXPECT_EQ(r->grid, "heat");
+  EXPECT_DOUBLE_EQ(r->max, 3.5);
+  EXPECT_DOUBLE_EQ(r->scale, 428.6);
+  EXPECT_DOUBLE_EQ(r->offset, 1000.0);
+  f.metadata_json = R"({"temperature": {"scale": "hot"}})";
+  try {
+    recorded_temperature("f.pyrop", f);
+    ADD_FAILURE() << "a string scale was accepted";
+  } catch (const UserError& e) {
+    EXPECT_EQ(e.place(), "metadata/temperature/scale");
+  }
+}
+
 }  // namespace
 }  // namespace pyro

@@ -1,6 +1,8 @@
-// RMSE of images against closed forms: a uniform offset, alpha ignored, display clamping, sRGB
-// decoding.
+// RMSE of images against closed forms: a uniform offset, alpha ignored, values as a display shows
+// them, sRGB decoding.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "engine/math/image_error.h"
 
@@ -13,9 +15,15 @@ TEST(ImageError, UniformOffsetGivesThatOffset) {
   EXPECT_NEAR(rgba_rmse(a, b), 0.1, 1e-7);
 }
 
-TEST(ImageError, ValuesAreClampedToWhatADisplayShows) {
-  const std::vector<float> a = {2.0f, -1.0f, 0.5f, 1.0f}, b = {1.0f, 0.0f, 0.5f, 0.0f};
-  EXPECT_EQ(rgba_rmse(a, b), 0.0);
+TEST(ImageError, ValuesAreComparedAsADisplayShowsThem) {
+  // Negative at 0; above 1, c / m² + 1 − 1/m with m the largest channel (2 here): the display's
+  // roll-off, which keeps the hue.
+  const std::vector<float> a = {2.0f, -1.0f, 0.5f, 1.0f}, b = {1.0f, 0.5f, 0.625f, 0.0f};
+  EXPECT_NEAR(rgba_rmse(a, b), 0.0, 1e-7);
+  const std::vector<float> grey = {3.0f, 3.0f, 3.0f, 1.0f}, white = {1.0f, 1.0f, 1.0f, 1.0f};
+  EXPECT_NEAR(rgba_rmse(grey, white), 0.0, 1e-7);
+  // Per-channel clipping would call {2, -1, 0.5} and {1, 0, 0.5} the same colour.
+  EXPECT_NEAR(rgba_rmse(a, {1.0f, 0.0f, 0.5f, 0.0f}), std::sqrt((0.25 + 0.125 * 0.125) / 3.0), 1e-7);
 }
 
 TEST(ImageError, SrgbBytesAreComparedInLinearLight) {

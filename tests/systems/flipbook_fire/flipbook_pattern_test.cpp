@@ -69,7 +69,7 @@ TEST(FlipbookPattern, ThesisIncrementsHalveTheCoherentMotion) {
 // thesis' one frame apart marches.
 TEST(FlipbookPattern, RowStartsApartFromEveryIncrementRemoveTheMarchAndTheCircle) {
   const SceneDescription campfire = load_scene(test::scene_path("campfire.json"));
-  ASSERT_EQ(campfire.fires.size(), 2u);
+  ASSERT_EQ(campfire.fires.size(), 1u);
   for (const FlipbookFire& fire : campfire.fires) {
     const PatternMotion m = measure_pattern_motion(expand_flipbook_groups(fire), 32);
     EXPECT_EQ(m.march, 0.0);
@@ -77,7 +77,7 @@ TEST(FlipbookPattern, RowStartsApartFromEveryIncrementRemoveTheMarchAndTheCircle
     EXPECT_LT(m.transfers, 0.05);  // isolated hand-overs where columns of unlike increments meet
     FlipbookFire thesis = fire;
     for (FlipbookGroup& g : thesis.groups) g.row_start_step = 1;
-    EXPECT_GT(measure_pattern_motion(expand_flipbook_groups(thesis), 32).march, 0.2);
+    EXPECT_GT(measure_pattern_motion(expand_flipbook_groups(thesis), 32).march, 0.1);
   }
 }
 

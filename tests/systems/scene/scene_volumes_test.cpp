@@ -108,5 +108,46 @@ TEST_F(SceneVolumes, RefusesEveryKindOfMistake) {
                {"particle file (.pyrop)", "cloud.pyrop"});
 }
 
+TEST_F(SceneVolumes, ReadsTheFiresEmission) {
+  const SceneDescription d = parse_scene(with_volumes(R"({"file": "../volumes/cloud.vdb"})"), scene_);
+  EXPECT_TRUE(d.volumes[0].emission.automatic);
+  EXPECT_FLOAT_EQ(d.volumes[0].emission.intensity, 4.0f);
+  EXPECT_TRUE(d.volumes[0].temperature_grid.empty());
+  const SceneDescription s = parse_scene(
+      with_volumes(R"({"file": "../volumes/cloud.vdb", "temperature_grid": "flame",
+                       "emission": {"temperature": {"scale": 1500, "offset": 1000}, "intensity": 3}},
+                      {"file": "../volumes/cloud.pyrop",
+                       "emission": {"temperature": {"table": [[0, 900], [0.5, 1800], [1, 2400]]}}})"),
+      scene_);
+  const VolumeEmissionDescription& a = s.volumes[0].emission;
+  EXPECT_EQ(s.volumes[0].temperature_grid, "flame");
+  EXPECT_FALSE(a.automatic);
+  EXPECT_FLOAT_EQ(a.scale, 1500.0f);
+  EXPECT_FLOAT_EQ(a.offset, 1000.0f);
+  EXPECT_FLOAT_EQ(a.intensity, 3.0f);
+  const VolumeEmissionDescription& b = s.volumes[1].emission;
+  ASSERT_EQ(b.table.size(), 3u);
+  EXPECT_FLOAT_EQ(b.table[1][0], 0.5f);
+  EXPECT_FLOAT_EQ(b.table[2][1], 2400.0f);
+}
+
+TEST_F(SceneVolumes, RefusesEveryMistakeInTheFire) {
+  const std::string vdb = R"("file": "../volumes/cloud.vdb", )";
+  expect_error("{" + vdb + R"("emission": {"temperature": {"table": [[0, 900], [0, 1800]]}}})",
+               "/volumes/0/emission/temperature/table/1/0", {"strictly ascending", "0 follows 0"});
+  expect_error("{" + vdb + R"("emission": {"temperature": {"table": [[0, 900]]}}})",
+               "/volumes/0/emission/temperature/table", {"2 to 1024"});
+  expect_error("{" + vdb + R"("emission": {"temperature": {"table": [[0, 900], [1, -5]]}}})",
+               "/volumes/0/emission/temperature/table/1/1", {"[0, 1e6]"});
+  expect_error("{" + vdb + R"("emission": {"temperature": {"table": [[0, 900], [1, 2000]], "scale": 2}}})",
+               "/volumes/0/emission/temperature/table", {"found both"});
+  expect_error("{" + vdb + R"("emission": {"temperature": {}}})", "/volumes/0/emission/temperature",
+               {"found neither"});
+  expect_error("{" + vdb + R"("emission": {"intensity": -1}})", "/volumes/0/emission/intensity", {"[0, 1e6]"});
+  expect_error("{" + vdb + R"("emission": {"intensty": 2}})", "/volumes/0/emission/intensty", {"intensity"});
+  expect_error(R"({"file": "../volumes/cloud.pyrop", "temperature_grid": "heat"})", "/volumes/0/temperature_grid",
+               {"OpenVDB"});
+}
+
 }  // namespace
 }  // namespace pyro
