@@ -174,6 +174,10 @@ void run_import(const ImportArgs& a) {
       throw UserError(a.file, "--list", "one OpenVDB file to list, found " +
                                             (std::filesystem::is_directory(a.file) ? std::string("a folder (a sequence)")
                                                                                    : std::string("a sequence pattern")));
+    if (!a.temperature_grid.empty() && a.temperature_grid != "none")
+      throw UserError(a.file, "--temperature-grid",
+                      "one OpenVDB file: a sequence imports its density grid only (each frame's temperature is "
+                      "not imported yet), found a sequence");
     return run_sequence_import({a.file, a.out, {a.grid, a.grid_index}, a.error, a.extinction, a.fps, a.json});
   }
   if (const std::string kind = non_regular_file_kind(a.file); !kind.empty())

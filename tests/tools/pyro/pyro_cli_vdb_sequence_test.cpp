@@ -105,6 +105,10 @@ TEST_F(PyroCliVdbSequence, AGapOrADamagedMemberIsRefusedByNameAndNothingIsWritte
   r = import(pattern_, dir_ / "x.pyrop");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find(".pyroseq"), std::string::npos) << r.err;
+  r = import(pattern_, dir_ / "x.pyroseq", {"--temperature-grid", "heat"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--temperature-grid"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "x.pyroseq"));
 }
 
 TEST(PyroCliVdbSequenceShared, TheEmptyFirstFrameOfTheOpenUsdSmokeDrawsNothing) {
