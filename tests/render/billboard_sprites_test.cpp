@@ -27,7 +27,7 @@ struct Render {
   size_t sprites = 0, quads = 0, off_view_sprites = 0;
 };
 
-Render render(float layer_scale, ParticleShape shape, StereoMode mode, bool sprites) {
+Render render_billboard_sprites(float layer_scale, ParticleShape shape, StereoMode mode, bool sprites) {
   SceneDescription scene =
       load_scene(std::string(PYRO_SOURCE_DIR) + "/content/scenes/explosion.json");
   scene.camera.position = {1.2f, 2.2f, 2.6f};  // inside the smoke, looking across the fire
@@ -78,8 +78,8 @@ TEST(BillboardSprites, SameImageAsQuads) {
                         Case{1.0f, ParticleShape::spherical, StereoMode::mono},
                         Case{0.5f, ParticleShape::planar, StereoMode::mono},
                         Case{0.5f, ParticleShape::spherical, StereoMode::side_by_side}}) {
-    const Render sprites = render(c.scale, c.shape, c.mode, true);
-    const Render quads = render(c.scale, c.shape, c.mode, false);
+    const Render sprites = render_billboard_sprites(c.scale, c.shape, c.mode, true);
+    const Render quads = render_billboard_sprites(c.scale, c.shape, c.mode, false);
     // The view mixes both primitives, and sprites centred off the view.
     EXPECT_GT(sprites.sprites, 20u) << c.scale;
     EXPECT_GT(sprites.quads, 0u) << c.scale;

@@ -24,7 +24,7 @@ struct Frames {
   size_t drawn = 0;  // the first view's list, summed over the frames
 };
 
-Frames render(const SceneDescription& scene, StereoMode mode, bool cull) {
+Frames render_culling_frames(const SceneDescription& scene, StereoMode mode, bool cull) {
   RuntimeOptions o;
   o.width_override = 80;
   o.height_override = 60;
@@ -68,7 +68,7 @@ TEST(CullingFrames, EveryShippedSceneRendersTheSameBytesWithAndWithoutCulling) {
     }
     for (size_t v = 0; v < views.size(); ++v)
       for (const StereoMode mode : {StereoMode::mono, StereoMode::side_by_side}) {
-        const Frames on = render(views[v], mode, true), off = render(views[v], mode, false);
+        const Frames on = render_culling_frames(views[v], mode, true), off = render_culling_frames(views[v], mode, false);
         for (size_t f = 0; f < on.images.size(); ++f)
           EXPECT_TRUE(on.images[f] == off.images[f])
               << name << (v ? " from among its particles" : "") << ", stereo " << int(mode)

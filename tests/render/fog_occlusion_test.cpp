@@ -14,7 +14,7 @@
 namespace pyro {
 namespace {
 
-std::vector<float> render(SceneDescription s) {
+std::vector<float> render_fog_occlusion(SceneDescription s) {
   RuntimeOptions o;
   o.width_override = 240;
   o.height_override = 180;
@@ -37,7 +37,7 @@ TEST(FogOcclusion, WaterTowerIsPartlyHiddenByFog) {
   drop_tower(clear_no_tower);
   clear.clouds.clear();
   clear_no_tower.clouds.clear();
-  const auto a = render(fog), b = render(fog_no_tower), c = render(clear), d = render(clear_no_tower);
+  const auto a = render_fog_occlusion(fog), b = render_fog_occlusion(fog_no_tower), c = render_fog_occlusion(clear), d = render_fog_occlusion(clear_no_tower);
 
   std::vector<float> visible;
   for (size_t p = 0; p < a.size() / 4; ++p) {

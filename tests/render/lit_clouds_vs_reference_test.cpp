@@ -18,7 +18,7 @@
 namespace pyro {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 120;
+constexpr int kLitCloudsVsReferenceWidth = 160, kLitCloudsVsReferenceHeight = 120;
 
 SceneDescription lit_clouds(ShadowMethod method) {
   SceneDescription scene = load_scene(test::scene_path("clouds.json"));
@@ -28,16 +28,16 @@ SceneDescription lit_clouds(ShadowMethod method) {
   return scene;
 }
 
-RgbImage engine_frame(const SceneDescription& scene) { return test::rendered_frame(scene, kWidth, kHeight); }
+RgbImage engine_frame_lit_clouds_vs_reference(const SceneDescription& scene) { return test::rendered_frame(scene, kLitCloudsVsReferenceWidth, kLitCloudsVsReferenceHeight); }
 
 class LitClouds : public testing::Test {
  protected:
   static void SetUpTestSuite() {
-    reference_ = new RgbImage(particle_scene_references(lit_clouds(ShadowMethod::rays), kWidth, kHeight, {0}).at(0));
+    reference_ = new RgbImage(particle_scene_references(lit_clouds(ShadowMethod::rays), kLitCloudsVsReferenceWidth, kLitCloudsVsReferenceHeight, {0}).at(0));
   }
   static void TearDownTestSuite() { delete reference_; }
   static double rmse(ShadowMethod method) {
-    const RgbImage img = engine_frame(lit_clouds(method));
+    const RgbImage img = engine_frame_lit_clouds_vs_reference(lit_clouds(method));
     const double e = image_rmse(img, *reference_);
     std::printf("%s: rmse %.5f\n", name_of(method).data(), e);
     return e;
@@ -57,11 +57,11 @@ TEST_F(LitClouds, WithoutShadowsTheFrameIsNot) { EXPECT_GT(rmse(ShadowMethod::no
 TEST(LitCloudsScattering, ForwardLobeAndOctavesMatchTheReference) {
   SceneDescription scene = lit_clouds(ShadowMethod::shadow_map);
   scene.shadows->scattering = {0.6, {4, 0.25, 0.5, 0.5}};
-  const RgbImage engine = engine_frame(scene);
+  const RgbImage engine = engine_frame_lit_clouds_vs_reference(scene);
   scene.shadows->method = ShadowMethod::rays;
-  const RgbImage reference = particle_scene_references(scene, kWidth, kHeight, {0}).at(0);
+  const RgbImage reference = particle_scene_references(scene, kLitCloudsVsReferenceWidth, kLitCloudsVsReferenceHeight, {0}).at(0);
   const double e = image_rmse(engine, reference);
-  const double single = image_rmse(engine_frame(lit_clouds(ShadowMethod::shadow_map)), reference);
+  const double single = image_rmse(engine_frame_lit_clouds_vs_reference(lit_clouds(ShadowMethod::shadow_map)), reference);
   std::printf("octaves: rmse %.5f; single scattering against them %.5f\n", e, single);
   EXPECT_LE(e, 0.02);
   EXPECT_GT(single, 2.0 * e);

@@ -24,7 +24,7 @@
 namespace pyro {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 90;
+constexpr int kLitFittedCloudWidth = 160, kLitFittedCloudHeight = 90;
 
 // The shipped scene (lit, with a forward lobe and three octaves) with `method`.
 SceneDescription lit_fitted(ShadowMethod method) {
@@ -37,13 +37,13 @@ SceneDescription lit_fitted(ShadowMethod method) {
 SceneRuntime runtime_of(const SceneDescription& scene) {
   RuntimeOptions o;
   o.readback = true;
-  o.width_override = kWidth;
-  o.height_override = kHeight;
+  o.width_override = kLitFittedCloudWidth;
+  o.height_override = kLitFittedCloudHeight;
   return SceneRuntime(scene, o);
 }
 
 RgbImage reference_of(const SceneDescription& scene) {
-  return particle_scene_references(scene, kWidth, kHeight, {0}).at(0);
+  return particle_scene_references(scene, kLitFittedCloudWidth, kLitFittedCloudHeight, {0}).at(0);
 }
 
 double rmse(ShadowMethod method, const RgbImage& reference) {

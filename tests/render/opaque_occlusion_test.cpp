@@ -37,7 +37,7 @@ SceneDescription looking_down(float particle_y) {
   return s;
 }
 
-std::vector<float> render(float particle_y) {
+std::vector<float> render_opaque_occlusion(float particle_y) {
   SceneRuntime r(looking_down(particle_y));
   r.step();
   return r.image().rgba;
@@ -50,9 +50,9 @@ double max_red_change(const std::vector<float>& a, const std::vector<float>& b) 
 }
 
 TEST(OpaqueOcclusion, GroundHidesParticlesBelowIt) {
-  const auto ground_only = render(NAN);
-  EXPECT_EQ(max_red_change(render(-0.5f), ground_only), 0.0) << "particle under the ground must be hidden";
-  EXPECT_GT(max_red_change(render(0.5f), ground_only), 0.5) << "particle above the ground must show";
+  const auto ground_only = render_opaque_occlusion(NAN);
+  EXPECT_EQ(max_red_change(render_opaque_occlusion(-0.5f), ground_only), 0.0) << "particle under the ground must be hidden";
+  EXPECT_GT(max_red_change(render_opaque_occlusion(0.5f), ground_only), 0.5) << "particle above the ground must show";
 }
 
 }  // namespace

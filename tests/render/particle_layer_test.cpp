@@ -16,7 +16,7 @@
 namespace pyro {
 namespace {
 
-double rmse(const std::vector<float>& a, const std::vector<float>& b) {
+double rmse_particle_layer(const std::vector<float>& a, const std::vector<float>& b) {
   double s = 0;
   size_t n = 0;
   for (size_t i = 0; i < a.size(); ++i) {
@@ -33,7 +33,7 @@ struct Rendered {
   std::vector<uint8_t> output;
 };
 
-Rendered render(float layer_scale) {
+Rendered render_particle_layer(float layer_scale) {
   RuntimeOptions o;
   o.width_override = 160;
   o.height_override = 120;
@@ -44,10 +44,10 @@ Rendered render(float layer_scale) {
 }
 
 TEST(ParticleLayer, ErrorGrowsAsTheLayerShrinksAndStaysSmall) {
-  const Rendered full = render(1.0f);
+  const Rendered full = render_particle_layer(1.0f);
   double previous = 0.0;
   for (float scale : {0.5f, 0.25f, 0.125f}) {
-    const double e = rmse(render(scale).linear, full.linear);
+    const double e = rmse_particle_layer(render_particle_layer(scale).linear, full.linear);
     EXPECT_GT(e, previous) << "scale " << scale;
     EXPECT_LT(e, 0.05) << "scale " << scale;
     previous = e;
@@ -57,7 +57,7 @@ TEST(ParticleLayer, ErrorGrowsAsTheLayerShrinksAndStaysSmall) {
 
 TEST(ParticleLayer, FinalCompositionMatchesTheLinearReadback) {
   for (float scale : {1.0f, 0.25f}) {
-    const Rendered r = render(scale);
+    const Rendered r = render_particle_layer(scale);
     int worst = 0;
     for (size_t p = 0; p < r.linear.size() / 4; ++p)
       for (int c = 0; c < 3; ++c)

@@ -16,7 +16,7 @@ namespace pyro {
 namespace {
 
 constexpr float kTau = 1.5f;
-constexpr float kRadius = 0.5f;
+constexpr float kSphereBillboardRadius = 0.5f;
 
 SceneDescription one_sphere(const glm::vec3& at, const glm::vec3& eye, const glm::vec3& target,
                             bool ground) {
@@ -33,7 +33,7 @@ SceneDescription one_sphere(const glm::vec3& at, const glm::vec3& eye, const glm
   s.render.particles = ParticleShape::spherical;
   CloudDescription c;
   c.count = 1;
-  c.radius = kRadius;
+  c.radius = kSphereBillboardRadius;
   c.density = kTau;
   c.color = {1, 1, 1};
   c.box_min = c.box_max = at;
@@ -48,7 +48,7 @@ SceneDescription one_sphere(const glm::vec3& at, const glm::vec3& eye, const glm
   return s;
 }
 
-std::vector<float> render(const SceneDescription& s, ParticleShape shape) {
+std::vector<float> render_sphere_billboard(const SceneDescription& s, ParticleShape shape) {
   RuntimeOptions o;
   o.particles = shape;
   SceneRuntime r(s, o);
@@ -59,7 +59,7 @@ std::vector<float> render(const SceneDescription& s, ParticleShape shape) {
 TEST(SphereBillboard, OpacityFollowsTheExactChordOfEachRay) {
   const glm::vec3 at{0.4f, -0.2f, -2.5f};
   const SceneDescription s = one_sphere(at, {0, 0, 0}, {0, 0, -1}, false);
-  const auto img = render(s, ParticleShape::spherical);
+  const auto img = render_sphere_billboard(s, ParticleShape::spherical);
   const double t = std::tan(50.0 * M_PI / 360.0);
   double worst = 0;
   int covered = 0;
@@ -72,9 +72,9 @@ TEST(SphereBillboard, OpacityFollowsTheExactChordOfEachRay) {
       const double along = glm::dot(c, dir);
       const double d = std::sqrt(std::max(glm::dot(c, c) - along * along, 0.0));
       double expected = 0;
-      if (d < kRadius) {
-        const double chord = 2.0 * std::sqrt(kRadius * kRadius - d * d);
-        expected = 1.0 - std::exp(-kTau * (1.0 - d / kRadius) * chord);
+      if (d < kSphereBillboardRadius) {
+        const double chord = 2.0 * std::sqrt(kSphereBillboardRadius * kSphereBillboardRadius - d * d);
+        expected = 1.0 - std::exp(-kTau * (1.0 - d / kSphereBillboardRadius) * chord);
         ++covered;
       }
       worst = std::max(worst, std::abs(img[(static_cast<size_t>(y) * 96 + x) * 4] - expected));
@@ -87,7 +87,7 @@ TEST(SphereBillboard, OpaqueSurfaceCutsThePathWhereItReallyIs) {
   // Looking straight down at a sphere half sunk into the ground: the centre ray travels r inside
   // the medium before it hits the ground, so alpha = 1 - exp(-tau r).
   // Pixel (48, 36) is half a pixel off the axis in x and y; its ray is computed exactly.
-  const auto img = render(one_sphere({0, 0, 0}, {0, 5, 0}, {0, 0, 0}, true), ParticleShape::spherical);
+  const auto img = render_sphere_billboard(one_sphere({0, 0, 0}, {0, 5, 0}, {0, 0, 0}, true), ParticleShape::spherical);
   const float centre = img[(static_cast<size_t>(36) * 96 + 48) * 4];
   const double t = std::tan(50.0 * M_PI / 360.0);
   // Camera at (0, 5, 0) looking down with up = -z: right = +x, image up = -z.
@@ -97,8 +97,8 @@ TEST(SphereBillboard, OpaqueSurfaceCutsThePathWhereItReallyIs) {
   const double closest = glm::dot(-eye, dir);  // ray parameter nearest the centre
   const double d = glm::length(eye + closest * dir);
   const double ground = 5.0 / -dir.y;           // ray parameter where it meets y = 0
-  const double entry = closest - std::sqrt(kRadius * kRadius - d * d);
-  const double expected = 1.0 - std::exp(-kTau * (1.0 - d / kRadius) * (ground - entry));
+  const double entry = closest - std::sqrt(kSphereBillboardRadius * kSphereBillboardRadius - d * d);
+  const double expected = 1.0 - std::exp(-kTau * (1.0 - d / kSphereBillboardRadius) * (ground - entry));
   EXPECT_NEAR(centre, expected, 2e-3);
   EXPECT_LT(expected, 0.6) << "the ground must cut the path roughly in half";
 }
@@ -119,8 +119,8 @@ TEST(SphereBillboard, CameraPassingThroughAParticleDoesNotPop) {
   for (int k = 0; k <= 50; ++k) {
     const float z = 0.6f - 0.02f * k;  // particle at the origin, eye from z = 0.6 to -0.4
     SceneDescription s = one_sphere({0, 0, 0}, {0, 0, z}, {0, 0, z - 1}, false);
-    spherical.push_back(render(s, ParticleShape::spherical));
-    planar.push_back(render(s, ParticleShape::planar));
+    spherical.push_back(render_sphere_billboard(s, ParticleShape::spherical));
+    planar.push_back(render_sphere_billboard(s, ParticleShape::planar));
   }
   EXPECT_LT(max_step(spherical), 0.08);
   EXPECT_GT(max_step(planar), 0.3);
@@ -133,8 +133,8 @@ TEST(SphereBillboard, ParticleSinkingThroughTheGroundDoesNotPop) {
   for (int k = 0; k <= 50; ++k) {
     const float y = 0.5f - 0.02f * k;
     SceneDescription s = one_sphere({0, y, 0}, {0, 5, 0}, {0, 0, 0}, true);
-    spherical.push_back(render(s, ParticleShape::spherical));
-    planar.push_back(render(s, ParticleShape::planar));
+    spherical.push_back(render_sphere_billboard(s, ParticleShape::spherical));
+    planar.push_back(render_sphere_billboard(s, ParticleShape::planar));
   }
   EXPECT_LT(max_step(spherical), 0.08);
   EXPECT_GT(max_step(planar), 0.3);

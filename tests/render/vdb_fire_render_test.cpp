@@ -28,7 +28,7 @@
 namespace pyro {
 namespace {
 
-constexpr int kWidth = 120, kHeight = 96;
+constexpr int kVdbFireRenderWidth = 120, kVdbFireRenderHeight = 96;
 
 TEST(VdbFireRender, OneEmittingParticleMatchesItsClosedForm) {
   AnisotropicGaussian g;
@@ -84,7 +84,7 @@ std::string fire_scene(const std::filesystem::path& dir, bool lit, double intens
   return path;
 }
 
-RgbImage engine_frame(const SceneDescription& scene) {
+RgbImage engine_frame_vdb_fire_render(const SceneDescription& scene) {
   RuntimeOptions o;
   o.readback = true;
   SceneRuntime runtime(scene, o);
@@ -105,9 +105,9 @@ RgbImage minus(const RgbImage& a, const RgbImage& b) {
 void check_fire(bool lit) {
   const std::filesystem::path dir = test::scratch_dir(lit ? "vdb_fire_lit" : "vdb_fire_unlit");
   const SceneDescription hot = load_scene(fire_scene(dir, lit, 8.0)), dark = load_scene(fire_scene(dir, lit, 0.0));
-  const RgbImage engine = minus(engine_frame(hot), engine_frame(dark));
-  const RgbImage reference = minus(particle_scene_references(hot, kWidth, kHeight, {0}).at(0),
-                                   particle_scene_references(dark, kWidth, kHeight, {0}).at(0));
+  const RgbImage engine = minus(engine_frame_vdb_fire_render(hot), engine_frame_vdb_fire_render(dark));
+  const RgbImage reference = minus(particle_scene_references(hot, kVdbFireRenderWidth, kVdbFireRenderHeight, {0}).at(0),
+                                   particle_scene_references(dark, kVdbFireRenderWidth, kVdbFireRenderHeight, {0}).at(0));
   RgbImage black = engine;
   std::fill(black.rgb.begin(), black.rgb.end(), 0.0f);
   const double error = image_rmse(engine, reference), glow = image_rmse(reference, black);

@@ -20,10 +20,10 @@ using pyro::ecs::SystemDesc;
 using pyro::ecs::World;
 using pyro::ecs::Writes;
 
-struct Position {
+struct SchedulePosition {
   float x = 0;
 };
-struct Velocity {
+struct ScheduleVelocity {
   float x = 0;
 };
 struct Image {
@@ -88,23 +88,23 @@ TEST(Schedule, SystemsSeeTheWorld) {
   Schedule s;
   s.add({.name = "spawn",
          .phase = Phase::spawn,
-         .access = Access::of<Writes<pyro::ecs::Entities, Position, Velocity>>(),
+         .access = Access::of<Writes<pyro::ecs::Entities, SchedulePosition, ScheduleVelocity>>(),
          .run = [](World& w) {
            const auto e = w.create();
-           w.emplace<Position>(e, 0.0f);
-           w.emplace<Velocity>(e, 2.0f);
+           w.emplace<SchedulePosition>(e, 0.0f);
+           w.emplace<ScheduleVelocity>(e, 2.0f);
          }});
   s.add({.name = "move",
          .phase = Phase::simulate,
-         .access = Access::of<Reads<Velocity>, Writes<Position>>(),
+         .access = Access::of<Reads<ScheduleVelocity>, Writes<SchedulePosition>>(),
          .run = [](World& w) {
-           w.each<Position, const Velocity>([](Position& p, const Velocity& v) { p.x += v.x; });
+           w.each<SchedulePosition, const ScheduleVelocity>([](SchedulePosition& p, const ScheduleVelocity& v) { p.x += v.x; });
          }});
   World w;
   for (int i = 0; i < 3; ++i) s.run_frame(w);
   // Entities spawned in frames 1, 2, 3 have moved 3, 2, 1 times.
   float sum = 0;
-  w.each<Position>([&](Position& p) { sum += p.x; });
+  w.each<SchedulePosition>([&](SchedulePosition& p) { sum += p.x; });
   EXPECT_EQ(sum, 2.0f * (3 + 2 + 1));
 }
 
@@ -159,18 +159,18 @@ TEST(Schedule, ConflictsWithinAPhase) {
   std::vector<std::string> log;
   Schedule s;
   s.add(
-      logger("integrate", Phase::simulate, &log, Access::of<Reads<Velocity>, Writes<Position>>()));
-  s.add(logger("collide", Phase::simulate, &log, Access::of<Reads<Position>, Writes<Velocity>>()));
+      logger("integrate", Phase::simulate, &log, Access::of<Reads<ScheduleVelocity>, Writes<SchedulePosition>>()));
+  s.add(logger("collide", Phase::simulate, &log, Access::of<Reads<SchedulePosition>, Writes<ScheduleVelocity>>()));
   s.add(logger("age", Phase::simulate, &log, Access::of<Writes<Image>>()));  // disjoint
-  s.add(logger("bounds", Phase::simulate, &log, Access::of<Reads<Position>>()));
+  s.add(logger("bounds", Phase::simulate, &log, Access::of<Reads<SchedulePosition>>()));
   s.add(logger("draw", Phase::render, &log,  // other phase
-               Access::of<Reads<Position>, Writes<Image>>()));
+               Access::of<Reads<SchedulePosition>, Writes<Image>>()));
   s.add(logger("blur", Phase::render, &log, Access::of<Reads<Image>, Writes<Image>>()));
   s.add(
-      logger("stats", Phase::output, &log, Access::of<Reads<Position>>()));  // readers never clash
-  s.add(logger("hud", Phase::output, &log, Access::of<Reads<Position>>()));
+      logger("stats", Phase::output, &log, Access::of<Reads<SchedulePosition>>()));  // readers never clash
+  s.add(logger("hud", Phase::output, &log, Access::of<Reads<SchedulePosition>>()));
   s.add(logger("teleport", Phase::output, &log,  // later writer vs earlier readers
-               Access::of<Writes<Position>>()));
+               Access::of<Writes<SchedulePosition>>()));
 
   const std::vector<std::pair<std::string, std::string>> expected{{"integrate", "collide"},
                                                                   {"integrate", "bounds"},
@@ -210,11 +210,11 @@ namespace {
 TEST(Schedule, AfterOrdersAConflictingPair) {
   std::vector<std::string> log;
   Schedule s;
-  const Access writes_position = Access::of<Writes<Position>>();
+  const Access writes_position = Access::of<Writes<SchedulePosition>>();
   s.add(logger("integrate", Phase::simulate, &log, writes_position));
   s.add(logger("collide", Phase::simulate, &log, writes_position));
-  s.add(logger("bounds", Phase::simulate, &log, Access::of<Reads<Position>>(), {"collide"}));
-  s.add(logger("draw", Phase::render, &log, Access::of<Reads<Position>>(), {"integrate"}));
+  s.add(logger("bounds", Phase::simulate, &log, Access::of<Reads<SchedulePosition>>(), {"collide"}));
+  s.add(logger("draw", Phase::render, &log, Access::of<Reads<SchedulePosition>>(), {"integrate"}));
   // integrate/collide conflict unordered; collide -> bounds is declared; integrate -> bounds
   // conflicts but is not ordered by any chain.
   EXPECT_TRUE(s.ordered("collide", "bounds"));
@@ -276,9 +276,9 @@ TEST(Schedule, RunSystemOnceRunsSetupThenRunUnderTheDeclaration) {
   SystemDesc sneaky = count;
   sneaky.name = "sneaky";
   sneaky.setup = nullptr;
-  sneaky.run = [](World& world) { world.set_resource<Position>(); };
+  sneaky.run = [](World& world) { world.set_resource<SchedulePosition>(); };
   EXPECT_THROW(pyro::ecs::run_system_once(sneaky, w), std::logic_error);
-  EXPECT_FALSE(w.has_resource<Position>());
+  EXPECT_FALSE(w.has_resource<SchedulePosition>());
   EXPECT_EQ(pyro::ecs::running_system(), nullptr);
 }
 

@@ -452,10 +452,10 @@ TEST(WorldModel, ThreeTypesNoGroup) { ModelRun<3>(8, kSteps, GroupWhen::never).r
 
 // ---- closed facts that the random runs do not pin down -----------------------------------
 
-struct Position {
+struct WorldModelPosition {
   float x, y, z;
 };
-struct Velocity {
+struct WorldModelVelocity {
   float x, y, z;
 };
 struct Settings {
@@ -476,7 +476,7 @@ TEST(World, EntityHandles) {
   EXPECT_TRUE(Entity{}.is_null());
   EXPECT_EQ(Entity{}, Entity::null);
   EXPECT_FALSE(w.alive(Entity::null));
-  EXPECT_THROW(w.has<Position>(Entity::null), std::logic_error);
+  EXPECT_THROW(w.has<WorldModelPosition>(Entity::null), std::logic_error);
   // A forged handle with a future generation is not alive either.
   w.destroy(b);
   EXPECT_FALSE(w.alive(Entity{b.index, b.generation + 1}));
@@ -490,22 +490,22 @@ TEST(World, EntityHandles) {
 TEST(World, ComponentErrorsNameTheType) {
   World w;
   const Entity e = w.create();
-  w.emplace<Position>(e, 1.0f, 2.0f, 3.0f);
-  EXPECT_THROW(w.emplace<Position>(e), std::logic_error);
+  w.emplace<WorldModelPosition>(e, 1.0f, 2.0f, 3.0f);
+  EXPECT_THROW(w.emplace<WorldModelPosition>(e), std::logic_error);
   try {
-    w.get<Velocity>(e);
+    w.get<WorldModelVelocity>(e);
     FAIL() << "get of an absent component must throw";
   } catch (const std::logic_error& err) {
     EXPECT_NE(std::string(err.what()).find("Velocity"), std::string::npos) << err.what();
   }
-  EXPECT_THROW(w.remove<Velocity>(e), std::logic_error);
-  EXPECT_EQ(w.get<Position>(e).y, 2.0f);
-  const std::string name = pyro::ecs::type_name<Position>();
+  EXPECT_THROW(w.remove<WorldModelVelocity>(e), std::logic_error);
+  EXPECT_EQ(w.get<WorldModelPosition>(e).y, 2.0f);
+  const std::string name = pyro::ecs::type_name<WorldModelPosition>();
   EXPECT_TRUE(name.size() >= 10 && name.substr(name.size() - 10) == "::Position") << name;
   EXPECT_EQ(pyro::ecs::type_name<int>(), "int");
   EXPECT_EQ(pyro::ecs::type_name<int[3]>(), "int [3]");
-  EXPECT_NE(pyro::ecs::type_id<Position>(), pyro::ecs::type_id<Velocity>());
-  EXPECT_EQ(pyro::ecs::type_id<Position>(), pyro::ecs::type_id<const Position&>());
+  EXPECT_NE(pyro::ecs::type_id<WorldModelPosition>(), pyro::ecs::type_id<WorldModelVelocity>());
+  EXPECT_EQ(pyro::ecs::type_id<WorldModelPosition>(), pyro::ecs::type_id<const WorldModelPosition&>());
 }
 
 TEST(World, EachBothSignaturesAndGroupOrder) {
@@ -513,28 +513,28 @@ TEST(World, EachBothSignaturesAndGroupOrder) {
   std::vector<Entity> es;
   for (int i = 0; i < 10; ++i) {
     es.push_back(w.create());
-    w.emplace<Position>(es.back(), float(i), 0.0f, 0.0f);
-    if (i % 2 == 0) w.emplace<Velocity>(es.back(), 1.0f, 2.0f, 3.0f);
+    w.emplace<WorldModelPosition>(es.back(), float(i), 0.0f, 0.0f);
+    if (i % 2 == 0) w.emplace<WorldModelVelocity>(es.back(), 1.0f, 2.0f, 3.0f);
   }
-  w.group<Velocity, Position>();
-  EXPECT_EQ((w.group_size<Position, Velocity>()), 5u);
-  EXPECT_THROW(w.group_size<Position>(), std::logic_error);
+  w.group<WorldModelVelocity, WorldModelPosition>();
+  EXPECT_EQ((w.group_size<WorldModelPosition, WorldModelVelocity>()), 5u);
+  EXPECT_THROW(w.group_size<WorldModelPosition>(), std::logic_error);
   // Members are packed at the front of both pools.
   for (std::size_t i = 0; i < 5; ++i) {
-    EXPECT_EQ(w.pool<Position>()->entities()[i], w.pool<Velocity>()->entities()[i]);
-    EXPECT_EQ(int(w.pool<Position>()->data()[i].x) % 2, 0);
+    EXPECT_EQ(w.pool<WorldModelPosition>()->entities()[i], w.pool<WorldModelVelocity>()->entities()[i]);
+    EXPECT_EQ(int(w.pool<WorldModelPosition>()->data()[i].x) % 2, 0);
   }
-  w.each<Position, Velocity>([](Position& p, const Velocity& v) { p.x += v.x * 10.0f; });
+  w.each<WorldModelPosition, WorldModelVelocity>([](WorldModelPosition& p, const WorldModelVelocity& v) { p.x += v.x * 10.0f; });
   float sum = 0;
   int visits = 0;
-  w.each<Velocity, Position>([&](Entity e, Velocity&, Position& p) {
+  w.each<WorldModelVelocity, WorldModelPosition>([&](Entity e, WorldModelVelocity&, WorldModelPosition& p) {
     sum += p.x;
     ++visits;
-    EXPECT_EQ(&p, &w.get<Position>(e));
+    EXPECT_EQ(&p, &w.get<WorldModelPosition>(e));
   });
   EXPECT_EQ(visits, 5);
   EXPECT_EQ(sum, 0 + 2 + 4 + 6 + 8 + 50.0f);
-  EXPECT_EQ(w.count<Position>(), 10u);
+  EXPECT_EQ(w.count<WorldModelPosition>(), 10u);
   EXPECT_EQ(w.count<Settings>(), 0u);
   int none = 0;
   w.each<Settings>([&](Settings&) { ++none; });
@@ -543,10 +543,10 @@ TEST(World, EachBothSignaturesAndGroupOrder) {
 
 TEST(World, GroupOwnershipIsExclusive) {
   World w;
-  w.group<Position, Velocity>();
-  EXPECT_NO_THROW((w.group<Velocity, Position>()));
-  EXPECT_THROW(w.group<Position>(), std::logic_error);
-  EXPECT_THROW((w.group<Velocity, Settings>()), std::logic_error);
+  w.group<WorldModelPosition, WorldModelVelocity>();
+  EXPECT_NO_THROW((w.group<WorldModelVelocity, WorldModelPosition>()));
+  EXPECT_THROW(w.group<WorldModelPosition>(), std::logic_error);
+  EXPECT_THROW((w.group<WorldModelVelocity, Settings>()), std::logic_error);
   EXPECT_NO_THROW(w.group<Settings>());
 }
 
@@ -554,20 +554,20 @@ TEST(World, RefusesStructuralChangeWhileIterating) {
   World w;
   const Entity a = w.create();
   const Entity b = w.create();
-  w.emplace<Position>(a);
-  w.emplace<Position>(b);
-  w.emplace<Velocity>(b);
-  w.group<Position, Velocity>();
-  EXPECT_THROW(w.each<Position>([&](Entity e, Position&) { w.destroy(e); }), std::logic_error);
-  // Velocity shares a group with Position, so adding one would repack Position's pool.
-  EXPECT_THROW(w.each<Position>([&](Position&) { w.emplace<Velocity>(a); }), std::logic_error);
+  w.emplace<WorldModelPosition>(a);
+  w.emplace<WorldModelPosition>(b);
+  w.emplace<WorldModelVelocity>(b);
+  w.group<WorldModelPosition, WorldModelVelocity>();
+  EXPECT_THROW(w.each<WorldModelPosition>([&](Entity e, WorldModelPosition&) { w.destroy(e); }), std::logic_error);
+  // WorldModelVelocity shares a group with WorldModelPosition, so adding one would repack WorldModelPosition's pool.
+  EXPECT_THROW(w.each<WorldModelPosition>([&](WorldModelPosition&) { w.emplace<WorldModelVelocity>(a); }), std::logic_error);
   EXPECT_TRUE(w.alive(a));
   EXPECT_TRUE(w.alive(b));
-  EXPECT_FALSE(w.has<Velocity>(a));
+  EXPECT_FALSE(w.has<WorldModelVelocity>(a));
   // The lock is released even though f threw; now the change is allowed.
-  w.emplace<Velocity>(a);
-  EXPECT_EQ((w.group_size<Position, Velocity>()), 2u);
-  w.each<Velocity>([&](Entity e, Velocity&) {  // other pools are free
+  w.emplace<WorldModelVelocity>(a);
+  EXPECT_EQ((w.group_size<WorldModelPosition, WorldModelVelocity>()), 2u);
+  w.each<WorldModelVelocity>([&](Entity e, WorldModelVelocity&) {  // other pools are free
     if (e == a) w.emplace<Settings>(a);
   });
   EXPECT_TRUE(w.has<Settings>(a));

@@ -24,7 +24,7 @@ std::vector<uint8_t> read_bytes(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-void write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
+void write_bytes_png_structure_check(const std::string& path, const std::vector<uint8_t>& bytes) {
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
 }
@@ -110,7 +110,7 @@ TEST_F(PngStructure, AnEmptyIdatChunkIsRefused) {
   const std::vector<uint8_t> empty = {0, 0, 0, 0, 'I', 'D', 'A', 'T', 0x35, 0xAF, 0x06, 0x1E};
   b.insert(b.begin() + static_cast<long>(chunk("IDAT")), empty.begin(), empty.end());
   EXPECT_NE(refusal(b).find("found an empty one"), std::string::npos);
-  write_bytes(path_, b);
+  write_bytes_png_structure_check(path_, b);
   EXPECT_THROW(read_png(path_), UserError);
 }
 

@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // What choose_temperature_grid says when it refuses `name` ("accepted" when it does not).
-std::string refusal(const std::string& path, const std::vector<VdbGridInfo>& grids, const std::string& name) {
+std::string refusal_vdb_temperature_grid(const std::string& path, const std::vector<VdbGridInfo>& grids, const std::string& name) {
   try {
     choose_temperature_grid(path, grids, name, "--temperature-grid");
   } catch (const UserError& e) {
@@ -115,12 +115,12 @@ TEST(VdbTemperatureGrid, DefaultOrderIsTemperatureHeatFlame) {
 TEST(VdbTemperatureGrid, AbsentOrNonFloatNamedGridsAreRefusedNamingFileOptionAndGrids) {
   const std::string path = fire_file(test::scratch_dir("vdb_temperature_refused"));
   const auto grids = list_vdb_grids(path);
-  const std::string absent = refusal(path, grids, "fuel");
+  const std::string absent = refusal_vdb_temperature_grid(path, grids, "fuel");
   EXPECT_NE(absent.find(path), std::string::npos) << absent;
   EXPECT_NE(absent.find("--temperature-grid"), std::string::npos) << absent;
   EXPECT_NE(absent.find("\"fuel\""), std::string::npos) << absent;
   EXPECT_NE(absent.find("\"heat\" float"), std::string::npos) << absent;
-  const std::string vector = refusal(path, grids, "velocity");
+  const std::string vector = refusal_vdb_temperature_grid(path, grids, "velocity");
   EXPECT_NE(vector.find("vec3s"), std::string::npos) << vector;
   EXPECT_NE(vector.find("\"density\""), std::string::npos) << vector;
 }

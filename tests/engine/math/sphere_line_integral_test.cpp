@@ -15,7 +15,7 @@
 namespace pyro {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kSphereLineIntegralInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
 
 // The extinction at point x for a ray along w: k (1 - d / r) inside the sphere, d the ray's miss
@@ -52,10 +52,10 @@ TEST(SphereLineIntegral, MatchesAMidpointSumAlongRandomRays) {
 TEST(SphereLineIntegral, ThroughTheCentreIsTheDiameterTimesK) {
   const ConeSphere s{{1.0, 2.0, 3.0}, 0.7, 1.9};
   const glm::dvec3 w = glm::normalize(glm::dvec3(1.0, -2.0, 0.5));
-  EXPECT_NEAR(sphere_optical_depth(s, s.c - 5.0 * w, w, -kInf, kInf), 2.0 * 0.7 * 1.9, 1e-12);
+  EXPECT_NEAR(sphere_optical_depth(s, s.c - 5.0 * w, w, -kSphereLineIntegralInf, kSphereLineIntegralInf), 2.0 * 0.7 * 1.9, 1e-12);
   // From the centre outward: half of it; a ray that misses: nothing.
-  EXPECT_NEAR(sphere_optical_depth(s, s.c, w, 0.0, kInf), 0.7 * 1.9, 1e-12);
-  EXPECT_EQ(sphere_optical_depth(s, s.c + glm::dvec3(0.0, 0.0, 0.71), {1.0, 0.0, 0.0}, -kInf, kInf), 0.0);
+  EXPECT_NEAR(sphere_optical_depth(s, s.c, w, 0.0, kSphereLineIntegralInf), 0.7 * 1.9, 1e-12);
+  EXPECT_EQ(sphere_optical_depth(s, s.c + glm::dvec3(0.0, 0.0, 0.71), {1.0, 0.0, 0.0}, -kSphereLineIntegralInf, kSphereLineIntegralInf), 0.0);
 }
 
 // Over the disc it projects to, the optical depth integrates to
@@ -69,7 +69,7 @@ TEST(SphereLineIntegral, ProjectedDepthIntegratesToTheClosedForm) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const glm::dvec3 o(-s.r + (i + 0.5) * cell, -s.r + (j + 0.5) * cell, -10.0);
-      total += sphere_optical_depth(s, o, w, -kInf, kInf) * cell * cell;
+      total += sphere_optical_depth(s, o, w, -kSphereLineIntegralInf, kSphereLineIntegralInf) * cell * cell;
     }
   const double want = 4.0 * kPi * s.k * s.r * s.r * s.r * (1.0 / 3.0 - kPi / 16.0);
   EXPECT_NEAR(total, want, 1e-3 * want);
@@ -86,7 +86,7 @@ TEST(SphereLineIntegral, OpacityAreaMatchesTheDiscAndItsLimits) {
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const glm::dvec3 o(-s.r + (i + 0.5) * cell, -s.r + (j + 0.5) * cell, -10.0);
-        sum += (1.0 - std::exp(-sphere_optical_depth(s, o, {0.0, 0.0, 1.0}, -kInf, kInf))) * cell * cell;
+        sum += (1.0 - std::exp(-sphere_optical_depth(s, o, {0.0, 0.0, 1.0}, -kSphereLineIntegralInf, kSphereLineIntegralInf))) * cell * cell;
       }
     EXPECT_NEAR(sphere_opacity_area(s.r, k), sum, 2e-3 * sum) << k;
   }
@@ -109,7 +109,7 @@ TEST(ShadowCaster, ASphereReachesItsRadiusAndAGaussianItsCube) {
     const CasterRayProfile p = caster_ray_profile(c, o, w);
     const double m = 0.5 * (a + b);
     EXPECT_NEAR(p.cumulative(m) - p.cumulative(a), caster_optical_depth(c, o, w, a, m), 1e-9);
-    EXPECT_NEAR(p.cumulative(b) - p.cumulative(a), caster_optical_depth(c, o, w, -kInf, kInf), 1e-9);
+    EXPECT_NEAR(p.cumulative(b) - p.cumulative(a), caster_optical_depth(c, o, w, -kSphereLineIntegralInf, kSphereLineIntegralInf), 1e-9);
   }
 }
 

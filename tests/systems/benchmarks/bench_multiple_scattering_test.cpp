@@ -13,7 +13,7 @@
 namespace pyro {
 namespace {
 
-MultipleScatteringBenchOptions small_run(int octaves) {
+MultipleScatteringBenchOptions small_run_bench_multiple_scattering(int octaves) {
   MultipleScatteringBenchOptions o;
   o.file = content_path("volumes/sample_cloud.vdb");
   o.width = 64;
@@ -24,7 +24,7 @@ MultipleScatteringBenchOptions small_run(int octaves) {
 }
 
 TEST(BenchMultipleScattering, OctavesComeCloserToThePathTracedTruth) {
-  const nlohmann::json j = bench_multiple_scattering(small_run(4));
+  const nlohmann::json j = bench_multiple_scattering(small_run_bench_multiple_scattering(4));
   ASSERT_EQ(j["directions"].size(), 3u);
   for (const nlohmann::json& d : j["directions"]) {
     const double mc = d["monte_carlo_error"].get<double>(), ss = d["single_scattering_rmse"].get<double>(),
@@ -41,7 +41,7 @@ TEST(BenchMultipleScattering, OctavesComeCloserToThePathTracedTruth) {
 }
 
 TEST(BenchMultipleScattering, OneOctaveIsSingleScattering) {
-  MultipleScatteringBenchOptions o = small_run(1);
+  MultipleScatteringBenchOptions o = small_run_bench_multiple_scattering(1);
   o.directions = 1;
   o.samples = 8;
   const nlohmann::json j = bench_multiple_scattering(o);
@@ -50,7 +50,7 @@ TEST(BenchMultipleScattering, OneOctaveIsSingleScattering) {
 }
 
 TEST(BenchMultipleScattering, OctavesOutOfRangeAreRefused) {
-  MultipleScatteringBenchOptions o = small_run(4);
+  MultipleScatteringBenchOptions o = small_run_bench_multiple_scattering(4);
   o.sun.octaves.attenuation = 0.0;
   EXPECT_THROW(bench_multiple_scattering(o), UserError);
 }

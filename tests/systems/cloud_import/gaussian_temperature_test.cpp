@@ -12,7 +12,7 @@
 namespace pyro {
 namespace {
 
-DenseGrid grid_of(int n, float (*value)(int, int, int)) {
+DenseGrid grid_of_gaussian_temperature(int n, float (*value)(int, int, int)) {
   DenseGrid g;
   g.dims = {n, n, n};
   for (int z = 0; z < n; ++z)
@@ -30,8 +30,8 @@ GridGaussian at(float x, float y, float z, float sigma) {
 }
 
 TEST(GaussianTemperature, UniformTemperatureIsKept) {
-  const DenseGrid density = grid_of(12, [](int, int, int) { return 0.5f; });
-  const DenseGrid heat = grid_of(12, [](int, int, int) { return 1700.0f; });
+  const DenseGrid density = grid_of_gaussian_temperature(12, [](int, int, int) { return 0.5f; });
+  const DenseGrid heat = grid_of_gaussian_temperature(12, [](int, int, int) { return 1700.0f; });
   const std::vector<float> t = gaussian_temperatures(density, heat, {at(5, 6, 5, 1.5f), at(2, 2, 9, 0.7f)});
   ASSERT_EQ(t.size(), 2u);
   EXPECT_NEAR(t[0], 1700.0f, 1e-2f);
@@ -39,8 +39,8 @@ TEST(GaussianTemperature, UniformTemperatureIsKept) {
 }
 
 TEST(GaussianTemperature, LinearTemperatureGivesItsValueAtTheCentre) {
-  const DenseGrid density = grid_of(16, [](int, int, int) { return 1.0f; });
-  const DenseGrid heat = grid_of(16, [](int x, int y, int z) { return 1000.0f + 30.0f * x - 12.0f * y + 7.0f * z; });
+  const DenseGrid density = grid_of_gaussian_temperature(16, [](int, int, int) { return 1.0f; });
+  const DenseGrid heat = grid_of_gaussian_temperature(16, [](int x, int y, int z) { return 1000.0f + 30.0f * x - 12.0f * y + 7.0f * z; });
   // Centres on voxel centres, ellipsoids inside the box: the weights are symmetric about them.
   const std::vector<GridGaussian> gs = {at(7, 8, 7, 1.2f), at(5, 9, 10, 0.8f)};
   const std::vector<float> t = gaussian_temperatures(density, heat, gs);
@@ -52,15 +52,15 @@ TEST(GaussianTemperature, LinearTemperatureGivesItsValueAtTheCentre) {
 
 TEST(GaussianTemperature, HeatWhereThereIsNoDensityDoesNotCount) {
   // Density only at x <= 6; a very hot region at x >= 8 where there is no density.
-  const DenseGrid density = grid_of(14, [](int x, int, int) { return x <= 6 ? 1.0f : 0.0f; });
-  const DenseGrid heat = grid_of(14, [](int x, int, int) { return x >= 8 ? 5000.0f : 1200.0f; });
+  const DenseGrid density = grid_of_gaussian_temperature(14, [](int x, int, int) { return x <= 6 ? 1.0f : 0.0f; });
+  const DenseGrid heat = grid_of_gaussian_temperature(14, [](int x, int, int) { return x >= 8 ? 5000.0f : 1200.0f; });
   const std::vector<float> t = gaussian_temperatures(density, heat, {at(6, 7, 7, 1.5f)});
   EXPECT_NEAR(t[0], 1200.0f, 1e-2f);
 }
 
 TEST(GaussianTemperature, SameOnAnyThreadCount) {
-  const DenseGrid density = grid_of(10, [](int x, int y, int z) { return float((x * 7 + y * 3 + z) % 5) * 0.2f; });
-  const DenseGrid heat = grid_of(10, [](int x, int y, int z) { return float(x * y + z); });
+  const DenseGrid density = grid_of_gaussian_temperature(10, [](int x, int y, int z) { return float((x * 7 + y * 3 + z) % 5) * 0.2f; });
+  const DenseGrid heat = grid_of_gaussian_temperature(10, [](int x, int y, int z) { return float(x * y + z); });
   std::vector<GridGaussian> gs;
   for (int i = 0; i < 20; ++i) gs.push_back(at(float(i % 10), float((i * 3) % 10), float((i * 7) % 10), 0.6f + 0.1f * (i % 4)));
   EXPECT_EQ(gaussian_temperatures(density, heat, gs, 1), gaussian_temperatures(density, heat, gs, 3));

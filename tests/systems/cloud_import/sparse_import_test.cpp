@@ -26,7 +26,7 @@ bool same_particles(const std::vector<GaussianParticle>& a, const std::vector<Ga
 
 // Random densities with clumps and empty regions (x in the first third empty), on a skewed
 // transform.
-DenseGrid patchy_grid(const std::array<int, 3>& origin, const std::array<int, 3>& dims, uint64_t seed) {
+DenseGrid patchy_grid_sparse_import(const std::array<int, 3>& origin, const std::array<int, 3>& dims, uint64_t seed) {
   DenseGrid g;
   g.origin = origin;
   g.dims = dims;
@@ -53,9 +53,9 @@ TEST(SparseImport, MatchesTheDenseImporterOnSyntheticGrids) {
   DenseGrid procedural = make_procedural_cloud(cloud);
   procedural.origin = {-13, 5, -29};
   const std::vector<DenseGrid> grids = {
-      patchy_grid({-13, 5, -29}, {37, 29, 23}, 1), patchy_grid({0, 0, 0}, {16, 8, 32}, 2),
-      patchy_grid({-8, -8, -8}, {1, 1, 40}, 3), patchy_grid({3, -2, 100}, {17, 3, 50}, 4),
-      patchy_grid({0, 0, 0}, {1, 1, 1}, 5), procedural};
+      patchy_grid_sparse_import({-13, 5, -29}, {37, 29, 23}, 1), patchy_grid_sparse_import({0, 0, 0}, {16, 8, 32}, 2),
+      patchy_grid_sparse_import({-8, -8, -8}, {1, 1, 40}, 3), patchy_grid_sparse_import({3, -2, 100}, {17, 3, 50}, 4),
+      patchy_grid_sparse_import({0, 0, 0}, {1, 1, 1}, 5), procedural};
   const glm::dvec3 directions[] = {{-0.4, -1.0, -0.3}, {1.0, 0.2, -0.5}, {0.1, 0.3, 1.0}, {0.0, 0.0, -1.0}};
   int compared = 0;
   for (size_t k = 0; k < grids.size(); ++k) {
@@ -108,7 +108,7 @@ TEST(SparseImport, MatchesTheDenseImporterOnTheSharedFiles) {
 // One clump alone, and the same clump at a whole number of top blocks into a box of 3e8 voxels
 // (over the dense copy's 2^28) with nothing else: the same particles, in the same order.
 TEST(SparseImport, AClumpInABoxTooLargeForADenseCopyImportsAsItDoesAlone) {
-  const DenseGrid clump = patchy_grid({100, -40, 7}, {24, 21, 19}, 9);
+  const DenseGrid clump = patchy_grid_sparse_import({100, -40, 7}, {24, 21, 19}, 9);
   CloudImportOptions opt;
   opt.medium.extinction = 0.8;
   opt.medium.light_direction = {-0.4, -1.0, -0.3};

@@ -22,7 +22,7 @@ std::vector<int64_t> frames_of(const std::vector<VdbSequenceMember>& m) {
   return f;
 }
 
-std::string error_of(const std::string& input) {
+std::string error_of_vdb_sequence_members(const std::string& input) {
   try {
     find_vdb_sequence_members(input);
   } catch (const UserError& e) {
@@ -57,7 +57,7 @@ TEST(VdbSequenceMembers, AGapIsRefusedNamingTheMissingFile) {
   const fs::path dir = test::scratch_dir("gap");
   for (const char* n : {"smoke_0001.vdb", "smoke_0002.vdb", "smoke_0004.vdb"}) touch(dir / n);
   for (const std::string& input : {(dir / "smoke_%04d.vdb").string(), (dir / "smoke_*.vdb").string(), dir.string()}) {
-    const std::string e = error_of(input);
+    const std::string e = error_of_vdb_sequence_members(input);
     EXPECT_NE(e.find((dir / "smoke_0003.vdb").string()), std::string::npos) << input << ": " << e;
     EXPECT_NE(e.find("frame 3"), std::string::npos) << e;
   }
@@ -65,14 +65,14 @@ TEST(VdbSequenceMembers, AGapIsRefusedNamingTheMissingFile) {
 
 TEST(VdbSequenceMembers, NothingMatchingDuplicatesAndUnnumberedNamesAreRefused) {
   const fs::path dir = test::scratch_dir("refused");
-  EXPECT_NE(error_of((dir / "none_%04d.vdb").string()).find("found none matching the pattern"), std::string::npos);
-  EXPECT_NE(error_of((dir / "missing" / "a_*.vdb").string()).find("no folder"), std::string::npos);
+  EXPECT_NE(error_of_vdb_sequence_members((dir / "none_%04d.vdb").string()).find("found none matching the pattern"), std::string::npos);
+  EXPECT_NE(error_of_vdb_sequence_members((dir / "missing" / "a_*.vdb").string()).find("no folder"), std::string::npos);
   touch(dir / "a_1.vdb");
   touch(dir / "a_01.vdb");
-  EXPECT_NE(error_of((dir / "a_*.vdb").string()).find("both numbered 1"), std::string::npos);
+  EXPECT_NE(error_of_vdb_sequence_members((dir / "a_*.vdb").string()).find("both numbered 1"), std::string::npos);
   const fs::path other = test::scratch_dir("unnumbered");
   touch(other / "cloud.vdb");
-  EXPECT_NE(error_of(other.string()).find("no frame number"), std::string::npos);
+  EXPECT_NE(error_of_vdb_sequence_members(other.string()).find("no frame number"), std::string::npos);
 }
 
 }  // namespace

@@ -24,12 +24,12 @@
 namespace pyro {
 namespace {
 
-struct Frames {
+struct ComposeTilesFrames {
   std::vector<float> linear;     // the first view, linear
   std::vector<uint8_t> output;   // the sRGB output target
 };
 
-Frames render(float layer_scale, StereoMode mode, bool tiles) {
+ComposeTilesFrames render_compose_tiles(float layer_scale, StereoMode mode, bool tiles) {
   const SceneDescription scene = load_scene(std::string(PYRO_SOURCE_DIR) + "/content/scenes/explosion.json");
   RuntimeOptions o;
   o.width_override = o.height_override = 256;
@@ -49,7 +49,7 @@ struct Difference {
 };
 
 template <typename T>
-Difference compare(const std::vector<T>& a, const std::vector<T>& b, double step) {
+Difference compare_compose_tiles(const std::vector<T>& a, const std::vector<T>& b, double step) {
   EXPECT_EQ(a.size(), b.size());
   double sum = 0.0;
   size_t over = 0;
@@ -84,10 +84,10 @@ TEST(ComposeTiles, GridCoversTheViewInWholeTiles) {
 
 TEST(ComposeTiles, TiledImageMatchesTheFullVariantMono) {
   for (float scale : {0.125f, 0.5f}) {
-    const Frames tiled = render(scale, StereoMode::mono, true);
-    const Frames full = render(scale, StereoMode::mono, false);
-    const Difference linear = compare(tiled.linear, full.linear, 1.0 / 255.0);
-    const Difference srgb = compare(tiled.output, full.output, 1.0);
+    const ComposeTilesFrames tiled = render_compose_tiles(scale, StereoMode::mono, true);
+    const ComposeTilesFrames full = render_compose_tiles(scale, StereoMode::mono, false);
+    const Difference linear = compare_compose_tiles(tiled.linear, full.linear, 1.0 / 255.0);
+    const Difference srgb = compare_compose_tiles(tiled.output, full.output, 1.0);
     EXPECT_LT(linear.rmse, 2e-3) << scale;
     EXPECT_LT(linear.share_over_one_step, 0.01) << scale;
     EXPECT_LT(srgb.rmse, 2e-3) << scale;
@@ -97,9 +97,9 @@ TEST(ComposeTiles, TiledImageMatchesTheFullVariantMono) {
 
 TEST(ComposeTiles, TiledImageMatchesTheFullVariantInStereo) {
   for (StereoMode mode : {StereoMode::side_by_side, StereoMode::anaglyph}) {
-    const Frames tiled = render(0.125f, mode, true);
-    const Frames full = render(0.125f, mode, false);
-    const Difference srgb = compare(tiled.output, full.output, 1.0);
+    const ComposeTilesFrames tiled = render_compose_tiles(0.125f, mode, true);
+    const ComposeTilesFrames full = render_compose_tiles(0.125f, mode, false);
+    const Difference srgb = compare_compose_tiles(tiled.output, full.output, 1.0);
     EXPECT_LT(srgb.rmse, 2e-3) << static_cast<int>(mode);
     EXPECT_LT(srgb.share_over_one_step, 0.01) << static_cast<int>(mode);
   }
@@ -132,7 +132,7 @@ TEST(ComposeTiles, WithoutTheFeaturesTheClassesNeedTheImageIsExact) {
     for (glm::ivec2 size : {glm::ivec2(192, 192), glm::ivec2(203, 141)}) {
       const std::vector<uint8_t> tiled = render_plain(size, mode, true);
       const std::vector<uint8_t> full = render_plain(size, mode, false);
-      const Difference d = compare(tiled, full, 1.0);
+      const Difference d = compare_compose_tiles(tiled, full, 1.0);
       EXPECT_EQ(d.share_over_one_step, 0.0) << size.x << " " << static_cast<int>(mode);
       EXPECT_LT(d.rmse, 1.0 / 255.0) << size.x << " " << static_cast<int>(mode);
     }

@@ -131,7 +131,7 @@ TEST(FlipbookRender, OverlappingBillboardsAreScaledDown) {
 struct Centroid {
   double x = 0, y = 0, weight = 0;
 };
-Centroid centroid(const std::vector<float>& px, const std::vector<float>& base, int w, int h, int x0, int x1) {
+Centroid centroid_flipbook_render(const std::vector<float>& px, const std::vector<float>& base, int w, int h, int x0, int x1) {
   Centroid c;
   for (int y = 0; y < h; ++y)
     for (int x = x0; x < x1; ++x) {
@@ -164,8 +164,8 @@ TEST(FlipbookRender, StereoParallaxOfABillboardIsTheClosedForm) {
   r.step();
   const GpuFrame& f = r.world().resource<GpuFrame>();
   const std::vector<float> base(static_cast<size_t>(kW) * kH * 4, kBackground);
-  const Centroid l = centroid(f.eyes[0].scene->read_rgba(), base, kW, kH, 0, kW);
-  const Centroid rr = centroid(f.eyes[1].scene->read_rgba(), base, kW, kH, 0, kW);
+  const Centroid l = centroid_flipbook_render(f.eyes[0].scene->read_rgba(), base, kW, kH, 0, kW);
+  const Centroid rr = centroid_flipbook_render(f.eyes[1].scene->read_rgba(), base, kW, kH, 0, kW);
   ASSERT_GT(l.weight, 0.0);
   // The billboard faces the mid-eye and the camera looks level along -z: its plane is at view
   // depth 2 for both eyes (mono frame: the mid-eye), so all of it has the parallax of z = 2.
@@ -237,8 +237,8 @@ TEST(FlipbookRender, CampfireSideBySideHasTheParallaxOfItsBillboards) {
   const FlipbookFire& fire = fires[0];
   const GpuFrame& a = with.world().resource<GpuFrame>();
   const GpuFrame& b = without.world().resource<GpuFrame>();
-  const Centroid l = centroid(a.eyes[0].scene->read_rgba(), b.eyes[0].scene->read_rgba(), w, h, 0, w);
-  const Centroid r = centroid(a.eyes[1].scene->read_rgba(), b.eyes[1].scene->read_rgba(), w, h, 0, w);
+  const Centroid l = centroid_flipbook_render(a.eyes[0].scene->read_rgba(), b.eyes[0].scene->read_rgba(), w, h, 0, w);
+  const Centroid r = centroid_flipbook_render(a.eyes[1].scene->read_rgba(), b.eyes[1].scene->read_rgba(), w, h, 0, w);
   ASSERT_GT(l.weight, 1.0) << "the fire is visible in the left eye";
   ASSERT_GT(r.weight, 1.0) << "the fire is visible in the right eye";
   const FireFrame frame = face_viewer(fire.position, fire.up, view.frame.eye, -view.frame.forward);

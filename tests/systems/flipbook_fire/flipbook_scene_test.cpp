@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string error_of(const std::string& text, const std::string& file = "fires.json") {
+std::string error_of_flipbook_scene(const std::string& text, const std::string& file = "fires.json") {
   try {
     parse_scene(text, file);
   } catch (const UserError& e) {
@@ -107,30 +107,30 @@ TEST(FlipbookScene, ShippedScenesHaveTheThesisLayouts) {
 }
 
 TEST(FlipbookScene, RefusalsNameThePlace) {
-  EXPECT_NE(error_of(R"({"fires": [{"blend": "one-minus-dest"}]})")
+  EXPECT_NE(error_of_flipbook_scene(R"({"fires": [{"blend": "one-minus-dest"}]})")
                 .find("fires.json: at /fires/0/blend: unknown value \"one-minus-dest\""),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"fires": [{"widht": 1}]})").find("at /fires/0/widht: unknown key \"widht\"; did you mean \"width\"?"),
+  EXPECT_NE(error_of_flipbook_scene(R"({"fires": [{"widht": 1}]})").find("at /fires/0/widht: unknown key \"widht\"; did you mean \"width\"?"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"fires": [{"up": [0, 0, 0]}]})").find("at /fires/0/up: expected a non-zero"),
+  EXPECT_NE(error_of_flipbook_scene(R"({"fires": [{"up": [0, 0, 0]}]})").find("at /fires/0/up: expected a non-zero"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"fires": [{"groups": [{"increments": [1, 2.5]}]}]})")
+  EXPECT_NE(error_of_flipbook_scene(R"({"fires": [{"groups": [{"increments": [1, 2.5]}]}]})")
                 .find("at /fires/0/groups/0/increments/1: expected an integer"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"fires": [{"groups": []}]})").find("at /fires/0/groups: expected a non-empty array"),
+  EXPECT_NE(error_of_flipbook_scene(R"({"fires": [{"groups": []}]})").find("at /fires/0/groups: expected a non-empty array"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"fires": [{"preparation": {"crop": [0.5, 0, 0.4, 1]}}]})")
+  EXPECT_NE(error_of_flipbook_scene(R"({"fires": [{"preparation": {"crop": [0.5, 0, 0.4, 1]}}]})")
                 .find("at /fires/0/preparation/crop: expected [x0, y0, x1, y1]"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"fires": [{"preparation": {"base_line": 0.6, "soften": 0.5}}]})")
+  EXPECT_NE(error_of_flipbook_scene(R"({"fires": [{"preparation": {"base_line": 0.6, "soften": 0.5}}]})")
                 .find("at /fires/0/preparation/soften: expected base_line + soften at most 1"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"fires": [{"groups": [{"rows": 100, "columns": 60}, {"rows": 100, "columns": 41}]}]})")
+  EXPECT_NE(error_of_flipbook_scene(R"({"fires": [{"groups": [{"rows": 100, "columns": 60}, {"rows": 100, "columns": 41}]}]})")
                 .find("at /fires/0/groups: expected at most 10000 billboards in a fire"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"fires": [{"groups": [{"overlap": 1}]}]})").find("at /fires/0/groups/0/overlap"),
+  EXPECT_NE(error_of_flipbook_scene(R"({"fires": [{"groups": [{"overlap": 1}]}]})").find("at /fires/0/groups/0/overlap"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"fires": [{"flipbook": "no/such/folder"}]})", "/tmp/x/fires.json")
+  EXPECT_NE(error_of_flipbook_scene(R"({"fires": [{"flipbook": "no/such/folder"}]})", "/tmp/x/fires.json")
                 .find("at /fires/0/flipbook: expected a folder of PNG flame frames, found no folder at \"/tmp/x/no/such/folder\""),
             std::string::npos);
 }

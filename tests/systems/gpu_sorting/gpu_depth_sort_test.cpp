@@ -95,7 +95,7 @@ void expect_same_order(const Case& c, const char* what) {
   EXPECT_EQ(differ, 0u) << what << ": " << differ << " of " << cpu.size() << " entries differ";
 }
 
-CameraFrame camera_at(const glm::vec3& eye, const glm::vec3& target) {
+CameraFrame camera_at_gpu_depth_sort(const glm::vec3& eye, const glm::vec3& target) {
   return make_camera_frame(eye, target, {0, 1, 0}, 50.0f, 0.1f, 100.0f, 64, 48);
 }
 
@@ -112,7 +112,7 @@ TEST(GpuDepthSort, RandomParticlesInThreeSetsCulledByOneView) {
   for (int s = 0; s < 3; ++s) c.pools.push_back(pool_of(3000 + 1000 * s, [&](size_t) {
     return glm::vec3(u(rng), u(rng), u(rng));
   }));
-  c.request = request_for(camera_at({0, 0, 5}, {0, 0, 0}), false, true);
+  c.request = request_for(camera_at_gpu_depth_sort({0, 0, 5}, {0, 0, 0}), false, true);
   expect_same_order(c, "random, culled");
   EXPECT_LT(cpu_order(c).size(), 12000u);  // some were culled
   EXPECT_GT(cpu_order(c).size(), 500u);
@@ -125,7 +125,7 @@ TEST(GpuDepthSort, EqualDepthsFallBackOnTheSetThenTheId) {
   // On the plane z = -10, facing the camera: every view depth is the same.
   for (int s = 0; s < 2; ++s)
     c.pools.push_back(pool_of(5000, [&](size_t) { return glm::vec3(u(rng), u(rng), -10.0f); }));
-  c.request = request_for(camera_at({0, 0, 0}, {0, 0, -1}), false, true);
+  c.request = request_for(camera_at_gpu_depth_sort({0, 0, 0}, {0, 0, -1}), false, true);
   expect_same_order(c, "equal depths");
 }
 
@@ -137,7 +137,7 @@ TEST(GpuDepthSort, NearlySortedInputOverManyBlocks) {
   c.pools.push_back(pool_of(90000, [&](size_t i) {
     return glm::vec3(u(rng), u(rng), -50.0f + float(i % 90000) * 0.0005f + jitter(rng));
   }));
-  c.request = request_for(camera_at({0, 0, 0}, {0, 0, -1}), false, false);
+  c.request = request_for(camera_at_gpu_depth_sort({0, 0, 0}, {0, 0, -1}), false, false);
   expect_same_order(c, "nearly sorted");
 }
 
@@ -147,7 +147,7 @@ TEST(GpuDepthSort, DistanceToTheEyeCulledByTwoEyes) {
   Case c;
   for (int s = 0; s < 4; ++s)
     c.pools.push_back(pool_of(2500, [&](size_t) { return glm::vec3(u(rng), u(rng), u(rng) - 12.0f); }));
-  const CameraFrame left = camera_at({-0.3f, 0, 0}, {-0.3f, 0, -1}), right = camera_at({0.3f, 0, 0}, {0.3f, 0, -1});
+  const CameraFrame left = camera_at_gpu_depth_sort({-0.3f, 0, 0}, {-0.3f, 0, -1}), right = camera_at_gpu_depth_sort({0.3f, 0, 0}, {0.3f, 0, -1});
   c.request = request_for(left, true, true);
   c.request.views.push_back(view_frustum(right));
   expect_same_order(c, "eye distance, two views");
@@ -161,14 +161,14 @@ TEST(GpuDepthSort, NegativeAndPositiveZeroDepthsAreOneKey) {
     const float z = i % 3 == 0 ? 0.0f : (i % 3 == 1 ? -0.0f : (i % 2 ? 1e-3f : -1e-3f));
     return glm::vec3(float(i % 17) * 0.1f - 0.85f, float(i % 5) * 0.1f - 0.25f, z);
   }));
-  c.request = request_for(camera_at({0, 0, 0}, {0, 0, -1}), false, false);
+  c.request = request_for(camera_at_gpu_depth_sort({0, 0, 0}, {0, 0, -1}), false, false);
   expect_same_order(c, "-0 and +0");
 }
 
 TEST(GpuDepthSort, NoParticleInViewKeepsNone) {
   Case c;
   c.pools.push_back(pool_of(100, [](size_t i) { return glm::vec3(float(i), 0.0f, 50.0f); }));  // behind
-  c.request = request_for(camera_at({0, 0, 0}, {0, 0, -1}), false, true);
+  c.request = request_for(camera_at_gpu_depth_sort({0, 0, 0}, {0, 0, -1}), false, true);
   EXPECT_TRUE(gpu_order(c).empty());
   EXPECT_TRUE(cpu_order(c).empty());
 }

@@ -32,7 +32,7 @@ DenseGrid soft_ball() {
   return g;
 }
 
-CameraFrame small_camera() {
+CameraFrame small_camera_path_traced_volume() {
   return make_camera_frame({0.4f, 0.5f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 45.0f, 0.1f, 100.0f, 24, 24);
 }
 
@@ -47,7 +47,7 @@ TEST(PathTracedVolume, WhiteFurnaceIsUniform) {
   PathTraceOptions o;
   o.samples_per_pixel = 8;
   o.anisotropy = 0.6;
-  const PathTracedImage img = path_trace_volume(soft_ball(), small_camera(), m, o);
+  const PathTracedImage img = path_trace_volume(soft_ball(), small_camera_path_traced_volume(), m, o);
   EXPECT_EQ(img.truncated_paths, 0u);
   EXPECT_GT(img.scattering_events, img.paths);  // the ball is dense: paths scatter many times
   for (float v : img.image.rgb) ASSERT_NEAR(v, 1.0, 1e-9);
@@ -67,12 +67,12 @@ double single_scattering_gap(double g, double& mc_error) {
   o.samples_per_pixel = 1024;
   o.max_scattering = 1;
   o.anisotropy = g;
-  const PathTracedImage traced = path_trace_volume(grid, small_camera(), m, o);
+  const PathTracedImage traced = path_trace_volume(grid, small_camera_path_traced_volume(), m, o);
   mc_error = traced.monte_carlo_error;
   SunScattering sun;
   sun.anisotropy = g;
   const RgbImage marched = render_volume_reference(grid, light_optical_depth(grid, m, 0.25),
-                                                   small_camera(), m, 0.25, 0, nullptr, sun);
+                                                   small_camera_path_traced_volume(), m, 0.25, 0, nullptr, sun);
   return image_rmse(traced.image, marched);
 }
 
@@ -95,9 +95,9 @@ TEST(PathTracedVolume, MultipleScatteringBrightensAndConverges) {
   PathTraceOptions o;
   o.samples_per_pixel = 64;
   o.max_scattering = 1;
-  const PathTracedImage single = path_trace_volume(soft_ball(), small_camera(), m, o);
+  const PathTracedImage single = path_trace_volume(soft_ball(), small_camera_path_traced_volume(), m, o);
   o.max_scattering = 100000;
-  const PathTracedImage multiple = path_trace_volume(soft_ball(), small_camera(), m, o);
+  const PathTracedImage multiple = path_trace_volume(soft_ball(), small_camera_path_traced_volume(), m, o);
   double s = 0.0, ms = 0.0;
   for (size_t i = 0; i < single.image.rgb.size(); ++i) {
     s += single.image.rgb[i];
@@ -107,7 +107,7 @@ TEST(PathTracedVolume, MultipleScatteringBrightensAndConverges) {
   EXPECT_EQ(multiple.truncated_paths, 0u);
   // Quadrupling the samples halves the Monte Carlo error (1/√N), to 15 %.
   o.samples_per_pixel = 256;
-  const PathTracedImage more = path_trace_volume(soft_ball(), small_camera(), m, o);
+  const PathTracedImage more = path_trace_volume(soft_ball(), small_camera_path_traced_volume(), m, o);
   EXPECT_NEAR(more.monte_carlo_error / multiple.monte_carlo_error, 0.5, 0.075);
   EXPECT_LT(image_rmse(more.image, multiple.image), 3.0 * multiple.monte_carlo_error);
 }
@@ -118,8 +118,8 @@ TEST(PathTracedVolume, SparseBricksTraceTheSameImage) {
   PathTraceOptions o;
   o.samples_per_pixel = 4;
   const DenseGrid dense = soft_ball();
-  const PathTracedImage a = path_trace_volume(dense, small_camera(), m, o);
-  const PathTracedImage b = path_trace_volume(sparse_from_dense(dense), small_camera(), m, o);
+  const PathTracedImage a = path_trace_volume(dense, small_camera_path_traced_volume(), m, o);
+  const PathTracedImage b = path_trace_volume(sparse_from_dense(dense), small_camera_path_traced_volume(), m, o);
   EXPECT_EQ(a.image.rgb, b.image.rgb);
   EXPECT_EQ(a.scattering_events, b.scattering_events);
 }

@@ -13,7 +13,7 @@
 namespace pyro {
 namespace {
 
-std::string refusal(const SceneDescription& s, const SceneCost& cost, int driver_max) {
+std::string refusal_scene_budget(const SceneDescription& s, const SceneCost& cost, int driver_max) {
   try {
     check_scene_budget(s, cost, driver_max);
   } catch (const UserError& e) {
@@ -80,10 +80,10 @@ TEST(SceneBudget, CostCountsCloudsEmittersAndVolumes) {
 TEST(SceneBudget, RefusedWithTheNumbers) {
   SceneDescription s = parse_scene(R"({"clouds": [{"count": 1000}]})", "r.json");
   const SceneCost cost = estimate_scene_cost(s, 640, 480, 1, 640, 0);
-  EXPECT_EQ(refusal(s, cost, 16384), "");
+  EXPECT_EQ(refusal_scene_budget(s, cost, 16384), "");
 
   s.budget.particles = 999;
-  std::string r = refusal(s, cost, 16384);
+  std::string r = refusal_scene_budget(s, cost, 16384);
   EXPECT_EQ(r.rfind("/budget/particles", 0), 0u) << r;
   EXPECT_NE(r.find("1000"), std::string::npos) << r;
   EXPECT_NE(r.find("999"), std::string::npos) << r;
@@ -91,18 +91,18 @@ TEST(SceneBudget, RefusedWithTheNumbers) {
 
   s.budget.particles = 1000;
   s.budget.memory_bytes = cost.memory_bytes - 1;
-  r = refusal(s, cost, 16384);
+  r = refusal_scene_budget(s, cost, 16384);
   EXPECT_EQ(r.rfind("/budget/memory_mib", 0), 0u) << r;
   EXPECT_NE(r.find("MiB"), std::string::npos) << r;
   s.budget.memory_bytes = cost.memory_bytes;
-  EXPECT_EQ(refusal(s, cost, 16384), "");
+  EXPECT_EQ(refusal_scene_budget(s, cost, 16384), "");
 
   s.budget.texture_size = 639;
-  r = refusal(s, cost, 16384);
+  r = refusal_scene_budget(s, cost, 16384);
   EXPECT_EQ(r.rfind("/budget/texture_size", 0), 0u) << r;
   EXPECT_NE(r.find("640"), std::string::npos) << r;
   s.budget.texture_size = 0;  // the driver's limit
-  r = refusal(s, cost, 512);
+  r = refusal_scene_budget(s, cost, 512);
   EXPECT_NE(r.find("driver"), std::string::npos) << r;
   EXPECT_NE(r.find("512"), std::string::npos) << r;
 }

@@ -19,7 +19,7 @@
 namespace pyro {
 namespace {
 
-std::string error_of(const std::string& text) {
+std::string error_of_scene_vocabulary(const std::string& text) {
   try {
     parse_scene(text, "vocabulary.json");
   } catch (const UserError& e) {
@@ -34,14 +34,14 @@ void expect_vocabulary(const std::string& scene, const std::string& pointer) {
   for (std::string_view name : enum_name_views<E>()) {
     std::string text = scene;
     text.replace(text.find("NAME"), 4, std::string(name));
-    const std::string message = error_of(text);
+    const std::string message = error_of_scene_vocabulary(text);
     // A good name may still fail a rule between keys (explosion shading needs non-Gaussian
     // particles); never because of the name itself.
     EXPECT_EQ(message.find("unknown"), std::string::npos) << name << ": " << message;
   }
   std::string bad = scene;
   bad.replace(bad.find("NAME"), 4, "bogus");
-  const std::string message = error_of(bad);
+  const std::string message = error_of_scene_vocabulary(bad);
   EXPECT_NE(message.find(pointer), std::string::npos) << message;
   EXPECT_NE(message.find(enum_name_list<E>()), std::string::npos) << message;
 }

@@ -74,7 +74,7 @@ TEST(FrameSequencer, RefusesFramesThatDoNotAscend) {
 }
 
 // The shown image of output frames first..last, from a runtime that draws only those.
-std::vector<std::vector<uint8_t>> frames_of(const SceneDescription& scene, const RuntimeOptions& o,
+std::vector<std::vector<uint8_t>> frames_of_frame_sequencer(const SceneDescription& scene, const RuntimeOptions& o,
                                             FrameRange range) {
   SceneRuntime runtime(scene, o);
   std::vector<std::vector<uint8_t>> out;
@@ -83,8 +83,8 @@ std::vector<std::vector<uint8_t>> frames_of(const SceneDescription& scene, const
 }
 
 void expect_range_matches_full_run(const SceneDescription& scene, const RuntimeOptions& o) {
-  const auto full = frames_of(scene, o, {0, 5});
-  const auto part = frames_of(scene, o, {4, 5});
+  const auto full = frames_of_frame_sequencer(scene, o, {0, 5});
+  const auto part = frames_of_frame_sequencer(scene, o, {4, 5});
   ASSERT_EQ(full.size(), 6u);
   ASSERT_EQ(part.size(), 2u);
   EXPECT_TRUE(full[4] == part[0]);
@@ -104,7 +104,7 @@ TEST(FrameSequencerRun, ARangeEqualsAFullRunWithMotionBlur) {
   SceneRuntime unblurred_prefix(scene, test::small_runtime());
   for (int f = 0; f < 4; ++f) unblurred_prefix.simulate_step();
   unblurred_prefix.step();
-  EXPECT_FALSE(unblurred_prefix.read_output().rgba == frames_of(scene, test::small_runtime(), {4, 4})[0]);
+  EXPECT_FALSE(unblurred_prefix.read_output().rgba == frames_of_frame_sequencer(scene, test::small_runtime(), {4, 4})[0]);
 }
 
 TEST(FrameSequencerRun, ARangeEqualsAFullRunWithSubsteps) {

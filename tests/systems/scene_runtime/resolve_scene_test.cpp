@@ -20,7 +20,7 @@ SceneDescription cloud_scene(const std::string& extra = "") {
                      "test.json");
 }
 
-std::string refusal(const SceneDescription& scene, const RuntimeOptions& options, int max_texture) {
+std::string refusal_resolve_scene(const SceneDescription& scene, const RuntimeOptions& options, int max_texture) {
   try {
     resolve_scene(scene, options, max_texture);
   } catch (const UserError& e) {
@@ -79,18 +79,18 @@ TEST(ResolveScene, AppliesAQualityPickAndAnExplicitLayerScaleWins) {
 
 TEST(ResolveScene, RefusesAParticleBudgetFromTheDescriptionAlone) {
   // 1500 particles against a budget of 1499: refused before anything exists to allocate.
-  const std::string message = refusal(cloud_scene(R"(, "budget": {"particles": 1499})"), {}, 4096);
+  const std::string message = refusal_resolve_scene(cloud_scene(R"(, "budget": {"particles": 1499})"), {}, 4096);
   EXPECT_NE(message.find("/budget/particles"), std::string::npos) << message;
   EXPECT_NE(message.find("1500"), std::string::npos) << message;
-  EXPECT_EQ(refusal(cloud_scene(R"(, "budget": {"particles": 1500})"), {}, 4096), "");
+  EXPECT_EQ(refusal_resolve_scene(cloud_scene(R"(, "budget": {"particles": 1500})"), {}, 4096), "");
 }
 
 TEST(ResolveScene, RefusesTargetsWiderThanTheDriverAllows) {
   // 320 pixels wide: fits a 320 limit mono, not side by side (640).
-  EXPECT_EQ(refusal(cloud_scene(), {}, 320), "");
+  EXPECT_EQ(refusal_resolve_scene(cloud_scene(), {}, 320), "");
   RuntimeOptions sbs;
   sbs.stereo_mode = StereoMode::side_by_side;
-  const std::string message = refusal(cloud_scene(), sbs, 320);
+  const std::string message = refusal_resolve_scene(cloud_scene(), sbs, 320);
   EXPECT_NE(message.find("/budget/texture_size"), std::string::npos) << message;
   EXPECT_NE(message.find("640"), std::string::npos) << message;
 }

@@ -50,7 +50,7 @@ std::string write_scene(const fs::path& dir, const std::string& volume) {
   return path;
 }
 
-float luminance(const FrameImage& img, int x, int y) {
+float luminance_volume_scene(const FrameImage& img, int x, int y) {
   const float* p = &img.rgba[4 * (size_t(y) * img.width + x)];
   return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
 }
@@ -77,7 +77,7 @@ TEST(VolumeScene, AVdbVolumeRendersLitFromAbove) {
   const float* c = &img.rgba[4 * (size_t(32) * 64 + 32)];
   EXPECT_GT(c[0] - 0.2f, 0.1f);  // a white cloud over a blue sky: far more red
   // Lit from above (top row first): the upper part of the ball is brighter than the lower part.
-  EXPECT_GT(luminance(img, 32, 25), luminance(img, 32, 39) + 0.05f);
+  EXPECT_GT(luminance_volume_scene(img, 32, 25), luminance_volume_scene(img, 32, 39) + 0.05f);
 }
 
 TEST(VolumeScene, AParticleFileRendersLikeTheVdbItCameFrom) {

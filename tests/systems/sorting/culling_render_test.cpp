@@ -20,7 +20,7 @@
 namespace pyro {
 namespace {
 
-constexpr int kWidth = 96, kHeight = 72;
+constexpr int kCullingRenderWidth = 96, kCullingRenderHeight = 72;
 
 // The particles' mean position: a camera there stands among them.
 glm::vec3 centre_of(const std::vector<const ParticlePool*>& pools) {
@@ -37,8 +37,8 @@ TEST(CullingRender, TheCulledListDrawsTheSameBytesAsTheWholeOne) {
   size_t views = 0, views_that_cull = 0;
   for (const std::string& name : scenes) {
     RuntimeOptions o;
-    o.width_override = kWidth;
-    o.height_override = kHeight;
+    o.width_override = kCullingRenderWidth;
+    o.height_override = kCullingRenderHeight;
     o.readback = false;
     SceneRuntime runtime(load_scene(test::scene_path(name)), o);
     runtime.step();
@@ -54,7 +54,7 @@ TEST(CullingRender, TheCulledListDrawsTheSameBytesAsTheWholeOne) {
     for (const glm::vec3 look : {glm::vec3(1, 0, 0), glm::vec3(-1, 0, 0), glm::vec3(0, 0, 1),
                                  glm::vec3(0, 0, -1), glm::vec3(0.3f, -1, 0.2f)})
       cameras.push_back(make_camera_frame(inside, inside + look, {0, 1, 0}, 50.0f, 0.05f,
-                                          scene_camera.far, kWidth, kHeight));
+                                          scene_camera.far, kCullingRenderWidth, kCullingRenderHeight));
     for (const CameraFrame& camera : cameras) {
       DrawList whole, culled;
       const ViewFrustum frustum = view_frustum(camera);
@@ -65,8 +65,8 @@ TEST(CullingRender, TheCulledListDrawsTheSameBytesAsTheWholeOne) {
       ++views;
       views_that_cull += culled.size() < whole.size();
       const std::vector<float> expected =
-          test::draw_into_fresh_target(renderer, whole, pools, camera, kWidth, kHeight);
-      EXPECT_TRUE(expected == test::draw_into_fresh_target(renderer, culled, pools, camera, kWidth, kHeight)) << name << ", camera at "
+          test::draw_into_fresh_target(renderer, whole, pools, camera, kCullingRenderWidth, kCullingRenderHeight);
+      EXPECT_TRUE(expected == test::draw_into_fresh_target(renderer, culled, pools, camera, kCullingRenderWidth, kCullingRenderHeight)) << name << ", camera at "
           << camera.eye.x << " " << camera.eye.y << " " << camera.eye.z;
     }
   }

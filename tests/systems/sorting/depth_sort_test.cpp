@@ -21,7 +21,7 @@
 namespace pyro {
 namespace {
 
-ParticleInit at(float x, float y, float z, float marker) {
+ParticleInit at_depth_sort(float x, float y, float z, float marker) {
   ParticleInit p;
   p.position = {x, y, z};
   p.radius = 0.5f;
@@ -49,7 +49,7 @@ TEST(DepthSort, FarthestFirstAlongTheViewAxis) {
   ParticleSet& s = w.emplace<ParticleSet>(e, ParticleSet{ParticlePool(100)});
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(-3, 3), depth(10, 30);  // all inside the 45-degree view
-  for (int i = 0; i < 100; ++i) s.pool.spawn(at(u(rng), u(rng), -depth(rng), static_cast<float>(i)));
+  for (int i = 0; i < 100; ++i) s.pool.spawn(at_depth_sort(u(rng), u(rng), -depth(rng), static_cast<float>(i)));
   run_sort(w);
   const DrawList list = gathered_draw_list(w.resource<EyeDrawLists>(), 0);
   ASSERT_EQ(list.size(), 100u);
@@ -64,9 +64,9 @@ TEST(DepthSort, DepthIsAlongTheViewAxisNotDistance) {
   // A 120-degree view, so that the off-axis particle is still in it.
   w.emplace<Camera>(w.create(), Camera{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 120, 0.1f, 100, 0});
   ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(3)});
-  s.pool.spawn(at(8, 0, -10, 0));   // distance 12.8, depth 10
-  s.pool.spawn(at(0, 0, -10, 1));   // distance 10, depth 10
-  s.pool.spawn(at(10, 0, -9, 2));   // distance 13.5, depth 9: nearest in depth
+  s.pool.spawn(at_depth_sort(8, 0, -10, 0));   // distance 12.8, depth 10
+  s.pool.spawn(at_depth_sort(0, 0, -10, 1));   // distance 10, depth 10
+  s.pool.spawn(at_depth_sort(10, 0, -9, 2));   // distance 13.5, depth 9: nearest in depth
   run_sort(w);
   const DrawList list = gathered_draw_list(w.resource<EyeDrawLists>(), 0);
   ASSERT_EQ(list.size(), 3u);
@@ -87,7 +87,7 @@ TEST(DepthSort, EqualDepthsKeepOneOrderWhateverTheStorageOrder) {
     if (reversed) std::reverse(order.begin(), order.end());
     for (ecs::Entity e : order) {
       ParticleSet& s = w.emplace<ParticleSet>(e, ParticleSet{ParticlePool(50)});
-      for (int i = 0; i < 50; ++i) s.pool.spawn(at(static_cast<float>(i % 7), 0, -5, e.index * 100.0f + i));
+      for (int i = 0; i < 50; ++i) s.pool.spawn(at_depth_sort(static_cast<float>(i % 7), 0, -5, e.index * 100.0f + i));
       if (reversed) {
         // Same ids, different storage order: kill and respawn nothing, just swap-remove the
         // first and re-add it (new id) on one side only would change ids; instead permute
@@ -113,7 +113,7 @@ TEST(DepthSort, RepeatedFramesGiveTheSameOrder) {
   ecs::World w;
   w.emplace<Camera>(w.create(), Camera{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45, 0.1f, 100, 0});
   ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(200)});
-  for (int i = 0; i < 200; ++i) s.pool.spawn(at(0, 0, -static_cast<float>(i % 3) - 1, static_cast<float>(i)));
+  for (int i = 0; i < 200; ++i) s.pool.spawn(at_depth_sort(0, 0, -static_cast<float>(i % 3) - 1, static_cast<float>(i)));
   run_sort(w);
   const auto first = gathered_draw_list(w.resource<EyeDrawLists>(), 0).color_density;
   for (int f = 0; f < 5; ++f) {
@@ -130,7 +130,7 @@ TEST(DepthSort, SortsForTheEyesTheCameraSystemWroteIntoView) {
   w.emplace<Camera>(w.create(), Camera{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45, 0.1f, 100, 0});
   ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(5)});
   for (int i = 0; i < 5; ++i)
-    s.pool.spawn(at(0, 0, -2.0f - static_cast<float>(i), static_cast<float>(i)));
+    s.pool.spawn(at_depth_sort(0, 0, -2.0f - static_cast<float>(i), static_cast<float>(i)));
   run_sort(w);
   const auto order = [&] {
     std::vector<float> markers;
@@ -163,7 +163,7 @@ TEST(DepthSort, IndexedListsHoldTheGatheredOrderForEveryShapeAndAlignment) {
   for (int set = 0; set < 3; ++set) {
     ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(400)});
     for (int i = 0; i < 400; ++i)
-      s.pool.spawn(at(u(rng), u(rng), std::round(u(rng)) - 8, static_cast<float>(set * 1000 + i)));
+      s.pool.spawn(at_depth_sort(u(rng), u(rng), std::round(u(rng)) - 8, static_cast<float>(set * 1000 + i)));
   }
   for (const BillboardAlignment alignment : {BillboardAlignment::viewplane, BillboardAlignment::viewpoint}) {
     RenderSettings settings;
@@ -205,14 +205,14 @@ TEST(DepthSort, LeavesOutWhatNoViewCanShow) {
   settings.particles = ParticleShape::gaussian;
   w.set_resource<RenderSettings>(settings);
   ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(8)});
-  s.pool.spawn(at(0, 0, -10, 0));       // in front: kept
-  s.pool.spawn(at(0, 0, 10, 1));        // behind the eye: out
-  s.pool.spawn(at(12, 0, -10, 2));      // 2 / sqrt(2) = 1.41 right of the view's side: out
-  s.pool.spawn(at(10.6f, 0, -10, 3));   // 0.42 outside, within two radii (1.0): kept
-  s.pool.spawn(at(0, 0, -102, 4));      // beyond the far plane by 2 (> 1.0): out
-  s.pool.spawn(at(0, 0, -100.5f, 5));   // beyond it by 0.5: kept
-  s.pool.spawn(at(0, 0, 0.8f, 6));      // behind the eye by 0.8, within 1.0: kept
-  s.pool.spawn(at(0, -30, -10, 7));     // below: out
+  s.pool.spawn(at_depth_sort(0, 0, -10, 0));       // in front: kept
+  s.pool.spawn(at_depth_sort(0, 0, 10, 1));        // behind the eye: out
+  s.pool.spawn(at_depth_sort(12, 0, -10, 2));      // 2 / sqrt(2) = 1.41 right of the view's side: out
+  s.pool.spawn(at_depth_sort(10.6f, 0, -10, 3));   // 0.42 outside, within two radii (1.0): kept
+  s.pool.spawn(at_depth_sort(0, 0, -102, 4));      // beyond the far plane by 2 (> 1.0): out
+  s.pool.spawn(at_depth_sort(0, 0, -100.5f, 5));   // beyond it by 0.5: kept
+  s.pool.spawn(at_depth_sort(0, 0, 0.8f, 6));      // behind the eye by 0.8, within 1.0: kept
+  s.pool.spawn(at_depth_sort(0, -30, -10, 7));     // below: out
   run_sort(w);
   const DrawList list = gathered_draw_list(w.resource<EyeDrawLists>(), 0);
   std::vector<float> kept;
@@ -235,7 +235,7 @@ TEST(DepthSort, AStereoPairSharesTheParticlesEitherEyeSees) {
   w.emplace<Camera>(cam, Camera{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 40, 0.1f, 100, 0});
   w.emplace<StereoCamera>(cam, StereoCamera{{8.0f, 10.0f}});  // eyes at x = -4 and +4
   ParticleSet& s = w.emplace<ParticleSet>(w.create(), ParticleSet{ParticlePool(3)});
-  s.pool.spawn(at(0, 0, -10, 0));
+  s.pool.spawn(at_depth_sort(0, 0, -10, 0));
   for (const BillboardAlignment alignment : {BillboardAlignment::viewplane, BillboardAlignment::viewpoint}) {
     RenderSettings settings;
     settings.width = 200;
@@ -254,7 +254,7 @@ TEST(DepthSort, AStereoPairSharesTheParticlesEitherEyeSees) {
       only_right.x = x;
     ASSERT_TRUE(sphere_outside(left, only_right, 1.0f));
     ASSERT_FALSE(sphere_outside(right, only_right, 1.0f));
-    if (s.pool.size() == 1) s.pool.spawn(at(only_right.x, only_right.y, only_right.z, 1));
+    if (s.pool.size() == 1) s.pool.spawn(at_depth_sort(only_right.x, only_right.y, only_right.z, 1));
     s.pool.px[1] = only_right.x;
     run_sort(w);
     const EyeDrawLists& lists = w.resource<EyeDrawLists>();

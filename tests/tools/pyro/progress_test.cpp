@@ -34,7 +34,7 @@ std::string contents(std::FILE* f) {
   return s;
 }
 
-size_t count(const std::string& s, char c) { return size_t(std::count(s.begin(), s.end(), c)); }
+size_t count_progress(const std::string& s, char c) { return size_t(std::count(s.begin(), s.end(), c)); }
 
 TEST(Progress, DisabledWritesNothing) {
   std::FILE* f = std::tmpfile();
@@ -57,9 +57,9 @@ TEST(Progress, EnabledDrawsInPlaceThrottledAndEndsTheLine) {
   const std::string out = contents(f);
   std::fclose(f);
   // The first draw, perhaps one more if the machine stalled for 100 ms, and the last.
-  EXPECT_GE(count(out, '\r'), 2u);
-  EXPECT_LE(count(out, '\r'), 12u);
-  EXPECT_EQ(count(out, '\n'), 1u);
+  EXPECT_GE(count_progress(out, '\r'), 2u);
+  EXPECT_LE(count_progress(out, '\r'), 12u);
+  EXPECT_EQ(count_progress(out, '\n'), 1u);
   EXPECT_EQ(out.back(), '\n');
   EXPECT_NE(out.find("render fog [" + std::string(30, '#') + "] 1000/1000"), std::string::npos) << out;
 }
@@ -76,7 +76,7 @@ TEST(Progress, StagesAreNamedAndAlwaysDrawn) {
   }
   const std::string out = contents(f);
   std::fclose(f);
-  EXPECT_EQ(count(out, '\r'), 4u) << out;  // every stage change, and the end
+  EXPECT_EQ(count_progress(out, '\r'), 4u) << out;  // every stage change, and the end
   EXPECT_NE(out.find("0/4"), std::string::npos);
   EXPECT_NE(out.find("(read)"), std::string::npos);
   EXPECT_NE(out.find("(import)"), std::string::npos);

@@ -55,7 +55,7 @@ bool has_json_flag(const std::string& command) {
   return at->get_option_no_throw("--json") != nullptr;
 }
 
-std::vector<std::string> words_of(const std::string& command) {
+std::vector<std::string> words_of_pyro_cli_exit_status(const std::string& command) {
   std::vector<std::string> words;
   std::string w;
   for (std::istringstream in(command); in >> w;) words.push_back(w);
@@ -70,13 +70,13 @@ TEST(PyroCliExitStatus, TheCliDocumentsTheTableAndEveryCommand) {
   for (const char* row : {"| 0 |", "| 1 |", "| 2 |", "| 3 |", "| 130, 143 |"})
     EXPECT_NE(doc.find(row), std::string::npos) << row;
   for (const std::string& command : all_commands())
-    EXPECT_NE(doc.find("pyro " + words_of(command).front()), std::string::npos) << command;
+    EXPECT_NE(doc.find("pyro " + words_of_pyro_cli_exit_status(command).front()), std::string::npos) << command;
 }
 
 // 2: an unknown option, for every command, named with the closest option.
 TEST(PyroCliExitStatus, EveryCommandRefusesAnUnknownOptionWithTwo) {
   for (const std::string& command : all_commands()) {
-    std::vector<std::string> args = words_of(command);
+    std::vector<std::string> args = words_of_pyro_cli_exit_status(command);
     args.push_back("--jsno");
     const auto r = test::run_pyro(args);
     EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;

@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::read_bytes;
 
-void write_text(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+void write_text_pyro_cli_inputs(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 TEST(PyroCliInputs, ImportOverItsOwnVdbIsRefusedBeforeAnyWork) {
   const fs::path dir = test::scratch_dir("inputs_import");
@@ -41,7 +41,7 @@ TEST(PyroCliInputs, ImportOverItsOwnVdbIsRefusedBeforeAnyWork) {
 TEST(PyroCliInputs, ImportDestinationsAreCheckedBeforeTheImport) {
   const fs::path dir = test::scratch_dir("inputs_import_destination");
   const fs::path vdb = dir / "damaged.vdb";
-  write_text(vdb, "not a vdb at all");
+  write_text_pyro_cli_inputs(vdb, "not a vdb at all");
   auto r = test::run_pyro({"import-vdb", vdb.string(), "--out", (dir / "missing" / "x.pyrop").string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("at --out: an existing folder"), std::string::npos) << r.err;
@@ -54,7 +54,7 @@ TEST(PyroCliInputs, ImportDestinationsAreCheckedBeforeTheImport) {
 TEST(PyroCliInputs, ImportRemovesWhatKilledRunsLeft) {
   const fs::path dir = test::scratch_dir("inputs_import_leftovers");
   const fs::path out = dir / "cloud.pyrop";
-  write_text(dir / "cloud.pyrop.partial-999999999", "cut short by a kill");  // no such process
+  write_text_pyro_cli_inputs(dir / "cloud.pyrop.partial-999999999", "cut short by a kill");  // no such process
   const auto r = test::run_pyro({"import-vdb", content_path("volumes/sample_cloud.vdb"), "--out",
                                  out.string(), "--error", "0.2", "--width", "48", "--height", "48"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -87,7 +87,7 @@ TEST(PyroCliInputs, TraceOverTheSceneOrIntoTheFramesIsRefused) {
 // A chart's --out that cannot be its folder is refused before the measuring (minutes for some).
 TEST(PyroCliInputs, ChartDestinationsAreCheckedBeforeMeasuring) {
   const fs::path dir = test::scratch_dir("inputs_chart");
-  write_text(dir / "a_file", "not a folder");
+  write_text_pyro_cli_inputs(dir / "a_file", "not a folder");
   for (const fs::path& out : {dir / "a_file", dir / "a_file" / "sub"}) {
     const auto r = test::run_pyro({"chart", "layer-resolution", "--out", out.string()});
     EXPECT_EQ(r.exit_code, 2) << r.err;
@@ -126,7 +126,7 @@ TEST(PyroCliInputs, VolumePathsThatAreNotFilesSayWhatTheyAre) {
       {"folder.vdb", "a folder"}, {"fifo.vdb", "a FIFO"}, {"loop_a.vdb", "a symbolic link loop"}};
   for (const auto& [file, kind] : cases) {
     const fs::path scene = dir / "scene.json";
-    write_text(scene, std::string(R"({"volumes": [{"file": ")") + file + "\"}]}");
+    write_text_pyro_cli_inputs(scene, std::string(R"({"volumes": [{"file": ")") + file + "\"}]}");
     const std::string timeout = test::preload_for_pyro_only("timeout 20");
     const auto r = test::run_pyro_with(timeout, {"render", scene.string(), "--out", (dir / "out").string()});
     EXPECT_EQ(r.exit_code, 2) << file << ": " << r.err;
@@ -142,7 +142,7 @@ TEST(PyroCliInputs, VolumePathsThatAreNotFilesSayWhatTheyAre) {
 TEST(PyroCliInputs, BytesFromFilesAreEscapedInMessages) {
   const fs::path dir = test::scratch_dir("inputs_escaped");
   const fs::path scene = dir / "scene.json";
-  write_text(scene, "{\"\\u001b[2Jcloudz\": 1}");
+  write_text_pyro_cli_inputs(scene, "{\"\\u001b[2Jcloudz\": 1}");
   const auto r = test::run_pyro({"render", scene.string(), "--out", (dir / "out").string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << "a raw escape reached stderr";

@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path write_scene(const fs::path& dir, const std::string& name, const nlohmann::json& scene) {
+fs::path write_scene_pyro_cli_lights(const fs::path& dir, const std::string& name, const nlohmann::json& scene) {
   const fs::path p = dir / name;
   std::ofstream(p) << scene.dump(2);
   return p;
@@ -34,15 +34,15 @@ TEST(PyroCliLights, TheLightListSayingTheSameRendersTheSameBytes) {
   const fs::path dir = test::scratch_dir("lights_list");
   nlohmann::json scene = nlohmann::json::parse(test::read_bytes(test::scene_path("explosion.json")));
   scene["light"] = {{"direction", {-0.3, -1.0, 0.2}}, {"color", {1.0, 0.9, 0.7}}, {"ambient", {0.2, 0.25, 0.3}}};
-  const std::string short_form = render_frame(write_scene(dir, "short.json", scene), dir / "short");
+  const std::string short_form = render_frame(write_scene_pyro_cli_lights(dir, "short.json", scene), dir / "short");
 
   scene.erase("light");
   scene["lights"] = {{{"type", "ambient"}, {"color", {0.2, 0.25, 0.3}}},
                      {{"type", "directional"}, {"direction", {-0.3, -1.0, 0.2}}, {"color", {1.0, 0.9, 0.7}}}};
-  EXPECT_EQ(render_frame(write_scene(dir, "list.json", scene), dir / "list"), short_form);
+  EXPECT_EQ(render_frame(write_scene_pyro_cli_lights(dir, "list.json", scene), dir / "list"), short_form);
 
   scene["lights"] = nlohmann::json::array();
-  EXPECT_NE(render_frame(write_scene(dir, "dark.json", scene), dir / "dark"), short_form);
+  EXPECT_NE(render_frame(write_scene_pyro_cli_lights(dir, "dark.json", scene), dir / "dark"), short_form);
 }
 
 }  // namespace

@@ -19,13 +19,13 @@ namespace {
 
 using nlohmann::json;
 
-constexpr int kFrames = 3;
+constexpr int kPyroCliProfileFrames = 3;
 
 TEST(PyroCliProfile, ExplosionTraceHasASpanPerSystemPerFrame) {
   const auto dir = test::scratch_dir("profile_trace");
   const std::string trace_file = (dir / "explosion.trace.json").string();
   const auto r = test::run_pyro({"render", test::scene_path("explosion.json"), "--out",
-                                 (dir / "frames").string(), "--frames", std::to_string(kFrames),
+                                 (dir / "frames").string(), "--frames", std::to_string(kPyroCliProfileFrames),
                                  "--width", "96", "--height", "96", "--trace", trace_file, "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json summary = test::last_json_line(r.out);
@@ -79,8 +79,8 @@ TEST(PyroCliProfile, ExplosionTraceHasASpanPerSystemPerFrame) {
     }
   }
   for (const int tid : used_tracks) EXPECT_TRUE(named_tracks.count(tid)) << "track " << tid;
-  ASSERT_EQ(frames.size(), size_t(kFrames));
-  for (int f = 0; f < kFrames; ++f) {
+  ASSERT_EQ(frames.size(), size_t(kPyroCliProfileFrames));
+  for (int f = 0; f < kPyroCliProfileFrames; ++f) {
     ASSERT_TRUE(frames.count(f));
     const Span frame = frames[f];
     for (const std::string& name : systems) {

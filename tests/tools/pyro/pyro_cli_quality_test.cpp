@@ -43,7 +43,7 @@ std::string tiny_scene(const std::string& extra_quality = "\"quality\": {\"max_r
          (extra_quality.empty() ? std::string() : ", " + extra_quality) + "}";
 }
 
-void write(const fs::path& p, const std::string& text) {
+void write_pyro_cli_quality(const fs::path& p, const std::string& text) {
   std::ofstream out(p);
   out << text;
 }
@@ -69,7 +69,7 @@ TEST(PyroCliQuality, RenderedPickMeetsTheTargetAgainstTheCpuReference) {
   const fs::path dir = test::scratch_dir("quality_render");
   const CacheDir cache(dir / "cache");
   const fs::path scene_file = dir / "tiny.json";
-  write(scene_file, tiny_scene());
+  write_pyro_cli_quality(scene_file, tiny_scene());
   const auto r = test::run_pyro({"render", scene_file.string(), "--out", (dir / "out").string(), "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("pyro: quality: max RMSE 0.03 -> layer scale"), std::string::npos) << r.err;
@@ -106,7 +106,7 @@ TEST(PyroCliQuality, PickIsCachedAndMeasuredAgainWhenTheSceneChanges) {
   const fs::path dir = test::scratch_dir("quality_cache");
   const CacheDir cache(dir / "cache");
   const fs::path scene_file = dir / "tiny.json";
-  write(scene_file, tiny_scene());
+  write_pyro_cli_quality(scene_file, tiny_scene());
   const std::vector<std::string> args = {"quality", scene_file.string(), "--no-verify", "--json"};
 
   const auto first = test::run_pyro(args);
@@ -127,7 +127,7 @@ TEST(PyroCliQuality, PickIsCachedAndMeasuredAgainWhenTheSceneChanges) {
   EXPECT_EQ(b["expected_rmse"], a["expected_rmse"]);
   EXPECT_EQ(b["cache_key"], a["cache_key"]);
 
-  write(scene_file, tiny_scene("\"quality\": {\"max_rmse\": 0.03}", 8));  // another seed
+  write_pyro_cli_quality(scene_file, tiny_scene("\"quality\": {\"max_rmse\": 0.03}", 8));  // another seed
   const auto third = test::run_pyro(args);
   ASSERT_EQ(third.exit_code, 0) << third.err;
   const json c = test::last_json_line(third.out);
@@ -143,7 +143,7 @@ TEST(PyroCliQuality, ADamagedCacheIsDiscardedWithANote) {
   const fs::path dir = test::scratch_dir("quality_damaged_cache");
   const CacheDir cache(dir / "cache");
   const fs::path scene_file = dir / "tiny.json";
-  write(scene_file, tiny_scene());
+  write_pyro_cli_quality(scene_file, tiny_scene());
   const std::vector<std::string> args = {"render", scene_file.string(), "--out", (dir / "out").string(), "--json"};
   ASSERT_EQ(test::run_pyro(args).exit_code, 0);
   const fs::path cache_file = dir / "cache" / "quality.json";
@@ -151,7 +151,7 @@ TEST(PyroCliQuality, ADamagedCacheIsDiscardedWithANote) {
     json all = json::parse(test::read_bytes(cache_file));
     ASSERT_EQ(all.size(), 1u);
     for (auto& [key, entry] : all.items()) entry["settings"]["footprint_size"] = footprint;
-    write(cache_file, all.dump());
+    write_pyro_cli_quality(cache_file, all.dump());
     fs::remove_all(dir / "out");
     const auto r = test::run_pyro(args);
     ASSERT_EQ(r.exit_code, 0) << footprint << ": " << r.err;
@@ -173,9 +173,9 @@ TEST(PyroCliQuality, EveryRangeOfARunUsesThePickRecordedWithIt) {
   const fs::path dir = test::scratch_dir("quality_recorded_pick");
   const CacheDir cache(dir / "not_writable" / "quality.json" / "cache");  // under a file: no cache
   fs::create_directories(dir / "not_writable");
-  write(dir / "not_writable" / "quality.json", "a file, so no cache folder can be made under it");
+  write_pyro_cli_quality(dir / "not_writable" / "quality.json", "a file, so no cache folder can be made under it");
   const fs::path scene_file = dir / "tiny.json", out = dir / "out";
-  write(scene_file, tiny_scene());
+  write_pyro_cli_quality(scene_file, tiny_scene());
   auto range = [&](const std::string& frames) {
     return test::run_pyro({"render", scene_file.string(), "--out", out.string(), "--frames", frames, "--json"});
   };
@@ -186,7 +186,7 @@ TEST(PyroCliQuality, EveryRangeOfARunUsesThePickRecordedWithIt) {
   json& settings = manifest["choices"]["quality"]["settings"];
   const int other_footprint = settings["footprint_size"].get<int>() == 16 ? 32 : 16;
   settings["footprint_size"] = other_footprint;
-  write(out / ".pyro_manifest.json", manifest.dump());
+  write_pyro_cli_quality(out / ".pyro_manifest.json", manifest.dump());
   const auto second = range("1:1");
   ASSERT_EQ(second.exit_code, 0) << second.err;
   EXPECT_EQ(second.err.find("measuring"), std::string::npos) << second.err;
@@ -208,7 +208,7 @@ TEST(PyroCliQuality, BadTargetsExitTwoNamingThePointer) {
   };
   for (const auto& c : cases) {
     const fs::path scene_file = dir / "bad.json";
-    write(scene_file, tiny_scene(c.quality));
+    write_pyro_cli_quality(scene_file, tiny_scene(c.quality));
     const fs::path out = dir / "out";
     const auto r = test::run_pyro({"render", scene_file.string(), "--out", out.string()});
     EXPECT_EQ(r.exit_code, 2) << c.quality << "\n" << r.err;
@@ -219,7 +219,7 @@ TEST(PyroCliQuality, BadTargetsExitTwoNamingThePointer) {
   }
   // pyro quality without any target names the key it needs.
   const fs::path plain = dir / "plain.json";
-  write(plain, tiny_scene(""));
+  write_pyro_cli_quality(plain, tiny_scene(""));
   const auto r = test::run_pyro({"quality", plain.string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("/quality/max_rmse"), std::string::npos) << r.err;

@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 // Waits for `pid`; its exit code, or -signal when a signal ended it.
-int finish(pid_t pid) {
+int finish_pyro_cli_resume(pid_t pid) {
   int status = 0;
   if (waitpid(pid, &status, 0) != pid) return -1000;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
@@ -110,7 +110,7 @@ TEST(PyroCliResume, RendersKilledAtRandomPointsResumeToTheUninterruptedBytes) {
     ASSERT_GT(run, 0);
     std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(when(random) * run_ms));
     ::kill(run, SIGKILL);
-    if (finish(run) == -SIGKILL) ++killed_mid_run;
+    if (finish_pyro_cli_resume(run) == -SIGKILL) ++killed_mid_run;
     const int finished = finished_frames(out);
     const auto resumed = test::render("fog.json", out, "60", 48, {"--resume"});
     ASSERT_EQ(resumed.exit_code, 0) << "trial " << trial << ": " << resumed.err;
@@ -161,7 +161,7 @@ TEST(PyroCliResume, ResumeKeepsOnlyThisRendersFrames) {
     return fs::exists(fresh, ec) && staging_holds_a_frame(fresh);
   }, other_run));
   ::kill(other_run, SIGKILL);
-  finish(other_run);
+  finish_pyro_cli_resume(other_run);
   const auto resumed = test::render("fog.json", fresh, "5", 32, {"--resume"});
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_EQ(frames_kept(resumed.err), 0) << resumed.err;
@@ -185,7 +185,7 @@ TEST(PyroCliConcurrent, ASecondRenderIntoTheFolderIsRefusedOrWaitsAndNeverMixes)
   // With --wait the explosion runs once the fog render is done, and is refused then: the
   // folder holds another scene's frames.
   const auto waited = test::render("explosion.json", out, "120", 32, {"--wait"});
-  EXPECT_EQ(finish(fog), 0);
+  EXPECT_EQ(finish_pyro_cli_resume(fog), 0);
   EXPECT_EQ(waited.exit_code, 2) << waited.err;
   EXPECT_NE(waited.err.find("fog.json"), std::string::npos) << waited.err;
   const auto held = test::contents(out);
@@ -201,7 +201,7 @@ TEST(PyroCliConcurrent, TwoRangesOfOneRenderWithWaitBothLand) {
   ASSERT_GT(first, 0);
   ASSERT_TRUE(wait_for_staging(out, first));
   const auto second = test::render("fog.json", out, "40:79", 32, {"--wait"});
-  EXPECT_EQ(finish(first), 0);
+  EXPECT_EQ(finish_pyro_cli_resume(first), 0);
   EXPECT_EQ(second.exit_code, 0) << second.err;
   ASSERT_EQ(test::render("fog.json", dir / "whole", "80", 32).exit_code, 0);
   EXPECT_EQ(test::contents(out), test::contents(dir / "whole"));

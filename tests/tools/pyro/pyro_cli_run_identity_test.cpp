@@ -25,14 +25,14 @@ namespace fs = std::filesystem;
 using test::contents;
 using test::read_bytes;
 
-void write_text(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+void write_text_pyro_cli_run_identity(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 // The scene file `name` of content/scenes with `edit` applied to its JSON, written to `to`.
 void write_edited_scene(const std::string& name, const fs::path& to,
                         const std::function<void(nlohmann::json&)>& edit) {
   nlohmann::json j = nlohmann::json::parse(read_bytes(test::scene_path(name)));
   edit(j);
-  write_text(to, j.dump(2));
+  write_text_pyro_cli_run_identity(to, j.dump(2));
 }
 
 test::CommandResult render_file(const fs::path& scene, const fs::path& out, const std::string& frames,
@@ -95,7 +95,7 @@ TEST(PyroCliRunIdentity, AReformattedSceneIsTheSameRun) {
   ASSERT_EQ(render_file(scene, out, "0:1").exit_code, 0);
   // Other spacing, another file name: the same scene as parsed adds its range to the folder.
   const fs::path moved = dir / "renamed.json";
-  write_text(moved, nlohmann::json::parse(read_bytes(scene)).dump());
+  write_text_pyro_cli_run_identity(moved, nlohmann::json::parse(read_bytes(scene)).dump());
   const auto more = render_file(moved, out, "2:3");
   ASSERT_EQ(more.exit_code, 0) << more.err;
   EXPECT_EQ(contents(out).size(), 5u) << "four frames and the manifest";
@@ -105,8 +105,8 @@ TEST(PyroCliRunIdentity, AnotherRunIsRefusedAndOverwriteKeepsForeignFiles) {
   const fs::path dir = test::scratch_dir("identity_refused");
   const fs::path out = dir / "out";
   ASSERT_EQ(test::render("fog.json", out, "2", 32).exit_code, 0);
-  write_text(out / "notes.txt", "the artist's notes");
-  write_text(out / "frame_9999.png", "not written by pyro");
+  write_text_pyro_cli_run_identity(out / "notes.txt", "the artist's notes");
+  write_text_pyro_cli_run_identity(out / "frame_9999.png", "not written by pyro");
   const auto before = contents(out);
 
   const auto refused = test::render("mist.json", out, "1", 32);

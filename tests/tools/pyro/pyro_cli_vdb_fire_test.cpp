@@ -87,7 +87,7 @@ std::vector<glm::dvec3> emitted_light(const fs::path& dir, const std::string& py
   return out;
 }
 
-double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z; }
+double luminance_pyro_cli_vdb_fire(const glm::dvec3& rgb) { return 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z; }
 
 TEST(PyroImportVdbFire, AMantaflowCacheFrameImportsAsFireAndSmokeWithTheDefaults) {
   const fs::path dir = test::scratch_dir("cli_vdb_fire_mantaflow");
@@ -107,8 +107,8 @@ TEST(PyroImportVdbFire, AMantaflowCacheFrameImportsAsFireAndSmokeWithTheDefaults
   // Fire and smoke: the brightest emitted pixel is a flame colour (red over green over blue).
   const std::vector<glm::dvec3> light = emitted_light(dir, out);
   const auto hottest = std::max_element(light.begin(), light.end(),
-                                        [](const glm::dvec3& a, const glm::dvec3& b) { return luminance(a) < luminance(b); });
-  EXPECT_GT(luminance(*hottest), 0.05);
+                                        [](const glm::dvec3& a, const glm::dvec3& b) { return luminance_pyro_cli_vdb_fire(a) < luminance_pyro_cli_vdb_fire(b); });
+  EXPECT_GT(luminance_pyro_cli_vdb_fire(*hottest), 0.05);
   EXPECT_GT(hottest->x, hottest->y);
   EXPECT_GT(hottest->y, hottest->z);
 }
@@ -181,9 +181,9 @@ TEST(PyroImportVdbFire, OpenUsdDensityAndHeatGlowsWithTheTablesChromaticity) {
   const std::vector<glm::dvec3> light = emitted_light(dir, out);
   std::vector<glm::dvec3> emitting;
   for (const glm::dvec3& l : light)
-    if (luminance(l) > 0.0) emitting.push_back(l);
+    if (luminance_pyro_cli_vdb_fire(l) > 0.0) emitting.push_back(l);
   ASSERT_GT(emitting.size(), 50u);
-  std::sort(emitting.begin(), emitting.end(), [](const glm::dvec3& a, const glm::dvec3& b) { return luminance(a) > luminance(b); });
+  std::sort(emitting.begin(), emitting.end(), [](const glm::dvec3& a, const glm::dvec3& b) { return luminance_pyro_cli_vdb_fire(a) > luminance_pyro_cli_vdb_fire(b); });
   // The hottest region: the brightest 1 % of the emitting pixels.
   glm::dvec3 hot(0.0);
   const size_t top = std::max<size_t>(1, emitting.size() / 100);
@@ -199,9 +199,9 @@ TEST(PyroImportVdbFire, OpenUsdDensityAndHeatGlowsWithTheTablesChromaticity) {
   // rendered through the whole medium (the others' temperatures set to 0, which does not glow).
   std::vector<size_t> glowing;
   const TemperatureEmission e = make_temperature_emission(map, kDefaultEmissionIntensity, s["temperature"]["max"].get<double>());
-  const double top_luminance = luminance(glm::dvec3(emitted_radiance(e, (hottest_kelvin - map.offset) / map.scale)));
+  const double top_luminance = luminance_pyro_cli_vdb_fire(glm::dvec3(emitted_radiance(e, (hottest_kelvin - map.offset) / map.scale)));
   for (size_t i = 0; i < file.temperature.size(); ++i)
-    if (luminance(glm::dvec3(emitted_radiance(e, file.temperature[i]))) >= 0.01 * top_luminance) glowing.push_back(i);
+    if (luminance_pyro_cli_vdb_fire(glm::dvec3(emitted_radiance(e, file.temperature[i]))) >= 0.01 * top_luminance) glowing.push_back(i);
   ASSERT_GE(glowing.size(), 6u);
   std::sort(glowing.begin(), glowing.end(), [&](size_t a, size_t b) { return file.temperature[a] < file.temperature[b]; });
   const auto light_of = [&](size_t from, size_t to, const std::string& name) {
