@@ -15,6 +15,7 @@
 #include "components/camera_orbit.h"
 #include "engine/core/enum_names.h"
 #include "engine/core/user_error.h"
+#include "engine/gpu/current_context.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/window_context.h"
 #include "engine/io/png_file.h"
@@ -188,7 +189,18 @@ class Viewer {
     open.description = std::move(scene);
     open.quality = std::move(pick);
     open.on_note = on_note;
-    return open_scene(o_.scene, open);
+    // The pick is measured, or its cache keyed, on the shared headless context: the window's
+    // context is released around it (engine/gpu/current_context.h), and made current again by
+    // the runtime, or here when opening fails.
+    open.on_pick = [](const std::optional<QualityPick>&) { gpu::release_current_egl_context(); };
+    window_.release_current();
+    try {
+      return open_scene(o_.scene, open);
+    } catch (...) {
+      gpu::release_current_egl_context();
+      window_.make_current();
+      throw;
+    }
   }
 
   // Runs `opened` from now on; until the user chooses a layer scale, the one shown is the one it
