@@ -82,6 +82,9 @@ WindowContext::~WindowContext() {
 void WindowContext::make_current() {
   if (glfwGetCurrentContext() != window_) glfwMakeContextCurrent(window_);
 }
+void WindowContext::release_current() {
+  if (glfwGetCurrentContext() == window_) glfwMakeContextCurrent(nullptr);
+}
 void WindowContext::swap_buffers() { glfwSwapBuffers(window_); }
 void WindowContext::poll_events() { glfwPollEvents(); }
 void WindowContext::wait_events(double seconds) { glfwWaitEventsTimeout(seconds); }

@@ -25,6 +25,9 @@ class WindowContext {
   WindowContext& operator=(const WindowContext&) = delete;
 
   void make_current();
+  // Leaves the calling thread with no current context when the window's is
+  // (engine/gpu/current_context.h says why).
+  void release_current();
   void swap_buffers();
   // Processes the window system's events (input, resize, close) without waiting.
   void poll_events();

@@ -44,6 +44,7 @@ RuntimeOptions runtime_options(const ExplosionShadowsBenchOptions& o, float laye
 // The images at `at` of `scene` stepped from its start.
 std::vector<std::vector<float>> images_at(const SceneDescription& scene, const RuntimeOptions& ro,
                                           const std::vector<int>& at, bool cull) {
+  // behind the front door: times and images the shadow settings this benchmark sets itself
   SceneRuntime runtime(scene, ro);
   runtime.world().resource<RenderSettings>().cull_particles = cull;
   std::vector<std::vector<float>> images;
@@ -82,6 +83,7 @@ struct PairedRates {
 // both alike and their ratio holds.
 PairedRates paired_frames_per_second(const SceneDescription& off, const SceneDescription& lit,
                                      const RuntimeOptions& ro, int frames) {
+  // behind the front door: the same scene unlit and lit, at the settings this benchmark sets
   SceneRuntime a(off, ro), b(lit, ro);
   a.step();
   b.step();

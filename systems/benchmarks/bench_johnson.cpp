@@ -65,6 +65,7 @@ nlohmann::json bench_johnson(const JohnsonBenchOptions& o) {
     ro.layer_scale = o.layer_scale;
     ro.frame_scale = o.frame_scale;
     ro.sync_timing = o.sync_timing;
+    // behind the front door: the paper's scenes at the layer and frame scales asked for
     SceneRuntime runtime(scene, ro);
     place_viewer(runtime, 0.0);
     runtime.step();  // warm up
@@ -90,6 +91,7 @@ nlohmann::json bench_johnson(const JohnsonBenchOptions& o) {
       reduced.sync_timing = full.sync_timing = false;
       full.layer_scale = 1.0f;
       full.frame_scale = 1.0f;
+      // behind the front door: reduced against full resolution, as set here
       SceneRuntime measured(scene, reduced), reference(scene, full);
       for (int k = 0; k < o.error_samples; ++k) {
         const double t = (k + 0.5) / o.error_samples;

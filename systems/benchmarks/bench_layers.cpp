@@ -52,6 +52,7 @@ void choose_methods(SceneRuntime& runtime, bool depth_aware, bool tiles, bool sp
 FrameTiming time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames,
                         nlohmann::json* system_ms, bool depth_aware = true, bool tiles = true,
                         bool sprites = true, ProgressTask* progress = nullptr, size_t done = 0) {
+  // behind the front door: times the layer scale and methods its caller sets
   SceneRuntime runtime(scene, options);
   choose_methods(runtime, depth_aware, tiles, sprites);
   runtime.step();  // warm up: shaders, tables, targets
@@ -104,6 +105,7 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     RuntimeOptions measured_options = timed, reference_options = base;
     measured_options.readback = reference_options.readback = true;
     reference_options.layer_scale = 1.0f;
+    // behind the front door: each layer scale against full resolution, as set here
     SceneRuntime measured(scene, measured_options), reference(scene, reference_options);
     choose_methods(measured, depth_aware(o), tiles(o), sprites(o));
     double sum = 0.0, edge_sum = 0.0, halo_sum = 0.0, halo = 0.0;
@@ -184,6 +186,7 @@ nlohmann::json bench_table1(const Table1BenchOptions& o) {
       ro.layer_scale = 0.5f;
       ro.particles = shape;
       ro.shading = ParticleShading::explosion;
+      // behind the front door: Table 1's explosion at the paper's half-resolution layers
       SceneRuntime probe(s, ro);
       probe.step();
       const uint64_t live = live_particles(probe.world());

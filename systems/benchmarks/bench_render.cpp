@@ -9,7 +9,7 @@
 #include "components/draw_list.h"
 #include "components/gpu_frame.h"
 #include "components/view.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/open_scene/open_scene.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "engine/core/progress_sink.h"
@@ -35,12 +35,13 @@ using Clock = std::chrono::steady_clock;
 }  // namespace
 
 nlohmann::json bench_render(const RenderBenchOptions& o) {
-  const SceneDescription scene = load_scene(o.scene);
-  RuntimeOptions ro;
-  ro.readback = false;
-  ro.width_override = o.width;
-  ro.height_override = o.height;
-  SceneRuntime runtime(scene, ro);
+  OpenSceneOptions open;  // the scene as every command opens it: its quality pick applied
+  open.runtime.readback = false;
+  open.runtime.width_override = o.width;
+  open.runtime.height_override = o.height;
+  const OpenedScene opened = open_scene(o.scene, open);
+  const SceneDescription& scene = opened.description;
+  SceneRuntime& runtime = *opened.runtime;
   ProgressTask progress(o.progress, "bench render", static_cast<size_t>(o.frames + 2 * o.pass_repeats));
 
   for (int i = 0; i < 3; ++i) runtime.step();  // warm up: programs, buffers, caches

@@ -113,6 +113,7 @@ ScaleRun run_count(const SceneDescription& scene, const ScaleBenchOptions& o, Pr
   options.width_override = o.width;
   options.height_override = o.height;
   options.threads = o.threads;
+  // behind the front door: a scene scaled to the particle count measured, as written
   SceneRuntime runtime(scene, options);
   runtime.world().resource<RenderSettings>().cull_particles = o.cull;
   runtime.world().resource<RenderSettings>().sort_device = o.sort_device;

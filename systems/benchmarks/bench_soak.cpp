@@ -9,7 +9,7 @@
 
 #include "components/emitter.h"
 #include "components/particle_set.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/open_scene/open_scene.h"
 #include "systems/scene_runtime/scene_runtime.h"
 
 #include "engine/core/progress_sink.h"
@@ -47,12 +47,13 @@ uint64_t non_finite_values(SceneRuntime& runtime, uint64_t& live) {
 }  // namespace
 
 nlohmann::json bench_soak(const SoakBenchOptions& o) {
-  const SceneDescription scene = load_scene(o.scene);
-  RuntimeOptions options;
-  options.readback = false;
-  options.width_override = o.width;
-  options.height_override = o.height;
-  SceneRuntime runtime(scene, options);
+  OpenSceneOptions open;  // the scene as every command opens it: its quality pick applied
+  open.runtime.readback = false;
+  open.runtime.width_override = o.width;
+  open.runtime.height_override = o.height;
+  const OpenedScene opened = open_scene(o.scene, open);
+  SceneRuntime& runtime = *opened.runtime;
+  const SceneDescription& scene = runtime.scene();  // as it runs (a pick's time step applied)
 
   using clock = std::chrono::steady_clock;
   const long tenth = std::max(1L, o.frames / 10);

@@ -10,6 +10,7 @@ namespace pyro {
 
 double median_ms_per_frame(const SceneDescription& scene, RuntimeOptions options, int frames) {
   options.readback = false;
+  // behind the front door: times the settings its caller sets (a chart's or benchmark's)
   SceneRuntime timed(scene, options);
   timed.step();
   glFinish();

@@ -29,6 +29,7 @@ SceneRuntime relit_runtime(VolumeAsset volume, const VolumeMedium& medium, const
   const ResolvedScene resolved = resolve_scene(scene, ro, std::numeric_limits<int>::max());
   SceneAssets assets;
   assets.volumes.push_back(std::move(volume));
+  // behind the front door: a scene built from particles in memory, no scene file to open
   return SceneRuntime(resolved, std::move(assets), ro);
 }
 

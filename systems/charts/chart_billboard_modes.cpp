@@ -73,6 +73,7 @@ ChartTable chart_billboard_modes(const BillboardModesChartOptions& o) {
       ro.layer_scale = 1.0f;
       const double ms = median_ms_per_frame(scene, ro, o.frames);
       ro.readback = true;
+      // behind the front door: images each billboard mode at the settings the chart sets
       SceneRuntime imaged(scene, ro);
       imaged.step();
       const RgbImage splat = rgb_of(imaged.image());

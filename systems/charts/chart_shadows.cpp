@@ -42,6 +42,7 @@ std::string setting_name(const ShadowSettings& s) {
 
 // Milliseconds a frame of the light phase's shadow systems, the mean over `frames` frames.
 double shadow_ms_per_frame(const SceneDescription& scene, const RuntimeOptions& options, int frames) {
+  // behind the front door: times the shadow setting the chart sets
   SceneRuntime runtime(scene, options);
   for (int f = 0; f < frames; ++f) runtime.draw_frame(f);
   double ms = 0.0;
@@ -98,6 +99,7 @@ ChartTable chart_shadows(const ShadowsChartOptions& o) {
       row.group = std::string(name_of(s.method));
       row.time = median_ms_per_frame(scene, ro, o.frames);
       ro.readback = true;
+      // behind the front door: images the shadow setting the chart sets
       SceneRuntime imaged(scene, ro);
       imaged.draw_frame(0);
       row.error = image_rmse(rgb_of(imaged.image()), reference);

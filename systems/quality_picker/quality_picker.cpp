@@ -200,6 +200,15 @@ std::string shadow_choice_text(const std::optional<ShadowChoice>& s) {
   return ", shadows map " + std::to_string(s->map_size) + "x" + std::to_string(s->map_slices);
 }
 
+nlohmann::json quality_pick_summary(const QualityPick& pick) {
+  return {{"max_rmse", pick.max_rmse},
+          {"settings", to_json(pick.settings)},
+          {"expected_rmse", pick.expected_rmse},
+          {"met", pick.met},
+          {"ground_truth", pick.ground_truth},
+          {"from_cache", pick.from_cache}};
+}
+
 std::string quality_pick_note(const QualityPick& pick, const SceneDescription& scene) {
   char line[640];
   std::snprintf(line, sizeof line,

@@ -66,6 +66,11 @@ std::optional<QualityPick> pick_scene_quality(const SceneDescription& scene,
                                               const std::string& renderer,
                                               const NoteSink& on_note = {});
 
+// What a command's JSON summary reports of the pick it ran with: the target, the settings, the
+// expected error, whether the target was met, the ground truth and whether the pick came from a
+// cache (or an output folder's record).
+nlohmann::json quality_pick_summary(const QualityPick& pick);
+
 // One line describing the pick, for the user: the target, the settings, the expected error.
 std::string quality_pick_note(const QualityPick& pick, const SceneDescription& scene);
 

@@ -19,8 +19,8 @@
 
 namespace pyro {
 
-FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBakeOptions& options,
-                                 const std::string& out) {
+void check_flipbook_bake(const SceneDescription& scene, const FlipbookBakeOptions& options,
+                         const std::string& out) {
   namespace fs = std::filesystem;
   if (!scene.fires.empty())
     throw UserError(scene.file, "/fires",
@@ -34,12 +34,32 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
                     "expected a cross-fade shorter than the flipbook (0 to " +
                         std::to_string(options.frames - 1) + " frames), found " +
                         std::to_string(options.loop_blend));
-  const auto t0 = std::chrono::steady_clock::now();
+}
+
+RuntimeOptions flipbook_runtime_options(const FlipbookBakeOptions& options) {
   RuntimeOptions runtime_options;
   runtime_options.readback = false;
   runtime_options.width_override = options.width;
   runtime_options.height_override = options.height;
-  SceneRuntime runtime(scene, runtime_options);
+  return runtime_options;
+}
+
+FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBakeOptions& options,
+                                 const std::string& out) {
+  check_flipbook_bake(scene, options, out);
+  const auto t0 = std::chrono::steady_clock::now();
+  // Behind the front door: the asset step of a runtime being opened bakes here.
+  SceneRuntime runtime(scene, flipbook_runtime_options(options));
+  FlipbookBakeResult result = bake_flipbook(runtime, options, out);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+FlipbookBakeResult bake_flipbook(SceneRuntime& runtime, const FlipbookBakeOptions& options,
+                                 const std::string& out) {
+  namespace fs = std::filesystem;
+  const auto t0 = std::chrono::steady_clock::now();
+  const SceneDescription& scene = runtime.scene();
   FolderReplacement staging(out);
   std::vector<std::vector<uint8_t>> simulated;  // RGBA8 sRGB, frames + loop_blend of them
   int width = 0, height = 0;

@@ -16,6 +16,8 @@
 
 namespace pyro {
 
+class SceneRuntime;
+
 struct FlipbookBakeOptions {
   int frames = 32;
   int width = 256;
@@ -37,8 +39,23 @@ struct FlipbookBakeResult {
   bool restored_old_folder = false;  // a killed bake's old folder put back before this one
 };
 
-// Throws UserError naming the scene when it has `fires` (a bake renders simulated fire, not
-// flipbooks), `out` when it is a file, or "--loop-blend" when it is not below the frame count.
+// What a bake refuses before anything runs: throws UserError naming the scene when it has
+// `fires` (a bake renders simulated fire, not flipbooks), `out` when it is a file, or
+// "--loop-blend" when it is not below the frame count.
+void check_flipbook_bake(const SceneDescription& scene, const FlipbookBakeOptions& options,
+                         const std::string& out);
+
+// How a bake runs its scene: mono, at the flipbook's size, nothing read back.
+RuntimeOptions flipbook_runtime_options(const FlipbookBakeOptions& options);
+
+// Bakes from `runtime`, a scene checked by check_flipbook_bake and opened with
+// flipbook_runtime_options (pyro bake-flipbook opens it through the front door,
+// systems/open_scene/open_scene.h, so that a quality target's pick applies), still at frame 0.
+FlipbookBakeResult bake_flipbook(SceneRuntime& runtime, const FlipbookBakeOptions& options,
+                                 const std::string& out);
+
+// Checks, opens `scene` as it is written (no quality pick: the runtime's own asset step bakes the
+// default flipbook through here, below the quality picker) and bakes.
 FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBakeOptions& options,
                                  const std::string& out);
 

@@ -15,11 +15,12 @@
 #include "components/camera_orbit.h"
 #include "engine/core/enum_names.h"
 #include "engine/core/user_error.h"
+#include "engine/gpu/current_context.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/window_context.h"
 #include "engine/io/png_file.h"
 #include "engine/math/view_controller.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/open_scene/open_scene.h"
 #include "systems/scene_runtime/particle_counts.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "systems/viewer/scene_reloader.h"
@@ -60,7 +61,8 @@ class Viewer {
     settings_.billboards = o_.runtime.alignment.value_or(scene_.render.billboards);
     settings_.layer_scale = o_.runtime.layer_scale.value_or(scene_.render.layer_scale);
     settings_.overlay = o_.overlay;
-    runtime_ = make_runtime(scene_);
+    layer_scale_chosen_ = o_.runtime.layer_scale.has_value();
+    take(open(scene_, std::nullopt, o_.on_note));
   }
 
   nlohmann::json run() {
@@ -144,38 +146,69 @@ class Viewer {
       reloads.push_back(j);
     }
     const double per_frame = frame_ ? 1000.0 / double(frame_) : 0.0;
-    return {{"scene", o_.scene},
-            {"name", scene_.name},
-            {"frames", frame_},
-            {"width", window_.framebuffer_width()},
-            {"height", window_.framebuffer_height()},
-            {"seconds", seconds},
-            {"fps", frame_ ? double(frame_) / seconds : 0.0},
-            {"ms_per_frame", seconds * per_frame},
-            {"runtime_ms_per_frame", runtime_seconds_ * per_frame},
-            {"window_ms_per_frame", window_seconds_ * per_frame},
-            {"particles", drawn_particles(runtime_->world())},
-            {"simulation_frame", runtime_->frame()},
-            {"paused", settings_.paused},
-            {"camera", name_of(controller_.mode())},
-            {"billboards", name_of(settings_.billboards)},
-            {"stereo", name_of(settings_.stereo)},
-            {"layer_scale", settings_.layer_scale},
-            {"screenshot", o_.screenshot},
-            {"reloads", reloads},
-            {"renderer", window_.description()}};
+    nlohmann::json j = {{"scene", o_.scene},
+                        {"name", scene_.name},
+                        {"frames", frame_},
+                        {"width", window_.framebuffer_width()},
+                        {"height", window_.framebuffer_height()},
+                        {"seconds", seconds},
+                        {"fps", frame_ ? double(frame_) / seconds : 0.0},
+                        {"ms_per_frame", seconds * per_frame},
+                        {"runtime_ms_per_frame", runtime_seconds_ * per_frame},
+                        {"window_ms_per_frame", window_seconds_ * per_frame},
+                        {"particles", drawn_particles(runtime_->world())},
+                        {"simulation_frame", runtime_->frame()},
+                        {"paused", settings_.paused},
+                        {"camera", name_of(controller_.mode())},
+                        {"billboards", name_of(settings_.billboards)},
+                        {"stereo", name_of(settings_.stereo)},
+                        {"layer_scale", settings_.layer_scale},
+                        {"screenshot", o_.screenshot},
+                        {"reloads", reloads},
+                        {"renderer", window_.description()}};
+    if (quality_) j["quality"] = quality_pick_summary(*quality_);
+    return j;
   }
 
-  std::unique_ptr<SceneRuntime> make_runtime(const SceneDescription& scene) {
-    RuntimeOptions o = o_.runtime;
+  // The scene through the engine's front door (systems/open_scene/open_scene.h) with the
+  // viewer's settings: `scene` as held (none: the file read again), `pick` the quality pick
+  // already made for it (none: the cache's, or measured now, for a scene with a target).
+  OpenedScene open(std::optional<SceneDescription> scene, std::optional<QualityPick> pick,
+                   const NoteSink& on_note) {
+    OpenSceneOptions open;
+    open.runtime = o_.runtime;
+    RuntimeOptions& o = open.runtime;
     o.readback = false;
     o.width_override = o_.width;
     o.height_override = o_.height;
     o.stereo_mode = settings_.stereo;
     o.alignment = settings_.billboards;
-    o.layer_scale = settings_.layer_scale;
+    // A layer scale the user chose (--layer-scale, the L key) replaces the scene's and a pick's.
+    o.layer_scale = layer_scale_chosen_ ? std::optional<float>(settings_.layer_scale) : std::nullopt;
     o.make_context_current = [w = &window_] { w->make_current(); };
-    return std::make_unique<SceneRuntime>(scene, o);
+    open.description = std::move(scene);
+    open.quality = std::move(pick);
+    open.on_note = on_note;
+    // The pick is measured, or its cache keyed, on the shared headless context: the window's
+    // context is released around it (engine/gpu/current_context.h), and made current again by
+    // the runtime, or here when opening fails.
+    open.on_pick = [](const std::optional<QualityPick>&) { gpu::release_current_egl_context(); };
+    window_.release_current();
+    try {
+      return open_scene(o_.scene, open);
+    } catch (...) {
+      gpu::release_current_egl_context();
+      window_.make_current();
+      throw;
+    }
+  }
+
+  // Runs `opened` from now on; until the user chooses a layer scale, the one shown is the one it
+  // runs with (the scene's, or its quality pick's).
+  void take(OpenedScene opened) {
+    runtime_ = std::move(opened.runtime);
+    quality_ = std::move(opened.quality);
+    if (!layer_scale_chosen_) settings_.layer_scale = runtime_->resolved().settings.layer_scale;
   }
 
   void note(const std::string& text) const {
@@ -184,11 +217,10 @@ class Viewer {
 
   void reload(const FileStamp& stamp) {
     try {
-      SceneDescription scene = load_scene(o_.scene);
-      std::unique_ptr<SceneRuntime> runtime = make_runtime(scene);
-      runtime_ = std::move(runtime);
+      OpenedScene opened = open(std::nullopt, std::nullopt, [this](const std::string& text) { note(text); });
+      scene_ = std::move(opened.description);
+      take(std::move(opened));
       needs_redraw_ = true;
-      scene_ = std::move(scene);
       if (!camera_moved_) controller_ = ViewController(pose_of(scene_));
       else camera_dirty_ = true;
       reloader_.succeeded(stamp, frame_);
@@ -208,17 +240,21 @@ class Viewer {
   }
 
   // A new runtime for changed render settings, at the same simulation frame.
+  // The scene's quality pick is kept (not noted again).
   void rebuild(const ViewerSettings& previous) {
+    const bool chosen_before = layer_scale_chosen_;
+    layer_scale_chosen_ = chosen_before || settings_.layer_scale != previous.layer_scale;
     try {
       const uint64_t at = runtime_->frame();
-      std::unique_ptr<SceneRuntime> runtime = make_runtime(scene_);
-      while (runtime->frame() < at) runtime->simulate_step();
-      runtime_ = std::move(runtime);
+      OpenedScene opened = open(scene_, quality_, {});
+      while (opened.runtime->frame() < at) opened.runtime->simulate_step();
+      take(std::move(opened));
       needs_redraw_ = true;
       camera_dirty_ = true;
       notice_.clear();
     } catch (const std::exception& e) {
       settings_ = previous;
+      layer_scale_chosen_ = chosen_before;
       notice_ = e.what();
     }
   }
@@ -350,7 +386,9 @@ class Viewer {
   ViewController controller_;
   SceneReloader reloader_;
   ViewerSettings settings_;
+  bool layer_scale_chosen_ = false;  // by --layer-scale or the L key
   std::unique_ptr<SceneRuntime> runtime_;
+  std::optional<QualityPick> quality_;  // the pick runtime_ runs with (scene key quality.max_rmse)
   std::map<std::string, double> system_ms_;
   std::string notice_;  // a render-setting change the runtime refused
   uint64_t frame_ = 0;

@@ -43,7 +43,9 @@ struct ViewerOptions {
 
 // Opens the window (GpuError when there is no display or no OpenGL 4.5 context), shows `scene`
 // until the window closes, Esc, or options.frames frames, and returns the summary: frames, fps,
-// milliseconds per frame (runtime and window parts), the settings at the end, the reloads.
+// milliseconds per frame (runtime and window parts), the settings at the end, the reloads, and
+// the quality pick it runs with (a scene with quality.max_rmse, opened as every command opens
+// it: systems/open_scene/open_scene.h).
 nlohmann::json run_viewer(const ViewerOptions& options, SceneDescription scene);
 
 }  // namespace pyro

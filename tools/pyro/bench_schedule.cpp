@@ -1,5 +1,6 @@
 // pyro bench schedule SCENE [--frames N] [--threads T] [--width W] [--height H] --json
-// The parallel schedule against the sequential one in the same run: two runtimes of the scene,
+// The parallel schedule against the sequential one in the same run: two runtimes of the scene
+// (opened as every command opens it, with one quality pick),
 // one with T threads (0: one per core) and one with 1, stepped in turn (ABAB..., so that both
 // see the same machine noise), the GPU finished after every frame. Reports the median ms per
 // whole frame and per frame of the CPU phases (spawn to sort: the systems that may run
@@ -15,9 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "systems/scene/scene_loader.h"
+#include "systems/open_scene/open_scene.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/print_note.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"
 
@@ -66,15 +68,21 @@ void timed_step(SceneRuntime& runtime, Timings& t) {
 }
 
 nlohmann::json bench_schedule(const ScheduleBenchArgs& a) {
-  const SceneDescription scene = load_scene(a.scene);
-  RuntimeOptions options;
-  options.readback = false;
-  options.width_override = a.width;
-  options.height_override = a.height;
-  options.threads = a.threads;
-  SceneRuntime parallel(scene, options);
-  options.threads = 1;
-  SceneRuntime sequential(scene, options);
+  // Both runtimes open the scene as every command does, with one quality pick.
+  OpenSceneOptions open;
+  open.runtime.readback = false;
+  open.runtime.width_override = a.width;
+  open.runtime.height_override = a.height;
+  open.runtime.threads = a.threads;
+  open.on_note = print_note;
+  const OpenedScene opened_parallel = open_scene(a.scene, open);
+  open.description = opened_parallel.description;
+  open.quality = opened_parallel.quality;
+  open.on_note = {};
+  open.runtime.threads = 1;
+  const OpenedScene opened_sequential = open_scene(a.scene, open);
+  SceneRuntime& parallel = *opened_parallel.runtime;
+  SceneRuntime& sequential = *opened_sequential.runtime;
   parallel.step(), sequential.step();  // warm-up: shaders, tables, targets, worker threads
   Timings par, seq;
   Progress progress("bench schedule", size_t(a.frames));

@@ -48,7 +48,9 @@ ModeRun run_mode(const SceneDescription& scene, const Args& a, BillboardAlignmen
   done += size_t(a.frames) + 1;
   progress.update(done);
   o.readback = true;
-  SceneRuntime imaged(scene, o);
+  // The modes are compared at the scene's written settings (a quality pick's layer scale would
+  // blur the difference measured); median_ms_per_frame times them alike.
+  SceneRuntime imaged(scene, o);  // behind the front door: the written settings, as above
   imaged.step();
   progress.update(++done);
   return {imaged.image(), ms};

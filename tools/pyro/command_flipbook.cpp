@@ -1,8 +1,10 @@
 // pyro bake-flipbook SCENE --out DIR [--frames N] [--width W] [--height H] [--loop-blend K] [--json]
 // pyro analyze flipbook-pattern [--scene SCENE] [--frames N] [--json]
 // Flipbook fire (Rose 2007, chapter 4): baking a flame flipbook from the engine's own
-// fire simulation, and measuring how much a frame pattern marches or circles
+// fire simulation (the scene opened as every command opens it: a quality target's pick applied),
+// and measuring how much a frame pattern marches or circles
 // (systems/flipbook_fire/flipbook_pattern.h).
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -13,6 +15,7 @@
 
 #include "engine/core/same_file.h"
 #include "engine/core/user_error.h"
+#include "systems/open_scene/open_scene.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/flipbook_bake.h"
 #include "systems/flipbook_fire/flipbook_layout.h"
@@ -46,9 +49,17 @@ void check_bake_destination(const BakeArgs& a) {
 }
 
 void run_bake(const BakeArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
   const SceneDescription scene = load_scene(a.scene);
   if (a.scene != "-") check_bake_destination(a);
-  const FlipbookBakeResult r = bake_flipbook(scene, a.options, a.out);
+  check_flipbook_bake(scene, a.options, a.out);
+  OpenSceneOptions open;
+  open.runtime = flipbook_runtime_options(a.options);
+  open.description = scene;
+  open.on_note = print_note;
+  const OpenedScene opened = open_scene(a.scene, open);  // with the scene's quality pick
+  FlipbookBakeResult r = bake_flipbook(*opened.runtime, a.options, a.out);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (r.restored_old_folder)
     print_note("put back " + a.out + ", which a killed bake had moved aside");
   if (r.removed_leftovers > 0)

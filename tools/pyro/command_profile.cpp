@@ -1,7 +1,9 @@
 // pyro profile SCENE [--frames N] [--warmup K] [--width W] [--height H] [--sync-timing] [--json]
 //                    [--trace FILE] [render options]
 //
-// A profiling run (SceneRuntime with RuntimeOptions::profile): K warm-up frames (shader
+// A profiling run (SceneRuntime with RuntimeOptions::profile) of the scene opened as every
+// command opens it (systems/open_scene/open_scene.h: a quality target's pick applied, and
+// reported under "quality" in the JSON summary): K warm-up frames (shader
 // compilation, first allocations; not counted), then N frames, every system timed on the CPU
 // and every GL pass on the GPU (timer queries). Prints per system the mean, median, 95th
 // percentile and maximum milliseconds, per GPU pass the same plus the fragments it drew
@@ -16,10 +18,12 @@
 
 #include "engine/core/trace_events.h"
 #include "engine/io/text_file.h"
+#include "systems/open_scene/open_scene.h"
 #include "systems/profiling/profile_report.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
+#include "tools/pyro/print_note.h"
 #include "tools/pyro/render_options.h"
 #include "tools/pyro/scene_inputs.h"
 #include "tools/pyro/trace_path.h"
@@ -75,12 +79,16 @@ void run_profile(const ProfileArgs& a) {
   if (!a.trace.empty()) check_trace_path(a.trace, "--trace");
   const SceneDescription scene = load_scene(a.scene);
   if (!a.trace.empty()) refuse_output_over_inputs(a.trace, "--trace", scene_inputs(a.scene, scene));
-  RuntimeOptions options = a.runtime;
-  options.readback = false;
-  options.width_override = a.width;
-  options.height_override = a.height;
-  options.profile = true;
-  SceneRuntime runtime(scene, options);
+  OpenSceneOptions open;
+  open.runtime = a.runtime;
+  open.runtime.readback = false;
+  open.runtime.width_override = a.width;
+  open.runtime.height_override = a.height;
+  open.runtime.profile = true;
+  open.description = scene;
+  open.on_note = print_note;
+  const OpenedScene opened = open_scene(a.scene, open);  // with the scene's quality pick
+  SceneRuntime& runtime = *opened.runtime;
   for (int f = 0; f < a.warmup + a.frames; ++f) runtime.step();
   const RenderSettings& rs = runtime.settings();
   nlohmann::json summary = {{"scene", scene.file},   {"frames", a.frames},
@@ -88,6 +96,7 @@ void run_profile(const ProfileArgs& a) {
                             {"height", rs.height},   {"layer_scale", rs.layer_scale},
                             {"sync_timing", a.runtime.sync_timing}};
   summary.update(profile_report(runtime, static_cast<uint64_t>(a.warmup)));
+  if (opened.quality) summary["quality"] = quality_pick_summary(*opened.quality);
   summary["renderer"] = shared_headless_context().description();
   std::printf("%s: %d frames (after %d warm-up) at %dx%d, frame %.2f ms mean, %.2f ms p95\n",
               scene.file.c_str(), a.frames, a.warmup, rs.width, rs.height,

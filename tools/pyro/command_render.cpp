@@ -28,6 +28,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/output_folder.h"
 #include "engine/io/text_file.h"
+#include "systems/open_scene/open_scene.h"
 #include "systems/quality_picker/quality_picker.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/frame_range.h"
@@ -188,23 +189,24 @@ void check_render_arguments(const RenderArgs& a) {
                                     "rest) or --overwrite (replace another run's), not both");
 }
 
-// The run's quality pick: the one recorded with the folder's run (every range of a run draws
-// with the same pick, cache or no cache), else the cache's or one measured now.
-std::optional<QualityPick> run_quality(const SceneDescription& scene, const RuntimeOptions& options,
-                                       const OutputFolder& folder, const std::string& out) {
+// The pick recorded with the folder's run (every range of a run draws with the same pick, cache
+// or no cache); none when the scene sets no target, the folder records none, or a damaged one
+// (noted; the front door then picks again).
+std::optional<QualityPick> recorded_quality(const SceneDescription& scene,
+                                            const OutputFolder& folder, const std::string& out) {
   if (!scene.quality.given()) return std::nullopt;
-  if (const std::string recorded = folder.recorded("quality"); !recorded.empty()) {
-    try {
-      QualityPick pick = quality_pick_from_json(nlohmann::json::parse(recorded), scene);
-      pick.from_cache = true;
-      pick.cache_file = (std::filesystem::path(out) / kOutputManifestName).string();
-      return pick;
-    } catch (const std::exception& e) {
-      print_note(std::string("quality: the pick recorded with the folder's run is damaged (") +
-                 e.what() + "); picking again");
-    }
+  const std::string recorded = folder.recorded("quality");
+  if (recorded.empty()) return std::nullopt;
+  try {
+    QualityPick pick = quality_pick_from_json(nlohmann::json::parse(recorded), scene);
+    pick.from_cache = true;
+    pick.cache_file = (std::filesystem::path(out) / kOutputManifestName).string();
+    return pick;
+  } catch (const std::exception& e) {
+    print_note(std::string("quality: the pick recorded with the folder's run is damaged (") +
+               e.what() + "); picking again");
+    return std::nullopt;
   }
-  return pick_scene_quality(scene, options, shared_headless_context().description(), print_note);
 }
 
 nlohmann::json render_identity_json(const SceneDescription& scene, const RuntimeOptions& options,
@@ -253,15 +255,18 @@ void run_render(const RenderArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   OutputFolder folder(a.out, render_identity_json(scene, options, a).dump(), describe_difference, a.folder);
   // A quality target (scene key quality.max_rmse) picks the layer scale, footprint size and time
-  // step once for the run.
-  const std::optional<QualityPick> quality = run_quality(scene, options, folder, a.out);
-  if (quality) {
-    options.quality = quality->settings;
-    print_note(quality_pick_note(*quality, scene));
-  }
-  folder.begin(nlohmann::json{{"quality", quality ? quality->to_json() : nlohmann::json()}}.dump());
-
-  SceneRuntime runtime(scene, options);  // refuses a scene over its budget (scene_budget.h)
+  // step once for the run, recorded with it before anything is drawn.
+  OpenSceneOptions open;
+  open.runtime = options;
+  open.description = scene;
+  open.quality = recorded_quality(scene, folder, a.out);
+  open.on_note = print_note;
+  open.on_pick = [&folder](const std::optional<QualityPick>& pick) {
+    folder.begin(nlohmann::json{{"quality", pick ? pick->to_json() : nlohmann::json()}}.dump());
+  };
+  const OpenedScene opened = open_scene(a.scene, open);  // refuses a scene over its budget
+  SceneRuntime& runtime = *opened.runtime;
+  const std::optional<QualityPick>& quality = opened.quality;
   const DrawnFrames drawn = draw_into(runtime, folder, range, a);
   folder.commit();
   if (!a.trace.empty())
@@ -272,14 +277,7 @@ void run_render(const RenderArgs& a) {
   summary["drawn_frames"] = drawn.drawn;
   summary["kept_frames"] = range.count() - drawn.drawn;
   summary["replaced_files"] = folder.replaced_files();
-  if (quality) {
-    summary["quality"] = {{"max_rmse", quality->max_rmse},
-                          {"settings", to_json(quality->settings)},
-                          {"expected_rmse", quality->expected_rmse},
-                          {"met", quality->met},
-                          {"ground_truth", quality->ground_truth},
-                          {"from_cache", quality->from_cache}};
-  }
+  if (quality) summary["quality"] = quality_pick_summary(*quality);
   print_render_result(a, scene, range, drawn, summary, seconds);
 }
 

@@ -5,8 +5,6 @@
 // display: exit 3 and a message saying how to run it. Argument mistakes: exit 2 before any window.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,24 +16,15 @@
 #include "engine/io/png_file.h"
 #include "tests/support/json_output.h"
 #include "tests/support/test_paths.h"
+#include "tests/support/xvfb.h"
 
 namespace pyro {
 namespace {
 
 namespace fs = std::filesystem;
 
-bool have_xvfb_run() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
-
-// xvfb-run starting its display search at a number of this process's own (tests run in parallel),
-// with a 24-bit screen. A sanitizer preload (the asan-ubsan preset) is kept for pyro only.
-std::string xvfb_launcher() {
-  const int first_display = 100 + int(getpid() % 800);
-  std::string launcher = "xvfb-run -a -n " + std::to_string(first_display) +
-                         " -s '-screen 0 1024x768x24 -nolisten tcp'";
-  if (const char* preload = std::getenv("LD_PRELOAD"); preload && *preload)
-    launcher = "env -u LD_PRELOAD " + launcher + " env LD_PRELOAD=" + test::shell_quote(preload);
-  return launcher;
-}
+using test::have_xvfb_run;
+using test::xvfb_launcher;
 
 void write_file(const fs::path& p, const std::string& text) {
   std::ofstream f(p, std::ios::binary);
