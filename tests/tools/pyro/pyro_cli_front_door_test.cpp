@@ -21,7 +21,7 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-void write_file(const fs::path& p, const std::string& text) {
+void write_scene_text(const fs::path& p, const std::string& text) {
   std::ofstream f(p, std::ios::binary);
   f << text;
 }
@@ -40,7 +40,7 @@ class PyroCliFrontDoor : public ::testing::Test {
   void SetUp() override {
     dir_ = test::scratch_dir("front_door");
     scene_ = dir_ / "fog_quality.json";
-    write_file(scene_, read_text_file(test::scene_path("fog_quality.json")));
+    write_scene_text(scene_, read_text_file(test::scene_path("fog_quality.json")));
   }
 
   // `pyro` with the scratch cache, behind `launcher` (shell text, may be empty).
@@ -99,8 +99,8 @@ TEST_F(PyroCliFrontDoor, ViewRunsWithThePickRenderMadeOnLoadAndOnReload) {
 
   // Opened without a target, then edited to the targeted scene: the reload picks.
   const std::string targeted = read_text_file(scene_.string());
-  write_file(dir_ / "targeted.json", targeted);
-  write_file(scene_, without_target(targeted));
+  write_scene_text(dir_ / "targeted.json", targeted);
+  write_scene_text(scene_, without_target(targeted));
   const auto reloaded =
       pyro(test::xvfb_launcher(), {"view", scene_.string(), "--frames", "4", "--no-overlay",
                                    "--replace-at", "2:" + (dir_ / "targeted.json").string()});
