@@ -64,6 +64,8 @@ struct ParameterKey {
   }
   ParameterKey with_default(bool v) const;
   ParameterKey with_default(std::string_view v) const;
+  // (A string literal would otherwise convert to bool before string_view.)
+  ParameterKey with_default(const char* v) const { return with_default(std::string_view(v)); }
   template <class E>
     requires std::is_enum_v<E>
   ParameterKey with_default(E v) const {
