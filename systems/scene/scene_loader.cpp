@@ -16,7 +16,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -26,7 +25,6 @@
 #include <utility>
 #include <vector>
 
-#include "components/fire_lights.h"
 #include "components/stereo_camera.h"
 #include "engine/core/file_kind.h"
 #include "engine/core/long_json_string.h"
