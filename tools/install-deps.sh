@@ -12,6 +12,7 @@ packages=(
   libglfw3-dev xvfb xauth  # pyro view's window; its tests run it under xvfb-run
   colord-data  # CIE 1931 colour-matching functions: content/data/cie1931_2deg_xyz.cmf is checked against it
   python3 python3-matplotlib  # tools/plots (run with /usr/bin/python3, not a pyenv python3)
+  python3-jsonschema  # the scene schema tests validate with it (tests/tools/validate_json.py)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -31,6 +31,7 @@ void add_pyro_commands(CLI::App& app) {
   add_quality_command(app);
   add_view_command(app);
   add_chart_command(app);
+  add_schema_command(app);
 }
 
 void stop_after_parsing(CLI::App& app) {
