@@ -37,7 +37,7 @@ using json = nlohmann::json;
 
 const fs::path kSource = PYRO_SOURCE_DIR;
 
-std::string read_text(const fs::path& path) {
+std::string read_schema_test_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
   s << in.rdbuf();
@@ -217,7 +217,7 @@ fs::path write_json(const fs::path& folder, const std::string& name, const json&
 // ---------------------------------------------------------------------------------------------
 
 TEST(SceneSchema, CommittedSchemaIsThePyroSchemaOutput) {
-  std::istringstream committed(read_text(kSource / "content/scene.schema.json"));
+  std::istringstream committed(read_schema_test_text(kSource / "content/scene.schema.json"));
   std::istringstream current(scene_schema().dump(2) + "\n");
   std::string a, b;
   for (int line = 1; static_cast<bool>(std::getline(committed, a)) | static_cast<bool>(std::getline(current, b));
@@ -231,7 +231,7 @@ TEST(SceneSchema, EveryShippedSceneNamesTheSchemaAndPassesBoth) {
   ASSERT_GE(scenes.size(), 10u);
   const std::vector<std::string> verdicts = schema_verdicts(scenes);
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    const json scene = json::parse(read_text(scenes[i]));
+    const json scene = json::parse(read_schema_test_text(scenes[i]));
     EXPECT_EQ(scene.value("$schema", ""), "../scene.schema.json") << scenes[i];
     EXPECT_EQ(verdicts[i], "valid") << scenes[i];
     const LoaderVerdict loader = loader_verdict(scene, scenes[i]);
@@ -241,7 +241,7 @@ TEST(SceneSchema, EveryShippedSceneNamesTheSchemaAndPassesBoth) {
 
 TEST(SceneSchema, EachClassOfMistakeIsRefusedByBoth) {
   const fs::path shipped = kSource / "content/scenes/clouds.json";
-  const json scene = json::parse(read_text(shipped));
+  const json scene = json::parse(read_schema_test_text(shipped));
   const std::pair<Mistake, std::function<void(json&)>> mistakes[] = {
       {Mistake::wrong_type, [](json& s) { s["camera"]["fov_y_deg"] = "45"; }},
       {Mistake::out_of_range, [](json& s) { s["clouds"][0]["density"] = 2; }},
@@ -272,7 +272,7 @@ TEST(SceneSchema, LoaderAndSchemaAgreeOnMutatedScenes) {
     const fs::path& origin = pick(scenes, rng);
     const auto mistake = static_cast<Mistake>(std::uniform_int_distribution<int>(0, 4)(rng));
     Mutant m;
-    if (!mutate(json::parse(read_text(origin)), mistake, rng, m)) continue;
+    if (!mutate(json::parse(read_schema_test_text(origin)), mistake, rng, m)) continue;
     files.push_back(write_json(folder.path, std::to_string(mutants.size()) + ".json", m.scene));
     origins.push_back(origin);
     mutants.push_back(std::move(m));
