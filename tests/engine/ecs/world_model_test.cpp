@@ -501,7 +501,7 @@ TEST(World, ComponentErrorsNameTheType) {
   EXPECT_THROW(w.remove<WorldModelVelocity>(e), std::logic_error);
   EXPECT_EQ(w.get<WorldModelPosition>(e).y, 2.0f);
   const std::string name = pyro::ecs::type_name<WorldModelPosition>();
-  EXPECT_TRUE(name.size() >= 10 && name.substr(name.size() - 10) == "::Position") << name;
+  EXPECT_TRUE(name.size() >= 20 && name.substr(name.size() - 20) == "::WorldModelPosition") << name;
   EXPECT_EQ(pyro::ecs::type_name<int>(), "int");
   EXPECT_EQ(pyro::ecs::type_name<int[3]>(), "int [3]");
   EXPECT_NE(pyro::ecs::type_id<WorldModelPosition>(), pyro::ecs::type_id<WorldModelVelocity>());
