@@ -54,6 +54,10 @@ class ObjectReader {
   ObjectReader(const json& object, Where where, std::string_view what = "an object");
   ObjectReader(const json& object, Where where, const ParameterTable& table,
                std::string_view what = "an object");
+  // The reader keeps a reference to `object`: a temporary would be gone before the first read.
+  ObjectReader(json&& object, Where where, std::string_view what = "an object") = delete;
+  ObjectReader(json&& object, Where where, const ParameterTable& table,
+               std::string_view what = "an object") = delete;
 
   const Where& where() const { return where_; }
   Where at(std::string_view key) const { return where_.child(key); }

@@ -301,7 +301,8 @@ TEST(SceneSchema, LoaderAndSchemaAgreeOnMutatedScenes) {
 
 TEST(SceneKeys, AReadOfAKeyTheTableDoesNotDeclareIsAProgrammingError) {
   const std::string file = "t.json";
-  ObjectReader reader(json::object(), Where{&file, ""}, camera_keys());
+  const json empty = json::object();
+  ObjectReader reader(empty, Where{&file, ""}, camera_keys());
   float value = 0.0f;
   EXPECT_THROW(reader.number("fov_x_deg", value), std::logic_error);
   glm::vec3 v{};
