@@ -20,7 +20,6 @@
 #include <utility>
 #include <vector>
 
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +27,8 @@
 #include "engine/io/parameter_dictionary.h"
 #include "systems/scene/scene_keys.h"
 #include "systems/scene/scene_loader.h"
+#include "tests/support/file_bytes.h"
+#include "tests/support/test_paths.h"
 
 namespace pyro {
 namespace {
@@ -37,13 +38,6 @@ using json = nlohmann::json;
 
 const fs::path kSource = PYRO_SOURCE_DIR;
 
-std::string read_schema_test_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::vector<fs::path> shipped_scenes() {
   std::vector<fs::path> scenes;
   for (const auto& entry : fs::directory_iterator(kSource / "content" / "scenes"))
@@ -51,17 +45,6 @@ std::vector<fs::path> shipped_scenes() {
   std::sort(scenes.begin(), scenes.end());
   return scenes;
 }
-
-// A fresh folder under the system's temporary folder, removed with the object.
-struct TempFolder {
-  fs::path path;
-  explicit TempFolder(const std::string& name)
-      : path(fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempFolder() { fs::remove_all(path); }
-};
 
 // The verdict of Python's jsonschema on each file: "valid" or "invalid <pointer>: <message>".
 std::vector<std::string> schema_verdicts(const std::vector<fs::path>& files) {
@@ -217,7 +200,7 @@ fs::path write_json(const fs::path& folder, const std::string& name, const json&
 // ---------------------------------------------------------------------------------------------
 
 TEST(SceneSchema, CommittedSchemaIsThePyroSchemaOutput) {
-  std::istringstream committed(read_schema_test_text(kSource / "content/scene.schema.json"));
+  std::istringstream committed(test::read_bytes(kSource / "content/scene.schema.json"));
   std::istringstream current(scene_schema().dump(2) + "\n");
   std::string a, b;
   for (int line = 1; static_cast<bool>(std::getline(committed, a)) | static_cast<bool>(std::getline(current, b));
@@ -231,7 +214,7 @@ TEST(SceneSchema, EveryShippedSceneNamesTheSchemaAndPassesBoth) {
   ASSERT_GE(scenes.size(), 10u);
   const std::vector<std::string> verdicts = schema_verdicts(scenes);
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    const json scene = json::parse(read_schema_test_text(scenes[i]));
+    const json scene = json::parse(test::read_bytes(scenes[i]));
     EXPECT_EQ(scene.value("$schema", ""), "../scene.schema.json") << scenes[i];
     EXPECT_EQ(verdicts[i], "valid") << scenes[i];
     const LoaderVerdict loader = loader_verdict(scene, scenes[i]);
@@ -241,21 +224,21 @@ TEST(SceneSchema, EveryShippedSceneNamesTheSchemaAndPassesBoth) {
 
 TEST(SceneSchema, EachClassOfMistakeIsRefusedByBoth) {
   const fs::path shipped = kSource / "content/scenes/clouds.json";
-  const json scene = json::parse(read_schema_test_text(shipped));
+  const json scene = json::parse(test::read_bytes(shipped));
   const std::pair<Mistake, std::function<void(json&)>> mistakes[] = {
       {Mistake::wrong_type, [](json& s) { s["camera"]["fov_y_deg"] = "45"; }},
       {Mistake::out_of_range, [](json& s) { s["clouds"][0]["density"] = 2; }},
       {Mistake::unknown_key, [](json& s) { s["camera"]["fovy"] = 45; }},
       {Mistake::missing_required, [](json& s) { s["clouds"][0].erase("count"); }},
       {Mistake::wrong_enum, [](json& s) { s["render"] = {{"billboards", "sideways"}}; }}};
-  TempFolder folder("pyro-schema-mistakes");
+  const fs::path folder = test::scratch_dir("mistakes");
   std::vector<fs::path> files;
   for (const auto& [mistake, apply] : mistakes) {
     json mutated = scene;
     apply(mutated);
     const LoaderVerdict loader = loader_verdict(mutated, shipped);
     EXPECT_FALSE(loader.accepted) << kMistakeNames[static_cast<int>(mistake)];
-    files.push_back(write_json(folder.path, std::to_string(files.size()) + ".json", mutated));
+    files.push_back(write_json(folder, std::to_string(files.size()) + ".json", mutated));
   }
   const std::vector<std::string> verdicts = schema_verdicts(files);
   for (std::size_t i = 0; i < files.size(); ++i)
@@ -265,15 +248,15 @@ TEST(SceneSchema, EachClassOfMistakeIsRefusedByBoth) {
 TEST(SceneSchema, LoaderAndSchemaAgreeOnMutatedScenes) {
   const std::vector<fs::path> scenes = shipped_scenes();
   std::mt19937_64 rng(20261203);
-  TempFolder folder("pyro-schema-mutants");
+  const fs::path folder = test::scratch_dir("mutants");
   std::vector<Mutant> mutants;
   std::vector<fs::path> origins, files;
   while (mutants.size() < 200) {
     const fs::path& origin = pick(scenes, rng);
     const auto mistake = static_cast<Mistake>(std::uniform_int_distribution<int>(0, 4)(rng));
     Mutant m;
-    if (!mutate(json::parse(read_schema_test_text(origin)), mistake, rng, m)) continue;
-    files.push_back(write_json(folder.path, std::to_string(mutants.size()) + ".json", m.scene));
+    if (!mutate(json::parse(test::read_bytes(origin)), mistake, rng, m)) continue;
+    files.push_back(write_json(folder, std::to_string(mutants.size()) + ".json", m.scene));
     origins.push_back(origin);
     mutants.push_back(std::move(m));
   }
