@@ -789,6 +789,8 @@ std::string read_fifo(const std::string& path) {
   return read_all(file.fd, path);
 }
 
+}  // namespace
+
 std::string read_scene_text(const std::string& path) {
   if (path == "-") return read_all(STDIN_FILENO, "<standard input>");
   if (is_fifo(path)) return read_fifo(path);
@@ -799,8 +801,6 @@ std::string read_scene_text(const std::string& path) {
   if (file.fd < 0) throw UserError(path, "", std::string("cannot open scene file: ") + std::strerror(errno));
   return read_all(file.fd, path);
 }
-
-}  // namespace
 
 SceneDescription load_scene(const std::string& path) {
   return parse_scene(read_scene_text(path), path == "-" ? "<standard input>" : path);

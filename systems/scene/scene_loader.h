@@ -16,6 +16,10 @@ namespace pyro {
 // Reads and parses the file at `path`. SceneDescription::file is set to `path`.
 SceneDescription load_scene(const std::string& path);
 
+// The bytes of the scene file at `path` ("-": standard input), as load_scene reads them; a
+// missing, unreadable or non-regular file is a UserError naming it.
+std::string read_scene_text(const std::string& path);
+
 // Parses scene JSON held in memory; `file_name_for_messages` names it in errors and is
 // stored in SceneDescription::file.
 SceneDescription parse_scene(const std::string& text, const std::string& file_name_for_messages);
