@@ -114,11 +114,15 @@ std::string default_flipbook_folder() {
   return built_in_flipbook_dir();
 }
 
+bool default_flipbook_baked() {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(
+      std::filesystem::path(default_flipbook_folder()) / "flipbook.json", ec);
+}
+
 std::string ensure_default_flipbook(const NoteSink& on_note) {
   const std::string folder = default_flipbook_folder();
-  std::error_code ec;
-  if (std::filesystem::is_regular_file(std::filesystem::path(folder) / "flipbook.json", ec))
-    return folder;
+  if (default_flipbook_baked()) return folder;
   const std::string scene = content_path("scenes/flipbook_fire.json");
   if (on_note)
     on_note("baking the default flame flipbook from " + scene + " into " + folder + " (first run)");

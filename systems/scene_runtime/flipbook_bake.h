@@ -65,6 +65,9 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
 // (engine/core/content_location.h).
 std::string default_flipbook_folder();
 
+// Whether the default flipbook's folder holds its manifest (else ensure_default_flipbook bakes).
+bool default_flipbook_baked();
+
 // The default flipbook's folder, baked from content/scenes/flipbook_fire.json with the default
 // options first when it holds no manifest yet (a fresh clone's first run; a note to `on_note`
 // before the bake starts). The bake runs its own SceneRuntime: it sits above the runtime, in

@@ -5,6 +5,7 @@
 #include "systems/cloud_import/scene_volume.h"
 #include "systems/scene_runtime/flipbook_bake.h"
 #include "systems/scene_runtime/resolve_scene.h"
+#include "systems/scene_runtime/scene_asset_cache.h"
 #include "systems/volume_sequence/sequence_asset.h"
 
 namespace pyro {
@@ -34,41 +35,62 @@ VolumeAsset sequence_volume(const SceneDescription& scene, const VolumeDescripti
           std::move(s.sequence)};
 }
 
-void load_volumes(const SceneDescription& scene, SceneAssets& assets, const Notes& note) {
+// A particle file read or a VDB grid imported, placed, with the reader's notes.
+LoadedVolume read_volume(const SceneDescription& scene, const VolumeDescription& v) {
+  SceneVolume loaded = load_scene_volume(scene, v);
+  LoadedVolume out;
+  if (!loaded.note.empty()) out.notes.push_back(v.path + ": " + loaded.note);
+  if (!loaded.fire_note.empty()) out.notes.push_back(v.path + ": " + loaded.fire_note);
+  const uint64_t count = loaded.particles.size() + loaded.anisotropic.size();
+  out.asset = {to_particle_pool(loaded.particles), std::move(loaded.anisotropic),
+               VolumeSource{v.path, v.used_fallback, loaded.active_voxels, count}};
+  return out;
+}
+
+void load_volumes(const SceneDescription& scene, SceneAssets& assets, const Notes& note,
+                  SceneAssetCache* cache) {
   for (const VolumeDescription& v : scene.volumes) {
     note(volume_file_note(scene, v));
     if (v.kind == VolumeFileKind::sequence) {
       assets.volumes.push_back(sequence_volume(scene, v));
       continue;
     }
-    SceneVolume loaded = load_scene_volume(scene, v);
-    if (!loaded.note.empty()) note(v.path + ": " + loaded.note);
-    if (!loaded.fire_note.empty()) note(v.path + ": " + loaded.fire_note);
-    const uint64_t count = loaded.particles.size() + loaded.anisotropic.size();
-    assets.volumes.push_back({to_particle_pool(loaded.particles), std::move(loaded.anisotropic),
-                              VolumeSource{v.path, v.used_fallback, loaded.active_voxels, count}});
+    if (cache) {
+      assets.volumes.push_back(cache->volume(scene, v, [&] { return read_volume(scene, v); }, note));
+      continue;
+    }
+    LoadedVolume loaded = read_volume(scene, v);
+    for (const std::string& n : loaded.notes) note(n);
+    assets.volumes.push_back(std::move(loaded.asset));
   }
 }
 
-void load_fires(const SceneDescription& scene, SceneAssets& assets, const Notes& note) {
+void load_fires(const SceneDescription& scene, SceneAssets& assets, const Notes& note,
+                SceneAssetCache* cache) {
   assets.fires = scene.fires;
-  for (FlipbookFire& fire : assets.fires)
-    if (fire.flipbook.empty()) fire.flipbook = ensure_default_flipbook(note);
-  assets.flipbooks = load_flipbooks(assets.fires);
+  for (FlipbookFire& fire : assets.fires) {
+    if (!fire.flipbook.empty()) continue;
+    if (cache && !default_flipbook_baked()) cache->count_default_bake();
+    fire.flipbook = ensure_default_flipbook(note);
+  }
+  assets.flipbooks = cache ? cache->flipbooks(assets.fires) : load_flipbooks(assets.fires);
 }
 
 }  // namespace
 
-SceneAssets load_scene_assets(const ResolvedScene& resolved, const NoteSink& on_note) {
+SceneAssets load_scene_assets(const ResolvedScene& resolved, const NoteSink& on_note,
+                              SceneAssetCache* cache) {
   SceneAssets assets;
   const Notes note{assets, on_note};
-  load_volumes(resolved.scene, assets, note);
+  if (cache) cache->begin_load();
+  load_volumes(resolved.scene, assets, note, cache);
   if (!assets.volumes.empty()) {
     uint64_t volume_particles = 0;
     for (const VolumeAsset& v : assets.volumes) volume_particles += v.source.particles;
     check_resolved_budget(resolved, volume_particles);
   }
-  load_fires(resolved.scene, assets, note);
+  load_fires(resolved.scene, assets, note, cache);
+  if (cache) cache->end_load();
   return assets;
 }
 

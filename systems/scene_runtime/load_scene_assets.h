@@ -4,13 +4,17 @@
 // does not exist yet, and checks the budget again with the volumes' particles: all before any
 // world exists. Notes (which file a volume was read from, a bake starting) go to `on_note` as
 // they happen and into SceneAssets::notes. Errors are UserErrors naming the scene, the entry
-// and the file.
+// and the file. With a cache (scene_asset_cache.h), volumes and prepared flipbooks whose inputs
+// are unchanged since its last load are taken from it instead of being read again.
 #include "systems/scene_runtime/resolved_scene.h"
 #include "systems/scene_runtime/runtime_options.h"
 #include "systems/scene_runtime/scene_assets.h"
 
 namespace pyro {
 
-SceneAssets load_scene_assets(const ResolvedScene& resolved, const NoteSink& on_note = {});
+class SceneAssetCache;
+
+SceneAssets load_scene_assets(const ResolvedScene& resolved, const NoteSink& on_note = {},
+                              SceneAssetCache* cache = nullptr);
 
 }  // namespace pyro

@@ -16,6 +16,8 @@
 
 namespace pyro {
 
+class SceneAssetCache;
+
 // Receives the runtime's notes (which volume file was read, a flipbook being baked): one line
 // each, without a program prefix. The library prints nothing itself.
 using NoteSink = std::function<void(const std::string&)>;
@@ -57,6 +59,10 @@ struct RuntimeOptions {
   std::function<void()> make_context_current;
   // Where notes go while the assets load (empty: they are only kept, SceneRuntime::notes()).
   NoteSink on_note;
+  // Volumes and prepared flipbooks kept from the last runtime built with the same cache, reused
+  // when their inputs are unchanged (scene_asset_cache.h: the viewer rebuilding after an edit).
+  // None: every file is read. Not owned; it must outlive the runtime's construction.
+  SceneAssetCache* asset_cache = nullptr;
   // Systems of the embedding program's own (docs/embedding.md), added to the standard schedule
   // after its systems, each in its phase, with the same profiling wrappers.
   std::vector<ecs::SystemDesc> extra_systems;

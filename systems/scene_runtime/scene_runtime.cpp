@@ -49,7 +49,8 @@ SceneRuntime::SceneRuntime(const SceneDescription& scene, const RuntimeOptions& 
     : SceneRuntime(resolve_scene(scene, options, driver_max_texture(options)), options) {}
 
 SceneRuntime::SceneRuntime(const ResolvedScene& resolved, const RuntimeOptions& options)
-    : SceneRuntime(resolved, load_scene_assets(resolved, options.on_note), options) {}
+    : SceneRuntime(resolved, load_scene_assets(resolved, options.on_note, options.asset_cache),
+                   options) {}
 
 SceneRuntime::SceneRuntime(const ResolvedScene& resolved, SceneAssets assets,
                            const RuntimeOptions& options)
