@@ -60,6 +60,15 @@ json value_schema(const ParameterKey& key) {
   return json::object();
 }
 
+// A key that applies only with some values of a choice key: absent unless the choice holds one.
+json applicability_schema(const ParameterKey& key) {
+  json values = json::array();
+  for (std::string_view v : key.only_with_values) values.push_back(std::string(v));
+  const std::string choice(key.only_with_key);
+  return {{"if", {{"properties", {{choice, {{"enum", values}}}}}, {"required", json::array({choice})}}},
+          {"else", {{"not", {{"required", json::array({std::string(key.name)})}}}}}};
+}
+
 }  // namespace
 
 json key_schema(const ParameterKey& key) {
@@ -80,6 +89,10 @@ json object_schema(const ParameterTable& table) {
   }
   s["properties"] = properties;
   if (!required.empty()) s["required"] = required;
+  json conditions = json::array();
+  for (const ParameterKey& key : table.keys)
+    if (!key.only_with_key.empty()) conditions.push_back(applicability_schema(key));
+  if (!conditions.empty()) s["allOf"] = conditions;
   s["additionalProperties"] = false;
   return s;
 }
