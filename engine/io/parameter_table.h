@@ -54,9 +54,9 @@ struct ParameterKey {
   nlohmann::json default_value;           // null: none (or not one fixed value)
   // custom: the JSON Schema of the value, built from this key (its range, description).
   std::function<nlohmann::json(const ParameterKey&)> custom_schema;
-  // A key that applies only when the object's choice key `only_with_key` holds one of
-  // `only_with_values` (empty: always); on any other choice it is refused, by the reader
-  // (ObjectReader::refuse_keys_not_for) and by the schema alike.
+  // A key that applies only when the choice key `only_with_key` holds one of `only_with_values`
+  // (empty: always; if required, required only there); on any other choice it is refused, by
+  // the reader (ObjectReader::refuse_keys_not_for) and by the schema alike.
   std::string_view only_with_key;
   std::vector<std::string_view> only_with_values;
 
