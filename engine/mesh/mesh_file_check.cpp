@@ -1,6 +1,7 @@
 #include "engine/mesh/mesh_file_check.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -77,6 +78,10 @@ uint64_t primitive_triangles(const json& gltf, const json& primitive) {
   return 0;
 }
 
+// a + b, a * b, held at the largest count instead of wrapping around (a file may claim any count).
+uint64_t saturating_add(uint64_t a, uint64_t b) { return a > UINT64_MAX - b ? UINT64_MAX : a + b; }
+uint64_t saturating_mul(uint64_t a, uint64_t b) { return b != 0 && a > UINT64_MAX / b ? UINT64_MAX : a * b; }
+
 // Each mesh's triangles times the nodes that place it (at least once).
 uint64_t gltf_triangles(const json& gltf) {
   const json empty = json::array();
@@ -89,8 +94,8 @@ uint64_t gltf_triangles(const json& gltf) {
   uint64_t total = 0;
   for (size_t m = 0; m < meshes.size(); ++m) {
     uint64_t per_mesh = 0;
-    for (const json& p : meshes[m].at("primitives")) per_mesh += primitive_triangles(gltf, p);
-    total += per_mesh * std::max<uint64_t>(uses[m], 1);
+    for (const json& p : meshes[m].at("primitives")) per_mesh = saturating_add(per_mesh, primitive_triangles(gltf, p));
+    total = saturating_add(total, saturating_mul(per_mesh, std::max<uint64_t>(uses[m], 1)));
   }
   return total;
 }
