@@ -9,6 +9,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libstb-dev
   libopenvdb-dev libopenvdb-tools libtbb-dev libboost-dev libboost-iostreams-dev
   libblosc-dev zlib1g-dev libimath-dev
+  libassimp-dev  # mesh files (glTF 2.0, OBJ) in scenes
   libglfw3-dev xvfb xauth  # pyro view's window; its tests run it under xvfb-run
   colord-data  # CIE 1931 colour-matching functions: content/data/cie1931_2deg_xyz.cmf is checked against it
   python3 python3-matplotlib  # tools/plots (run with /usr/bin/python3, not a pyenv python3)

@@ -150,6 +150,17 @@ void ObjectReader::boolean(std::string_view key, bool& out) {
   if (const json* v = find(key)) out = read_bool(*v, at(key));
 }
 
+void ObjectReader::refuse_keys_not_for(std::string_view choice_key, std::string_view value) const {
+  if (table_ == nullptr) return;
+  for (const ParameterKey& k : table_->keys) {
+    if (k.only_with_key != choice_key || !object_.contains(std::string(k.name))) continue;
+    const auto& v = k.only_with_values;
+    if (std::find(v.begin(), v.end(), value) != v.end()) continue;
+    at(k.name).fail("unexpected key " + in_quotes(k.name) + " with " + in_quotes(choice_key) + ": " +
+                    in_quotes(value) + "; it applies only to " + in_quotes(choice_key) + " " + quoted_list(v));
+  }
+}
+
 void ObjectReader::finish() const {
   for (const auto& item : object_.items()) {
     const std::string& key = item.key();

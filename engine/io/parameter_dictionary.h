@@ -121,6 +121,10 @@ class ObjectReader {
     }
   }
 
+  // Refuses every key of the table present in the object that applies only with other values of
+  // `choice_key` than `value` (ParameterKey::only_for), naming the values it applies to.
+  void refuse_keys_not_for(std::string_view choice_key, std::string_view value) const;
+
   // Refuses every key that no read asked for.
   void finish() const;
 

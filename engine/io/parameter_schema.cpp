@@ -60,6 +60,19 @@ json value_schema(const ParameterKey& key) {
   return json::object();
 }
 
+// A key that applies only with some values of a choice key: absent unless the choice holds one
+// (and present when it does, for a required key).
+json applicability_schema(const ParameterKey& key) {
+  json values = json::array();
+  for (std::string_view v : key.only_with_values) values.push_back(std::string(v));
+  const std::string choice(key.only_with_key);
+  const json name = json::array({std::string(key.name)});
+  json s = {{"if", {{"properties", {{choice, {{"enum", values}}}}}, {"required", json::array({choice})}}},
+            {"else", {{"not", {{"required", name}}}}}};
+  if (key.required) s["then"] = {{"required", name}};
+  return s;
+}
+
 }  // namespace
 
 json key_schema(const ParameterKey& key) {
@@ -76,10 +89,14 @@ json object_schema(const ParameterTable& table) {
   json required = json::array();
   for (const ParameterKey& key : table.keys) {
     properties[std::string(key.name)] = key_schema(key);
-    if (key.required) required.push_back(std::string(key.name));
+    if (key.required && key.only_with_key.empty()) required.push_back(std::string(key.name));
   }
   s["properties"] = properties;
   if (!required.empty()) s["required"] = required;
+  json conditions = json::array();
+  for (const ParameterKey& key : table.keys)
+    if (!key.only_with_key.empty()) conditions.push_back(applicability_schema(key));
+  if (!conditions.empty()) s["allOf"] = conditions;
   s["additionalProperties"] = false;
   return s;
 }

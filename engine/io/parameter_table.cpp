@@ -56,6 +56,13 @@ ParameterKey ParameterKey::with_min_items(std::size_t n) const {
   return k;
 }
 
+ParameterKey ParameterKey::only_for(std::string_view choice_key, std::vector<std::string_view> values) const {
+  ParameterKey k = *this;
+  k.only_with_key = choice_key;
+  k.only_with_values = std::move(values);
+  return k;
+}
+
 const ParameterKey* ParameterTable::find(std::string_view key_name) const {
   for (const ParameterKey& k : keys)
     if (k.name == key_name) return &k;

@@ -54,6 +54,11 @@ struct ParameterKey {
   nlohmann::json default_value;           // null: none (or not one fixed value)
   // custom: the JSON Schema of the value, built from this key (its range, description).
   std::function<nlohmann::json(const ParameterKey&)> custom_schema;
+  // A key that applies only when the choice key `only_with_key` holds one of `only_with_values`
+  // (empty: always; if required, required only there); on any other choice it is refused, by
+  // the reader (ObjectReader::refuse_keys_not_for) and by the schema alike.
+  std::string_view only_with_key;
+  std::vector<std::string_view> only_with_values;
 
   ParameterKey with_default(float v) const;
   ParameterKey with_default(const glm::vec3& v) const;
@@ -73,6 +78,7 @@ struct ParameterKey {
   }
   ParameterKey as_required() const;
   ParameterKey with_min_items(std::size_t n) const;
+  ParameterKey only_for(std::string_view choice_key, std::vector<std::string_view> values) const;
 
  private:
   ParameterKey with_integer_default(std::uint64_t v) const;

@@ -106,6 +106,30 @@ MeshData make_cone(float r, float y0, float y1, int segments) {
   return m;
 }
 
+MeshData make_sphere(float r, const glm::vec3& center, int segments, int rings) {
+  MeshData m;
+  const float pi = std::numbers::pi_v<float>;
+  for (int i = 0; i <= rings; ++i) {  // ring 0 at the top pole
+    const float theta = pi * static_cast<float>(i) / static_cast<float>(rings);
+    for (int j = 0; j <= segments; ++j) {
+      const float phi = 2.0f * pi * static_cast<float>(j) / static_cast<float>(segments);
+      const glm::vec3 d{std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)};
+      m.positions.push_back(center + r * d);
+      m.normals.push_back(d);
+    }
+  }
+  const auto row = static_cast<uint32_t>(segments + 1);
+  for (uint32_t i = 0; i < static_cast<uint32_t>(rings); ++i) {
+    for (uint32_t j = 0; j < static_cast<uint32_t>(segments); ++j) {
+      // Counter-clockwise seen from outside, as the cylinder's sides: lower ring, then upper.
+      const uint32_t lo = (i + 1) * row + j, up = i * row + j;
+      if (i + 1 < static_cast<uint32_t>(rings)) m.indices.insert(m.indices.end(), {lo, lo + 1, up + 1});
+      if (i > 0) m.indices.insert(m.indices.end(), {lo, up + 1, up});
+    }
+  }
+  return m;
+}
+
 MeshData make_water_tower() {
   MeshData m;
   const float leg = 0.09f, foot = 0.95f, head = 0.7f, top = 4.0f;

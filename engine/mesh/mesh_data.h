@@ -38,8 +38,13 @@ MeshData make_cylinder(float radius, float y0, float y1, int segments);
 // A cone about the y axis with its base (radius) at y0 and apex at y1.
 MeshData make_cone(float radius, float y0, float y1, int segments);
 
-// The water tower of the paper's figures, standing on y = 0 and about 6.3 units tall: four
-// legs with cross braces, a central pipe, a cylindrical tank and a conical roof.
+// A sphere of `radius` about `center` (smooth): `segments` around the y axis, `rings` from pole
+// to pole.
+MeshData make_sphere(float radius, const glm::vec3& center, int segments, int rings);
+
+// The water tower of the paper's figures, standing on y = 0: four legs with cross braces, a
+// central pipe, a cylindrical tank and a conical roof. Its bounds: x and z in [-1.05, 1.05]
+// (the balcony and the roof's rim), y in [0, 6.6] (the finial's top).
 MeshData make_water_tower();
 
 }  // namespace pyro

@@ -30,11 +30,11 @@ const gpu::Program& MeshRenderer::program_for(bool encode, int fire_lights) {
   return p;
 }
 
-const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(MeshKind kind) {
-  auto it = meshes_.find(kind);
+const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(const SharedMesh& mesh) {
+  auto it = meshes_.find(mesh.id);
   if (it != meshes_.end()) return it->second;
-  // Unit meshes; the instance's scale and position are applied in the vertex shader.
-  const MeshData data = kind == MeshKind::ground_plane ? make_ground_plane(1.0f) : make_water_tower();
+  // Model space; the instance's placement is applied in the vertex shader.
+  const MeshData& data = mesh.data;
   std::vector<float> interleaved;
   interleaved.reserve(data.positions.size() * 6);
   for (size_t i = 0; i < data.positions.size(); ++i) {
@@ -49,10 +49,10 @@ const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(MeshKind kind) {
   glNamedBufferStorage(g.indices.get(), static_cast<GLsizeiptr>(data.indices.size() * sizeof(uint32_t)),
                        data.indices.data(), 0);
   g.index_count = static_cast<GLsizei>(data.indices.size());
-  // The ground is a single sheet, shaded on both sides (mesh.frag); the tower is closed, wound
-  // counter-clockwise outside (engine/mesh/mesh_data.h), and culling its back faces halves its
-  // rasterisation (docs/explosions.md).
-  g.closed = kind != MeshKind::ground_plane;
+  // A sheet (the ground) is shaded on both sides (mesh.frag); a closed mesh (the tower, the
+  // primitives) is wound counter-clockwise outside (engine/mesh/mesh_data.h), and culling its
+  // back faces halves its rasterisation (docs/explosions.md).
+  g.closed = mesh.closed;
   g.vao = gpu::make_vertex_array();
   const GLuint vao = g.vao.get();
   glVertexArrayVertexBuffer(vao, 0, g.vertices.get(), 0, 6 * sizeof(float));
@@ -63,7 +63,15 @@ const MeshRenderer::GpuMesh& MeshRenderer::mesh_for(MeshKind kind) {
   glEnableVertexArrayAttrib(vao, 1);
   glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
   glVertexArrayAttribBinding(vao, 1, 0);
-  return meshes_.emplace(kind, std::move(g)).first->second;
+  return meshes_.emplace(mesh.id, std::move(g)).first->second;
+}
+
+void MeshRenderer::release_unused(const std::vector<MeshInstance>& instances) {
+  std::erase_if(meshes_, [&](const auto& entry) {
+    return std::none_of(instances.begin(), instances.end(), [&](const MeshInstance& m) {
+      return m.geometry && m.geometry->id == entry.first;
+    });
+  });
 }
 
 namespace {
@@ -95,9 +103,10 @@ std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const
       for (double v : {l.position.x, l.position.y, l.position.z, l.radius, l.intensity.x, l.intensity.y, l.intensity.z})
         k.push_back(static_cast<float>(v));
   for (const MeshInstance& m : instances) {
-    k.push_back(static_cast<float>(m.kind));
-    put(glm::value_ptr(m.position), 3);
-    k.push_back(m.scale);
+    const uint64_t id = m.geometry ? m.geometry->id : 0;  // exactly, as two halves
+    k.push_back(static_cast<float>(id & 0xFFFFFFu));
+    k.push_back(static_cast<float>((id >> 24) & 0xFFFFFFu));
+    put(glm::value_ptr(m.placement.model_matrix()), 16);
     put(glm::value_ptr(m.color), 3);
   }
   return k;
@@ -201,17 +210,19 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
   glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
   bind_shadows(program, shadows);
   set_fire_light_uniforms(program, fire);
-  const GLint offset = gpu::uniform_location(program, "u_offset");
-  const GLint scale = gpu::uniform_location(program, "u_scale");
+  const GLint model = gpu::uniform_location(program, "u_model");
+  const GLint rotation = gpu::uniform_location(program, "u_rotation");
   const GLint albedo = gpu::uniform_location(program, "u_albedo");
+  release_unused(instances);
   for (const MeshInstance& m : instances) {
-    const GpuMesh& g = mesh_for(m.kind);
-    glUniform3fv(offset, 1, glm::value_ptr(m.position));
-    glUniform1f(scale, m.scale);
+    if (!m.geometry) continue;
+    const GpuMesh& g = mesh_for(*m.geometry);
+    glUniformMatrix4fv(model, 1, GL_FALSE, glm::value_ptr(m.placement.model_matrix()));
+    glUniformMatrix3fv(rotation, 1, GL_FALSE, glm::value_ptr(m.placement.rotation()));
     glUniform3fv(albedo, 1, glm::value_ptr(m.color));
     if (g.closed) {
       glEnable(GL_CULL_FACE);
-      glFrontFace(m.scale < 0.0f ? GL_CW : GL_CCW);  // a mirroring scale turns the winding
+      glFrontFace(m.placement.scale < 0.0f ? GL_CW : GL_CCW);  // a mirroring scale turns the winding
     } else {
       glDisable(GL_CULL_FACE);
     }

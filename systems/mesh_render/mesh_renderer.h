@@ -1,5 +1,6 @@
 #pragma once
-// GPU state of the opaque pass: one vertex/index buffer pair per procedural mesh kind.
+// GPU state of the opaque pass: one vertex/index buffer pair per mesh geometry drawn (by
+// SharedMesh::id), released when no instance of the last draw used it.
 #include <map>
 #include <utility>
 #include <vector>
@@ -45,7 +46,10 @@ class MeshRenderer {
     GLsizei index_count = 0;
     bool closed = false;  // seen only from outside: back faces culled
   };
-  const GpuMesh& mesh_for(MeshKind kind);
+  // The buffers of `mesh`, uploaded on first use.
+  const GpuMesh& mesh_for(const SharedMesh& mesh);
+  // Releases the buffers of geometry that no instance of `instances` uses.
+  void release_unused(const std::vector<MeshInstance>& instances);
   void draw_meshes(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                    const RenderSettings& settings, const SceneLighting& lighting,
                    const gpu::RenderTarget& target, const ShadowVolume* shadows, const FireLights* fire);
@@ -70,7 +74,7 @@ class MeshRenderer {
   // With n fire lights (mesh.frag's FIRE_LIGHTS n), by (encode, n), compiled on first use.
   std::map<std::pair<bool, int>, gpu::Program> fire_programs_;
   const gpu::Program& program_for(bool encode, int fire_lights);
-  std::map<MeshKind, GpuMesh> meshes_;
+  std::map<uint64_t, GpuMesh> meshes_;  // by SharedMesh::id
   gpu::Texture shadow_texture_;
   glm::ivec3 shadow_size_{0};
   uint64_t shadow_version_ = ~uint64_t(0);

@@ -75,11 +75,22 @@ struct CloudDescription {
   float jitter = 0.0f;                       // per-particle random speed, >= 0
 };
 
+// An opaque mesh (docs/scene_format.md, meshes[]): a built-in mesh, a primitive of given size
+// or a mesh file, placed by MeshPlacement (engine/mesh/mesh_placement.h). Primitives stand on
+// their origin: the box, cylinder and cone have their base centred on it and rise along +y; the
+// sphere's centre is (0, radius, 0) in model space.
 struct MeshDescription {
   MeshKind kind = MeshKind::ground_plane;
   glm::vec3 position{0.0f, 0.0f, 0.0f};
+  glm::vec3 rotation_deg{0.0f, 0.0f, 0.0f};  // Euler angles: about x, then y, then z
   float scale = 1.0f;                        // > 0; for the ground plane: half the side length
   glm::vec3 color{0.5f, 0.5f, 0.5f};         // linear albedo, each in [0, 1]
+  glm::vec3 size{1.0f, 1.0f, 1.0f};          // box: full extents, each > 0
+  float radius = 0.5f;                       // sphere, cylinder, cone: > 0
+  float height = 1.0f;                       // cylinder, cone: > 0
+  std::string file;                          // file: as written in the scene
+  std::string path;                          // file: resolved against the scene file's folder
+  std::string pointer;                       // JSON pointer of the entry, e.g. "/meshes/0"
 };
 
 // A volume read from a file: an OpenVDB grid imported as Gaussian particles when the scene is

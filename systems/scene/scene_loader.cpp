@@ -192,6 +192,23 @@ void read_cloud(ObjectReader& r, CloudDescription& c) {
   }
 }
 
+bool ends_with_ci(std::string_view s, std::string_view suffix);
+std::string resolve_against(const std::string& scene_file, const std::string& relative);
+
+// A mesh file's path: a .gltf, .glb or .obj file, resolved against the scene file's folder. The
+// file itself is read with the scene's assets (systems/scene_runtime/load_scene_assets.h).
+void read_mesh_file_path(ObjectReader& r, MeshDescription& m) {
+  const std::string expected =
+      "expected the path of a mesh file ending in \".gltf\", \".glb\" (glTF 2.0) or \".obj\", relative to "
+      "the scene file's folder";
+  const json& v = r.require("file", expected);
+  if (!v.is_string() || v.get<std::string>().empty()) r.at("file").fail(expected + ", found " + describe(v));
+  m.file = v.get<std::string>();
+  if (!ends_with_ci(m.file, ".gltf") && !ends_with_ci(m.file, ".glb") && !ends_with_ci(m.file, ".obj"))
+    r.at("file").fail(expected + ", found " + describe(v));
+  m.path = resolve_against(*r.where().file, m.file);
+}
+
 void read_mesh(ObjectReader& r, MeshDescription& m) {
   const std::vector<std::string_view>& names = r.key("type", ParameterType::choice).choices;
   const json& type = r.require("type", "the mesh type, one of " + quoted_list(names));
@@ -208,9 +225,16 @@ void read_mesh(ObjectReader& r, MeshDescription& m) {
     r.at("type").fail(message);
   }
   m.kind = *kind;
+  m.pointer = r.where().pointer;
+  r.refuse_keys_not_for("type", name);
   r.vec3("position", m.position);
+  r.vec3("rotation_deg", m.rotation_deg);
   r.number("scale", m.scale);
   r.vec3("color", m.color);
+  r.vec3("size", m.size);
+  r.number("radius", m.radius);
+  r.number("height", m.height);
+  if (m.kind == MeshKind::file) read_mesh_file_path(r, m);
 }
 
 void read_render(ObjectReader& r, RenderDescription& d) {

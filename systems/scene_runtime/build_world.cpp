@@ -22,6 +22,7 @@
 #include "systems/animation/particle_prewarm.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/composite/frame_targets.h"
+#include "systems/scene_runtime/mesh_geometry.h"
 
 namespace pyro {
 
@@ -90,9 +91,16 @@ void add_emitters(ecs::World& world, const SceneDescription& scene) {
   }
 }
 
-void add_meshes(ecs::World& world, const std::vector<MeshDescription>& meshes) {
-  for (const MeshDescription& m : meshes)
-    world.emplace<MeshInstance>(world.create(), MeshInstance{m.kind, m.position, m.scale, m.color});
+// Each mesh with its geometry: a file's from the assets, a primitive's built here.
+void add_meshes(ecs::World& world, const std::vector<MeshDescription>& meshes,
+                const std::vector<std::shared_ptr<const SharedMesh>>& files) {
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    const MeshDescription& m = meshes[i];
+    std::shared_ptr<const SharedMesh> geometry =
+        m.kind == MeshKind::file ? (i < files.size() ? files[i] : nullptr) : primitive_geometry(m);
+    world.emplace<MeshInstance>(world.create(), MeshInstance{m.kind, std::move(geometry),
+                                                             MeshPlacement{m.position, m.rotation_deg, m.scale}, m.color});
+  }
 }
 
 // The scene's lights as entities, created after every other entity: entity indices order the
@@ -131,7 +139,7 @@ ecs::World build_world(const ResolvedScene& resolved, SceneAssets assets) {
   add_volumes(world, assets.volumes);
   world.set_resource<SimulationEnvironment>(scene.environment);
   add_emitters(world, scene);
-  add_meshes(world, scene.meshes);
+  add_meshes(world, scene.meshes, assets.meshes);
   add_flipbook_fires(world, assets.fires, assets.flipbooks);
   add_lights(world, scene);
   add_shadowing(world, scene);

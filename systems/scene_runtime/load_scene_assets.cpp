@@ -4,6 +4,7 @@
 
 #include "systems/cloud_import/scene_volume.h"
 #include "systems/scene_runtime/flipbook_bake.h"
+#include "systems/scene_runtime/mesh_geometry.h"
 #include "systems/scene_runtime/resolve_scene.h"
 #include "systems/scene_runtime/scene_asset_cache.h"
 #include "systems/volume_sequence/sequence_asset.h"
@@ -65,6 +66,18 @@ void load_volumes(const SceneDescription& scene, SceneAssets& assets, const Note
   }
 }
 
+void load_meshes(const SceneDescription& scene, SceneAssets& assets, const Notes& note) {
+  for (const MeshDescription& m : scene.meshes) {
+    if (m.kind != MeshKind::file) {
+      assets.meshes.push_back(nullptr);
+      continue;
+    }
+    assets.meshes.push_back(file_geometry(scene, m));
+    note(scene.file + ": " + m.pointer + ": read " + std::to_string(assets.meshes.back()->data.triangle_count()) +
+         " triangles from mesh file \"" + m.path + "\"");
+  }
+}
+
 void load_fires(const SceneDescription& scene, SceneAssets& assets, const Notes& note,
                 SceneAssetCache* cache) {
   assets.fires = scene.fires;
@@ -83,6 +96,7 @@ SceneAssets load_scene_assets(const ResolvedScene& resolved, const NoteSink& on_
   SceneAssets assets;
   const Notes note{assets, on_note};
   if (cache) cache->begin_load();
+  load_meshes(resolved.scene, assets, note);
   load_volumes(resolved.scene, assets, note, cache);
   if (!assets.volumes.empty()) {
     uint64_t volume_particles = 0;

@@ -1,6 +1,6 @@
 #pragma once
 // The second layer of the runtime: ResolvedScene -> SceneAssets. Reads every file the scene
-// names (volumes, flipbooks), baking the engine's default flipbook when a fire needs it and it
+// names (mesh files, volumes, flipbooks), baking the engine's default flipbook when a fire needs it and it
 // does not exist yet, and checks the budget again with the volumes' particles: all before any
 // world exists. Notes (which file a volume was read from, a bake starting) go to `on_note` as
 // they happen and into SceneAssets::notes. Errors are UserErrors naming the scene, the entry

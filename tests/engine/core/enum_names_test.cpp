@@ -45,7 +45,7 @@ TEST(EnumNames, EveryTableRoundTrips) {
   expect_round_trip<ParticleShape>(3);
   expect_round_trip<ParticleShading>(2);
   expect_round_trip<EyeOrder>(2);
-  expect_round_trip<MeshKind>(2);
+  expect_round_trip<MeshKind>(7);
   expect_round_trip<ParticleMedium>(3);
   expect_round_trip<EmitterShape>(4);
   expect_round_trip<FlipbookBlend>(2);

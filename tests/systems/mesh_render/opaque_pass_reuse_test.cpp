@@ -46,7 +46,7 @@ std::vector<std::vector<float>> images(SceneRuntime& run, int frames, bool fresh
     if (fresh) run.world().set_resource<MeshRenderer>();
     if (move_tower_at_2 && f == 2)
       run.world().each<MeshInstance>([](MeshInstance& m) {
-        if (m.kind == MeshKind::water_tower) m.position.x += 0.5f;
+        if (m.kind == MeshKind::water_tower) m.placement.position.x += 0.5f;
       });
     run.step();
     out.push_back(run.image().rgba);

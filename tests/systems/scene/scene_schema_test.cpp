@@ -230,7 +230,10 @@ TEST(SceneSchema, EachClassOfMistakeIsRefusedByBoth) {
       {Mistake::out_of_range, [](json& s) { s["clouds"][0]["density"] = 2; }},
       {Mistake::unknown_key, [](json& s) { s["camera"]["fovy"] = 45; }},
       {Mistake::missing_required, [](json& s) { s["clouds"][0].erase("count"); }},
-      {Mistake::wrong_enum, [](json& s) { s["render"] = {{"billboards", "sideways"}}; }}};
+      {Mistake::wrong_enum, [](json& s) { s["render"] = {{"billboards", "sideways"}}; }},
+      // A key of another mesh type, and a mesh file without its required "file".
+      {Mistake::unknown_key, [](json& s) { s["meshes"] = json::parse(R"([{"type": "box", "radius": 1}])"); }},
+      {Mistake::missing_required, [](json& s) { s["meshes"] = json::parse(R"([{"type": "file"}])"); }}};
   const fs::path folder = test::scratch_dir("mistakes");
   std::vector<fs::path> files;
   for (const auto& [mistake, apply] : mistakes) {
@@ -242,7 +245,8 @@ TEST(SceneSchema, EachClassOfMistakeIsRefusedByBoth) {
   }
   const std::vector<std::string> verdicts = schema_verdicts(files);
   for (std::size_t i = 0; i < files.size(); ++i)
-    EXPECT_EQ(verdicts[i].rfind("invalid", 0), 0u) << kMistakeNames[i] << ": " << verdicts[i];
+    EXPECT_EQ(verdicts[i].rfind("invalid", 0), 0u)
+        << kMistakeNames[static_cast<int>(mistakes[i].first)] << ": " << verdicts[i];
 }
 
 TEST(SceneSchema, LoaderAndSchemaAgreeOnMutatedScenes) {

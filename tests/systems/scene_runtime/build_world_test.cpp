@@ -86,7 +86,7 @@ TEST(BuildWorld, MakesOneEntityPerDescribedThing) {
   EXPECT_EQ(capacities, (std::vector<size_t>{10, 20, 3, 30}));  // in entity order
   EXPECT_EQ(sizes, (std::vector<size_t>{0, 0, 3, 0}));            // only the volume is loaded
   w.each<StereoCamera>([](StereoCamera& s) { EXPECT_EQ(s.eye_order, EyeOrder::right_left); });
-  w.each<MeshInstance>([](MeshInstance& m) { EXPECT_FLOAT_EQ(m.scale, 4.0f); });
+  w.each<MeshInstance>([](MeshInstance& m) { EXPECT_FLOAT_EQ(m.placement.scale, 4.0f); });
   EXPECT_EQ(w.resource<RenderSettings>().width, 32);
   EXPECT_FLOAT_EQ(w.resource<FrameClock>().dt, 0.125f);
   EXPECT_EQ(w.resource<FrameClock>().frame, 0u);
