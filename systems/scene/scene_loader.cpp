@@ -32,6 +32,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/json_document.h"
 #include "engine/io/parameter_dictionary.h"
+#include "systems/scene/emitter_defaults.h"
 #include "systems/scene/scene_keys.h"
 
 namespace pyro {
@@ -595,6 +596,7 @@ void read_emitter(ObjectReader& r, EmitterDescription& out) {
   Emitter& e = out.emitter;
   r.string("name", e.name);
   r.choice("medium", e.medium);
+  apply_medium_defaults(e.medium, e, out.dynamics);  // before the keys that may override them
   r.object("shape", [&](ObjectReader& s) {
     s.choice("type", e.shape);
     s.vec3("position", e.position);
