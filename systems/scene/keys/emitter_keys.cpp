@@ -4,6 +4,7 @@
 
 #include "components/emitter.h"
 #include "components/particle_dynamics.h"
+#include "components/render_modes.h"
 #include "systems/scene/keys/value_shapes.h"
 #include "systems/scene/scene_keys.h"
 
@@ -88,7 +89,8 @@ const ParameterTable& emitter_keys() {
        integer_key("budget", 1, 10'000'000, "Most live particles.").with_default(d.budget),
        integer_key("seed", 0, std::numeric_limits<std::uint64_t>::max(), "Mixed with the scene seed.")
            .with_default(d.seed),
-       object_key("dynamics", dynamics_keys(), "How the particles move.")}};
+       object_key("dynamics", dynamics_keys(), "How the particles move."),
+       enum_key<ParticleShape>("particles", "This emitter's kind; absent: render.particles.")}};
   return table;
 }
 
