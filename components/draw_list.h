@@ -19,6 +19,7 @@
 
 #include "engine/math/view_frustum.h"
 #include "components/particle_light.h"
+#include "components/render_modes.h"
 #include "engine/particles/particle_pool.h"
 
 namespace pyro {
@@ -49,6 +50,10 @@ struct DrawList {
   // layout, systems/sorting/gpu_key_layout.h); with `on_gpu` the GPU does, and `order` is empty.
   std::optional<GpuOrderRequest> gpu_request;
   bool on_gpu = false;
+  // Sets of different kinds in one list (components/particle_kind.h), gathered form only: each
+  // entry's kind, so that particles of every kind blend in the one back-to-front order. Empty:
+  // every entry is of the kind its renderer draws.
+  std::vector<ParticleShape> shapes;
 
   bool indexed() const { return !order.empty(); }
   size_t size() const { return indexed() ? order.size() : center_radius.size(); }

@@ -3,6 +3,8 @@
 #include <vector>
 
 #include "components/anisotropic_cloud.h"
+#include "components/particle_kind.h"
+#include "components/particle_set.h"
 #include "components/particle_light.h"
 #include "components/draw_list.h"
 #include "components/explosion_shading.h"
@@ -22,6 +24,7 @@
 #include "systems/billboard_render/explosion_renderer.h"
 #include "systems/billboard_render/sphere_billboard_renderer.h"
 #include "systems/sorting/depth_sort.h"
+#include "systems/sorting/particle_shapes.h"
 
 #include <algorithm>
 
@@ -70,7 +73,8 @@ void make_particle_renderer(ecs::World& world) {
   make_anisotropic_pass(world);
   const RenderSettings& settings = world.resource<const RenderSettings>();
   if (!world.has_resource<SortDeviceChoice>()) world.set_resource<SortDeviceChoice>();
-  if (settings.particles == ParticleShape::gaussian) return;
+  // Sets of other kinds than Gaussian (components/particle_kind.h) need a billboard renderer too.
+  if (common_particle_shape(world, settings.particles) == ParticleShape::gaussian) return;
   if (settings.media_layers()) {
     const ExplosionShading* shading = world.try_resource<const ExplosionShading>();
     if (!world.has_resource<ExplosionRenderer>())
@@ -188,6 +192,38 @@ std::optional<SplatLighting> splat_lighting(ecs::World& world, const EyeDrawList
   return s;
 }
 
+// Entries [begin, end) of a gathered list's centres and colours, into `run`.
+void copy_run(const DrawList& list, size_t begin, size_t end, DrawList& run) {
+  run.center_radius.assign(list.center_radius.begin() + long(begin), list.center_radius.begin() + long(end));
+  run.color_density.assign(list.color_density.begin() + long(begin), list.color_density.begin() + long(end));
+}
+
+// A mixed scene (components/particle_kind.h): the sorting system's one back-to-front list of
+// every set, drawn in runs of one kind, each run by its kind's renderer into the same target.
+// Both renderers blend premultiplied "over" (particle_blending.h), so drawing the runs in list
+// order composites particles of different kinds that overlap in depth exactly as one list of one
+// kind would be. A run costs an upload and a draw call: the cost grows with how often the kind
+// changes along the order (sets apart in depth make few runs, interleaved ones many).
+void draw_mixed_view(ecs::World& world, const DrawList& list, const CameraFrame& frame,
+                     EyeTargets& t, const RenderSettings& settings) {
+  const gpu::GpuPassScope pass("particle layer", true);  // profiling hook
+  if (t.layer) prepare_layer(t);
+  const gpu::RenderTarget& target = t.layer ? *t.layer : *t.scene;
+  BillboardRenderer& splats = world.resource<BillboardRenderer>();
+  SphereBillboardRenderer& spheres = world.resource<SphereBillboardRenderer>();
+  DrawList run;
+  for (size_t begin = 0, end = 0; begin < list.shapes.size(); begin = end) {
+    const ParticleShape shape = list.shapes[begin];
+    while (end < list.shapes.size() && list.shapes[end] == shape) ++end;
+    copy_run(list, begin, end, run);
+    if (shape == ParticleShape::gaussian)
+      splats.draw(run, {}, frame, target, settings.alignment, BillboardShading::kernel, nullptr);
+    else
+      spheres.draw(run, frame, target, t.scene->depth_texture(), t.scene->width(), t.scene->height(),
+                   shape == ParticleShape::planar, settings.billboard_sprites);
+  }
+}
+
 // Returns whether the views' layers were prepared (cleared, the scene's depth copied down).
 bool draw_particle_lists(ecs::World& world) {
   const EyeDrawLists* lists = world.try_resource<const EyeDrawLists>();
@@ -196,7 +232,8 @@ bool draw_particle_lists(ecs::World& world) {
   GpuFrame& frame = world.resource<GpuFrame>();
   const RenderSettings& settings = world.resource<const RenderSettings>();
   const size_t views = std::min({view.eyes.size(), frame.eyes.size(), lists->eyes.size()});
-  if (settings.particles == ParticleShape::gaussian) {
+  const std::optional<ParticleShape> common = common_particle_shape(world, settings.particles);
+  if (common == ParticleShape::gaussian) {
     BillboardRenderer& renderer = world.resource<BillboardRenderer>();
     measure_sort_devices(world, renderer, *lists, settings);
     renderer.reset_cost();
@@ -210,6 +247,10 @@ bool draw_particle_lists(ecs::World& world) {
     draw_media(world, *lists, view, frame, settings, views);
     return false;
   }
+  if (!common) {
+    for (size_t v = 0; v < views; ++v) draw_mixed_view(world, lists->eyes[v], view.eyes[v], frame.eyes[v], settings);
+    return true;
+  }
   SphereBillboardRenderer& spheres = world.resource<SphereBillboardRenderer>();
   for (size_t v = 0; v < views; ++v) {
     EyeTargets& t = frame.eyes[v];
@@ -217,7 +258,7 @@ bool draw_particle_lists(ecs::World& world) {
     if (t.layer) prepare_layer(t);
     spheres.draw(lists->eyes[v], view.eyes[v], t.layer ? *t.layer : *t.scene,
                  t.scene->depth_texture(), t.scene->width(), t.scene->height(),
-                 settings.particles == ParticleShape::planar, settings.billboard_sprites);
+                 *common == ParticleShape::planar, settings.billboard_sprites);
   }
   return true;
 }
@@ -235,7 +276,7 @@ ecs::SystemDesc billboard_render_system() {
           .phase = ecs::Phase::render,
           .access = ecs::Access::of<
               ecs::Reads<EyeDrawLists, View, RenderSettings, SceneLighting, FrameClock,
-                         ExplosionShading, AnisotropicCloud, ParticleLight, SortScratch, ShadowSettings,
+                         ExplosionShading, AnisotropicCloud, ParticleSet, ParticleKind, ParticleLight, SortScratch, ShadowSettings,
                          FireLights>,
               ecs::Writes<GpuFrame, SortDeviceChoice>, Renderers>(),
           .run = draw_billboards,

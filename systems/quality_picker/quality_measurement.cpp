@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -120,7 +121,12 @@ std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, i
 }
 
 bool gaussian_particles(const SceneDescription& scene) {
-  return scene.render.particles == ParticleShape::gaussian;
+  const auto gaussian = [&](const std::optional<ParticleShape>& own) {
+    return own.value_or(scene.render.particles) == ParticleShape::gaussian;
+  };
+  return gaussian(std::nullopt) &&
+         std::all_of(scene.clouds.begin(), scene.clouds.end(), [&](const CloudDescription& c) { return gaussian(c.particles); }) &&
+         std::all_of(scene.emitters.begin(), scene.emitters.end(), [&](const EmitterDescription& e) { return gaussian(e.particles); });
 }
 
 bool has_dynamics(const SceneDescription& scene) { return !scene.emitters.empty(); }

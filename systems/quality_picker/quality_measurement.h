@@ -44,8 +44,8 @@ class QualityGroundTruth {
 std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, int width, int height,
                                                 const std::vector<int>& frames);
 
-// Whether the scene's particles are Gaussian splats, which the footprint table shapes and the CPU
-// reference can render.
+// Whether all the scene's particles are Gaussian splats (every set's kind), which the footprint
+// table shapes and the CPU reference can render.
 bool gaussian_particles(const SceneDescription& scene);
 // Whether the scene's particles move by integrated dynamics (emitters), so the time step matters.
 bool has_dynamics(const SceneDescription& scene);

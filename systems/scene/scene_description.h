@@ -73,6 +73,8 @@ struct CloudDescription {
   uint64_t seed = 1;                         // mixed with the scene seed
   glm::vec3 drift{0.0f, 0.0f, 0.0f};         // common drift velocity, world units / s
   float jitter = 0.0f;                       // per-particle random speed, >= 0
+  // What its particles are drawn as (components/particle_kind.h); absent: render.particles.
+  std::optional<ParticleShape> particles;
 };
 
 // An opaque mesh (docs/scene_format.md, meshes[]): a built-in mesh, a primitive of given size
@@ -168,6 +170,8 @@ struct QualityDescription {
 struct EmitterDescription {
   Emitter emitter;            // emitter.seed is the file's seed, not yet mixed
   ParticleDynamics dynamics;
+  // What its particles are drawn as (components/particle_kind.h); absent: render.particles.
+  std::optional<ParticleShape> particles;
 };
 
 struct SceneDescription {

@@ -32,6 +32,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/json_document.h"
 #include "engine/io/parameter_dictionary.h"
+#include "systems/scene/emitter_defaults.h"
 #include "systems/scene/scene_keys.h"
 
 namespace pyro {
@@ -167,6 +168,14 @@ void read_shadows(ObjectReader& r, ShadowSettings& s) {
   r.object("scattering", [&](ObjectReader& sc) { read_scattering(sc, s.scattering); });
 }
 
+// A particle set's own kind ("particles"), when its entry gives one.
+void read_particle_kind(ObjectReader& r, std::optional<ParticleShape>& out) {
+  if (r.find("particles") == nullptr) return;
+  ParticleShape shape = ParticleShape::gaussian;
+  r.choice("particles", shape);
+  out = shape;
+}
+
 void read_cloud(ObjectReader& r, CloudDescription& c) {
   r.string("name", c.name);
   r.require("count", "the number of particles, an integer in [1, 10000000]");
@@ -181,6 +190,7 @@ void read_cloud(ObjectReader& r, CloudDescription& c) {
   r.integer("seed", c.seed);
   r.vec3("drift", c.drift);
   r.number("jitter", c.jitter);
+  read_particle_kind(r, c.particles);
 
   static constexpr const char* kAxis[] = {"x", "y", "z"};
   for (glm::length_t i = 0; i < 3; ++i) {
@@ -619,6 +629,7 @@ void read_emitter(ObjectReader& r, EmitterDescription& out) {
   Emitter& e = out.emitter;
   r.string("name", e.name);
   r.choice("medium", e.medium);
+  apply_medium_defaults(e.medium, e, out.dynamics);  // before the keys that may override them
   r.object("shape", [&](ObjectReader& s) {
     s.choice("type", e.shape);
     s.vec3("position", e.position);
@@ -656,6 +667,7 @@ void read_emitter(ObjectReader& r, EmitterDescription& out) {
   r.integer("budget", e.budget);
   r.integer("seed", e.seed);
   r.object("dynamics", [&](ObjectReader& d) { read_dynamics(d, out.dynamics); });
+  read_particle_kind(r, out.particles);
 }
 
 void read_environment(ObjectReader& r, SimulationEnvironment& env, float& prewarm) {

@@ -14,6 +14,7 @@
 #include "components/mesh_instance.h"
 #include "components/particle_dynamics.h"
 #include "components/particle_light.h"
+#include "components/particle_kind.h"
 #include "components/particle_set.h"
 #include "components/shadow_settings.h"
 #include "components/simulation_environment.h"
@@ -58,6 +59,7 @@ void add_clouds(ecs::World& world, const SceneDescription& scene) {
     c.jitter = d.jitter;
     world.emplace<CloudVolume>(e, c);
     world.emplace<ParticleSet>(e, ParticleSet{ParticlePool(d.count)});
+    if (d.particles) world.emplace<ParticleKind>(e, ParticleKind{*d.particles});
   }
 }
 
@@ -88,6 +90,7 @@ void add_emitters(ecs::World& world, const SceneDescription& scene) {
     world.emplace<Emitter>(e, std::move(em));
     world.emplace<ParticleDynamics>(e, d.dynamics);
     world.emplace<ParticleSet>(e, ParticleSet{ParticlePool(d.emitter.budget)});
+    if (d.particles) world.emplace<ParticleKind>(e, ParticleKind{*d.particles});
   }
 }
 

@@ -45,6 +45,38 @@ StereoCamera stereo_camera(const CameraDescription& camera, const RuntimeOptions
   return stereo;
 }
 
+// The command line's --particles draws every set as one kind, to compare kinds: the sets' own
+// kinds are dropped.
+void drop_particle_kinds(SceneDescription& scene) {
+  for (CloudDescription& c : scene.clouds) c.particles.reset();
+  for (EmitterDescription& e : scene.emitters) e.particles.reset();
+}
+
+// A set's own kind is honoured only where its renderer can draw it beside the others: the
+// explosion's media layers shade every set as render.particles, and the light phase lights
+// Gaussian splats only (resolve_scene refuses other scene-wide kinds with shadows).
+void check_particle_kind(const ResolvedScene& r, const std::optional<ParticleShape>& kind,
+                         const std::string& file, const std::string& pointer) {
+  if (!kind || *kind == r.settings.particles) return;
+  const std::string found = "found \"" + std::string(name_of(*kind)) + "\"";
+  if (r.settings.shading == ParticleShading::explosion)
+    throw UserError(file, pointer,
+                    "with \"shading\": \"explosion\" every set is drawn as render.particles (\"" +
+                        std::string(name_of(r.settings.particles)) + "\"); " + found +
+                        " (drop the key or use \"shading\": \"color\")");
+  if (r.scene.shadows && *kind != ParticleShape::gaussian)
+    throw UserError(file, pointer,
+                    "lit media (\"shadows\") light Gaussian particles only; " + found +
+                        " shaded by colour (docs/lighting.md)");
+}
+
+void check_particle_kinds(const ResolvedScene& r, const std::string& file) {
+  for (size_t i = 0; i < r.scene.clouds.size(); ++i)
+    check_particle_kind(r, r.scene.clouds[i].particles, file, "/clouds/" + std::to_string(i) + "/particles");
+  for (size_t i = 0; i < r.scene.emitters.size(); ++i)
+    check_particle_kind(r, r.scene.emitters[i].particles, file, "/emitters/" + std::to_string(i) + "/particles");
+}
+
 }  // namespace
 
 ResolvedScene resolve_scene(const SceneDescription& scene, const RuntimeOptions& options,
@@ -56,6 +88,7 @@ ResolvedScene resolve_scene(const SceneDescription& scene, const RuntimeOptions&
   r.quality = options.quality;
   r.substeps = options.quality ? options.quality->substeps : 1;
   r.settings = merge_render_settings(r.scene, options);
+  if (options.particles) drop_particle_kinds(r.scene);
   // The light phase lights Gaussian splats and the explosion's media; spherical and planar
   // billboards shaded by their colour alone have no albedo to light.
   if (r.scene.shadows && r.settings.particles != ParticleShape::gaussian && !r.settings.media_layers())
@@ -63,6 +96,7 @@ ResolvedScene resolve_scene(const SceneDescription& scene, const RuntimeOptions&
                     "lit media with Gaussian particles or \"shading\": \"explosion\"; found \"particles\": \"" +
                         std::string(name_of(r.settings.particles)) +
                         "\" shaded by colour (docs/lighting.md)");
+  check_particle_kinds(r, scene.file.empty() ? "scene" : scene.file);
   r.shading = explosion_shading(r.scene.render);
   r.stereo = stereo_camera(r.scene.camera, options);
   r.clock.dt = 1.0f / r.scene.frames_per_second;

@@ -7,12 +7,14 @@
 #include <chrono>
 #include <glm/geometric.hpp>
 
+#include "components/particle_kind.h"
 #include "components/particle_set.h"
 #include "components/render_settings.h"
 #include "components/sort_device_choice.h"
 #include "components/view.h"
 #include "engine/ecs/world.h"
 #include "systems/sorting/gpu_key_layout.h"
+#include "systems/sorting/particle_shapes.h"
 
 namespace pyro {
 
@@ -194,6 +196,7 @@ void build_draw_list(const ecs::World& world, const glm::vec3& eye, const glm::v
   s.times.order_ms += ms_since(start);
   const size_t n = s.radix.order.size();
   list.order.clear();
+  list.shapes.clear();
   list.center_radius.resize(n);
   list.color_density.resize(n);
   list.medium.resize(with_medium ? n : 0);
@@ -214,6 +217,7 @@ void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind
   list.color_density.clear();
   list.medium.clear();
   list.light.clear();
+  list.shapes.clear();
   list.order.swap(s.radix.order);  // the old order's storage goes back to the scratch
   s.times.order_ms += ms_since(start);
 }
@@ -240,6 +244,21 @@ void set_gpu_request(const CameraFrame& eye, bool by_eye_distance, std::span<con
   r.views.assign(views.begin(), views.end());
 }
 
+// A mixed scene's list: each entry's kind, its set's. A key's set is its set's place in
+// scratch.sets (in entity-index order, as here); the last build_draw_list's order is still in
+// scratch.radix.order.
+void list_entry_shapes(const ecs::World& world, ParticleShape scene_wide, const SortScratch& s,
+                       DrawList& list) {
+  std::vector<std::pair<uint32_t, ParticleShape>> set_shapes;
+  world.each<const ParticleSet>([&](ecs::Entity e, const ParticleSet&) {
+    set_shapes.emplace_back(e.index, particle_shape_of(world, e, scene_wide));
+  });
+  std::sort(set_shapes.begin(), set_shapes.end());
+  list.shapes.resize(s.radix.order.size());
+  for (size_t k = 0; k < list.shapes.size(); ++k)
+    list.shapes[k] = set_shapes[s.keys[s.radix.order[k]].set].second;
+}
+
 // The sorting system's work for one frame: every view's list, indexed for the Gaussian splats
 // (their vertex shader reads the pools) and gathered for the billboards that read arrays.
 void sort_views(const ecs::World& world, const View& view, const RenderSettings* settings,
@@ -260,7 +279,10 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
     if (!rs.cull_particles) return std::span<const ViewFrustum>();
     return shared ? std::span<const ViewFrustum>(frusta) : std::span<const ViewFrustum>(&frusta[v], 1);
   };
-  if (rs.particles == ParticleShape::gaussian) {
+  // Sets of one kind: that kind's list; of different kinds (a mixed scene), one gathered list
+  // in one back-to-front order with each entry's kind.
+  const std::optional<ParticleShape> common = common_particle_shape(world, rs.particles);
+  if (common == ParticleShape::gaussian) {
     collect_particle_sets(world, scratch);
     lists.pools.clear();
     for (const auto& set : scratch.sets) lists.pools.push_back(set.second);
@@ -284,6 +306,7 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
                       rs.media_layers(), views_of(v));
       lists.eyes[v].gpu_request.reset();
       lists.eyes[v].on_gpu = false;
+      if (!common) list_entry_shapes(world, rs.particles, scratch, lists.eyes[v]);
     }
   }
   for (size_t v = orders; v < eyes.size(); ++v) lists.eyes[v] = lists.eyes[0];
@@ -294,7 +317,7 @@ void sort_views(const ecs::World& world, const View& view, const RenderSettings*
 ecs::SystemDesc sorting_system() {
   return {.name = "sorting",
           .phase = ecs::Phase::sort,
-          .access = ecs::Access::of<ecs::Reads<View, RenderSettings, ParticleSet, ParticleLight, SortDeviceChoice>,
+          .access = ecs::Access::of<ecs::Reads<View, RenderSettings, ParticleSet, ParticleKind, ParticleLight, SortDeviceChoice>,
                                     ecs::Writes<EyeDrawLists, SortScratch>>(),
           .run =
               [](ecs::World& world) {

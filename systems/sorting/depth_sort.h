@@ -77,7 +77,9 @@ void collect_particle_sets(const ecs::World& world, SortScratch& scratch);
 void order_draw_list(const glm::vec3& eye, const glm::vec3& forward, SortKeyKind kind,
                      SortScratch& scratch, DrawList& list, std::span<const ViewFrustum> views = {});
 
-// The `sorting` system: Gaussian splats get indexed lists, the other billboards gathered ones.
+// The `sorting` system: Gaussian splats get indexed lists, the other billboards gathered ones;
+// sets of different kinds (components/particle_kind.h, systems/sorting/particle_shapes.h) one
+// gathered list of them all with each entry's kind (DrawList::shapes).
 // Each list leaves out the particles its views cannot show (a shared list: those outside every
 // eye's frustum).
 // It reads View (written by stereo_camera in the camera phase), never the

@@ -30,7 +30,8 @@ const ParameterTable& cloud_keys() {
            .with_default(d.seed),
        vec3_key("drift", kAnyRange, "Common drift velocity, world units per second.").with_default(d.drift),
        number_key("jitter", kNonNegative, "Per-particle random speed, world units per second.")
-           .with_default(d.jitter)}};
+           .with_default(d.jitter),
+       enum_key<ParticleShape>("particles", "This cloud's kind; absent: render.particles.")}};
   return table;
 }
 

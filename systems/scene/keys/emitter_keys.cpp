@@ -4,6 +4,7 @@
 
 #include "components/emitter.h"
 #include "components/particle_dynamics.h"
+#include "components/render_modes.h"
 #include "systems/scene/keys/value_shapes.h"
 #include "systems/scene/scene_keys.h"
 
@@ -45,9 +46,10 @@ const ParameterTable& dynamics_keys() {
   static const ParticleDynamics d{};
   static const ParameterTable table{
       "emitters[].dynamics", "How the particles move, cool and collide.",
-      {number_key("gravity_scale", kAnyRange, "Times the environment's gravity.").with_default(d.gravity_scale),
-       number_key("buoyancy", kAnyRange, "Boussinesq buoyancy per kelvin above ambient.").with_default(d.buoyancy),
-       number_key("drag", kNonNegative, "1/s towards the wind.").with_default(d.drag),
+      // gravity_scale, buoyancy and drag: defaults by medium (systems/scene/emitter_defaults.h).
+      {number_key("gravity_scale", kAnyRange, "Times the environment's gravity; default by medium."),
+       number_key("buoyancy", kAnyRange, "Boussinesq buoyancy per kelvin above ambient; default by medium."),
+       number_key("drag", kNonNegative, "1/s towards the wind; default by medium."),
        number_key("turbulence", kNonNegative, "Turbulent wind speed.").with_default(d.turbulence),
        number_key("turbulence_frequency", kPositive, "1 / world unit.").with_default(d.turbulence_frequency),
        number_key("turbulence_speed", kAnyRange, "How fast the noise pattern moves.")
@@ -82,12 +84,13 @@ const ParameterTable& emitter_keys() {
        custom_key("size", kPositive, "Particle radius: a number or a distribution.", distribution_schema),
        custom_key("lifetime", kPositive, "Seconds: a number or a distribution.", distribution_schema),
        custom_key("density", kNonNegative, "Extinction: a number or a distribution.", distribution_schema),
-       custom_key("temperature", kNonNegative, "Kelvin: a number or a distribution.", distribution_schema),
+       custom_key("temperature", kNonNegative, "Kelvin at birth: a number or a distribution; default by medium.", distribution_schema),
        vec3_key("color", kNonNegative, "Linear albedo or colour.").with_default(d.color),
        integer_key("budget", 1, 10'000'000, "Most live particles.").with_default(d.budget),
        integer_key("seed", 0, std::numeric_limits<std::uint64_t>::max(), "Mixed with the scene seed.")
            .with_default(d.seed),
-       object_key("dynamics", dynamics_keys(), "How the particles move.")}};
+       object_key("dynamics", dynamics_keys(), "How the particles move."),
+       enum_key<ParticleShape>("particles", "This emitter's kind; absent: render.particles.")}};
   return table;
 }
 

@@ -97,3 +97,40 @@ TEST(ResolveScene, RefusesTargetsWiderThanTheDriverAllows) {
 
 }  // namespace
 }  // namespace pyro
+
+namespace pyro {
+namespace {
+
+SceneDescription kinds_scene(const std::string& body) { return parse_scene("{" + body + "}", "kinds.json"); }
+
+TEST(ResolveScene, ASetsOwnKindIsKeptBesideOthers) {
+  const ResolvedScene r = resolve_scene(
+      kinds_scene(R"("clouds": [{"count": 10}, {"count": 10, "particles": "spherical"}])"), RuntimeOptions{}, 4096);
+  EXPECT_EQ(r.settings.particles, ParticleShape::gaussian);
+  EXPECT_FALSE(r.scene.clouds[0].particles.has_value());
+  EXPECT_EQ(r.scene.clouds[1].particles, ParticleShape::spherical);
+  RuntimeOptions o;  // --particles draws every set as one kind, to compare kinds
+  o.particles = ParticleShape::planar;
+  const ResolvedScene forced = resolve_scene(
+      kinds_scene(R"("clouds": [{"count": 10, "particles": "spherical"}])"), o, 4096);
+  EXPECT_FALSE(forced.scene.clouds[0].particles.has_value());
+}
+
+TEST(ResolveScene, ASetsOwnKindIsRefusedWhereItCannotBeHonoured) {
+  const std::string explosion = refusal_resolve_scene(
+      kinds_scene(R"("render": {"particles": "spherical", "shading": "explosion"},
+                     "emitters": [{}, {"particles": "gaussian"}])"),
+      RuntimeOptions{}, 4096);
+  EXPECT_NE(explosion.find("kinds.json: at /emitters/1/particles:"), std::string::npos) << explosion;
+  EXPECT_NE(explosion.find("\"explosion\""), std::string::npos) << explosion;
+  const std::string lit = refusal_resolve_scene(
+      kinds_scene(R"("shadows": {}, "clouds": [{"count": 10, "particles": "spherical"}])"), RuntimeOptions{}, 4096);
+  EXPECT_NE(lit.find("kinds.json: at /clouds/0/particles:"), std::string::npos) << lit;
+  // The scene-wide kind written again is no kind of its own: accepted.
+  EXPECT_EQ(refusal_resolve_scene(kinds_scene(R"("shadows": {}, "clouds": [{"count": 10, "particles": "gaussian"}])"),
+                                  RuntimeOptions{}, 4096),
+            "");
+}
+
+}  // namespace
+}  // namespace pyro
