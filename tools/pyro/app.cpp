@@ -32,6 +32,7 @@ void add_pyro_commands(CLI::App& app) {
   add_view_command(app);
   add_chart_command(app);
   add_schema_command(app);
+  add_new_command(app);
 }
 
 void stop_after_parsing(CLI::App& app) {

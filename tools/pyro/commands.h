@@ -15,6 +15,7 @@ void add_quality_command(CLI::App& app);  // command_quality.cpp
 void add_view_command(CLI::App& app);  // command_view.cpp: the interactive viewer
 void add_chart_command(CLI::App& app);  // command_chart.cpp
 void add_schema_command(CLI::App& app);  // command_schema.cpp: the scene files' JSON Schema
+void add_new_command(CLI::App& app);     // command_new.cpp: a starting scene from a template
 // Registered under `pyro analyze` by add_analyze_commands.
 void add_billboard_mode_analysis(CLI::App& analyze);
 // `pyro bench vdb`, `pyro bench schedule` (bench_schedule.cpp) and `pyro bench import-scale`, registered by
