@@ -51,6 +51,8 @@ class WindowContext {
 
   // "OpenGL 4.5 (Core Profile) Mesa 22.3.6 / llvmpipe (...)", for reports.
   const std::string& description() const { return description_; }
+  // For a user interface drawn on the window's input and context (the viewer's panels).
+  GLFWwindow* glfw_window() const { return window_; }
 
  private:
   static void on_key(GLFWwindow* w, int key, int scancode, int action, int mods);

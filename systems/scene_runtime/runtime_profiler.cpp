@@ -43,6 +43,13 @@ void RuntimeProfiler::collect_gpu_spans() {
                       s.fragments});
 }
 
+std::vector<TraceSpan> RuntimeProfiler::take_spans() {
+  collect_gpu_spans();
+  std::vector<TraceSpan> spans = std::move(trace_);
+  trace_.clear();
+  return spans;
+}
+
 const std::vector<TraceSpan>& RuntimeProfiler::trace() {
   glFinish();
   collect_gpu_spans();

@@ -32,6 +32,9 @@ class RuntimeProfiler {
   void end_frame(const std::vector<ecs::SystemStats>& stats, uint64_t frame);
   // Waits for the GPU to finish the passes issued so far and returns every span.
   const std::vector<TraceSpan>& trace();
+  // The spans recorded since the last call, without waiting for the GPU (its passes arrive a
+  // frame late), and forgets them: a viewer that profiles for hours keeps no history here.
+  std::vector<TraceSpan> take_spans();
 
  private:
   void collect_gpu_spans();

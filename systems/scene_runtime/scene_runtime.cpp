@@ -77,6 +77,12 @@ void SceneRuntime::step() {
   world_.resource<FrameClock>().frame += 1;
 }
 
+std::vector<TraceSpan> SceneRuntime::take_trace() {
+  if (!profiler_) return {};
+  make_current_();
+  return profiler_->take_spans();
+}
+
 const std::vector<TraceSpan>& SceneRuntime::trace() {
   static const std::vector<TraceSpan> none;
   if (!profiler_) return none;

@@ -66,6 +66,9 @@ class SceneRuntime : public FrameStepper {
   // with the systems' spans inside it, and the GPU passes on the GPU track. Waits for the GPU to
   // finish the last frame's passes. Empty when not profiling.
   const std::vector<TraceSpan>& trace();
+  // The spans since the last take (GPU passes up to the frame before), forgotten here: for a
+  // long-running profiled session (the viewer's profiler panel). Empty when not profiling.
+  std::vector<TraceSpan> take_trace();
 
   ecs::World& world() { return world_; }
   const ecs::Schedule& schedule() const { return schedule_; }

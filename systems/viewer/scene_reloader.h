@@ -36,6 +36,8 @@ class SceneReloader {
 
   void succeeded(const FileStamp& stamp, uint64_t frame);
   void failed(const FileStamp& stamp, uint64_t frame, std::string message);
+  // The viewer wrote the file itself (a save): this stamp is not an edit to load.
+  void accept(const FileStamp& stamp) { tried_ = stamp; }
 
   // The last load failed: the running scene is an older one and error() says why.
   bool showing_error() const { return !error_.empty(); }

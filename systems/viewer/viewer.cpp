@@ -20,14 +20,22 @@
 #include "engine/gpu/window_context.h"
 #include "engine/io/png_file.h"
 #include "engine/math/view_controller.h"
+#include "systems/authoring/scene_document.h"
 #include "systems/open_scene/open_scene.h"
+#include "systems/scene/scene_keys.h"
 #include "systems/scene_runtime/particle_counts.h"
+#include "systems/scene_runtime/scene_asset_cache.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "systems/viewer/frame_time_history.h"
+#include "systems/viewer/inspector_panel.h"
+#include "systems/viewer/profiler_panel.h"
 #include "systems/viewer/scene_reloader.h"
+#include "systems/viewer/status_panel.h"
+#include "systems/viewer/stereo_panel.h"
+#include "systems/viewer/viewer_gui.h"
 #include "systems/viewer/viewer_keys.h"
 #include "systems/viewer/viewer_overlay.h"
 #include "systems/viewer/viewer_settings.h"
-#include "systems/viewer/viewer_text_renderer.h"
 #include "systems/viewer/window_image.h"
 
 namespace pyro {
@@ -54,9 +62,11 @@ class Viewer {
         window_(output_width(o_.width > 0 ? o_.width : scene_.width, o_.runtime.stereo_mode),
                 o_.height > 0 ? o_.height : scene_.height,
                 "pyro view - " + o_.scene + " - " + key_help_title()),
-        text_(window_.framebuffer_width() >= 800 ? 2 : 1),  // 5×7 glyphs doubled on wide windows
+        gui_(window_.glfw_window(), 1.0f),
         controller_(pose_of(scene_)),
-        reloader_(stamp_file(o_.scene)) {
+        reloader_(stamp_file(o_.scene)),
+        document_(SceneDocument::open(o_.scene)),
+        inspector_(o_.inspect) {
     settings_.stereo = o_.runtime.stereo_mode;
     settings_.billboards = o_.runtime.alignment.value_or(scene_.render.billboards);
     settings_.layer_scale = o_.runtime.layer_scale.value_or(scene_.render.layer_scale);
@@ -75,7 +85,11 @@ class Viewer {
     if (o_.frames == 0 && !o_.screenshot.empty() && frame_ > 0) {
       // Closed by the user: the back buffer is gone after the swap, so draw the last frame again.
       present();
-      save_screenshot();
+      save_screenshot(o_.screenshot);
+    }
+    if (!o_.save_as.empty()) {
+      document_.save_as(o_.save_as);
+      note("saved " + o_.save_as);
     }
     return summary(std::chrono::duration<double>(Clock::now() - t0).count());
   }
@@ -95,19 +109,28 @@ class Viewer {
     if (quit_) return false;
     for (const ViewerEdit& e : o_.edits)
       if (e.frame == frame_) write_in_place(o_.scene, e.content);
-    const FileStamp stamp = stamp_file(o_.scene);
+    const FileStamp stamp = stamp_file(document_.path());
     if (reload_requested_ || reloader_.changed(stamp)) reload(stamp);
     reload_requested_ = false;
+    run_script();
+    take_requests();
 
     const auto sim_start = Clock::now();
     advance_runtime();
     const auto sim_end = Clock::now();
     runtime_seconds_ += std::chrono::duration<double>(sim_end - sim_start).count();
-    smooth_system_times();
+    record_frame_times();
     refresh_rates(sim_end);
     present();
+    if (pending_rebuild_) {  // a panel changed a render setting
+      const ViewerSettings previous = *pending_rebuild_;
+      pending_rebuild_.reset();
+      rebuild(previous);
+    }
     const bool last = o_.frames > 0 && frame_ + 1 == uint64_t(o_.frames);
-    if (last && !o_.screenshot.empty()) save_screenshot();
+    if (last && !o_.screenshot.empty()) save_screenshot(o_.screenshot);
+    for (const ViewerScreenshot& shot : o_.screenshots)
+      if (shot.frame == frame_) save_screenshot(shot.file);
     window_.swap_buffers();
     window_seconds_ += std::chrono::duration<double>(Clock::now() - sim_end).count();
     return true;
@@ -135,7 +158,6 @@ class Viewer {
     shown_frame_ms_ = frame_ == 0 ? 0.0 : since * 1000.0 / double(frames_done);
     overlay_frame_mark_ = frame_ + 1;
     last_overlay_refresh_ = now;
-    overlay_stale_ = true;
   }
 
   nlohmann::json summary(double seconds) {
@@ -165,8 +187,24 @@ class Viewer {
                         {"layer_scale", settings_.layer_scale},
                         {"screenshot", o_.screenshot},
                         {"reloads", reloads},
+                        {"edits", edits_applied_},
+                        {"modified", document_.modified()},
+                        {"assets", asset_counters_json()},
                         {"renderer", window_.description()}};
     if (quality_) j["quality"] = quality_pick_summary(*quality_);
+    return j;
+  }
+
+  std::vector<std::pair<std::string, uint64_t>> asset_counters() const {
+    const SceneAssetCounters& c = assets_.counters();
+    return {{"volumes_loaded", c.volumes_loaded},       {"volumes_reused", c.volumes_reused},
+            {"flipbooks_prepared", c.flipbooks_prepared}, {"flipbooks_reused", c.flipbooks_reused},
+            {"flipbooks_baked", c.flipbooks_baked}};
+  }
+
+  nlohmann::json asset_counters_json() const {
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [name, count] : asset_counters()) j[name] = count;
     return j;
   }
 
@@ -186,6 +224,8 @@ class Viewer {
     // A layer scale the user chose (--layer-scale, the L key) replaces the scene's and a pick's.
     o.layer_scale = layer_scale_chosen_ ? std::optional<float>(settings_.layer_scale) : std::nullopt;
     o.make_context_current = [w = &window_] { w->make_current(); };
+    o.asset_cache = &assets_;
+    o.profile = gpu_profiling_;
     open.description = std::move(scene);
     open.quality = std::move(pick);
     open.on_note = on_note;
@@ -217,15 +257,17 @@ class Viewer {
 
   void reload(const FileStamp& stamp) {
     try {
-      OpenedScene opened = open(std::nullopt, std::nullopt, [this](const std::string& text) { note(text); });
+      SceneDocument document = SceneDocument::open(document_.path());
+      OpenedScene opened = open(document.description(), std::nullopt, [this](const std::string& text) { note(text); });
+      if (document_.modified()) note("the file changed on disk: the inspector's unsaved edits are replaced by it");
+      document_ = std::move(document);
       scene_ = std::move(opened.description);
       take(std::move(opened));
       needs_redraw_ = true;
       if (!camera_moved_) controller_ = ViewController(pose_of(scene_));
       else camera_dirty_ = true;
       reloader_.succeeded(stamp, frame_);
-      overlay_stale_ = true;
-      note("reloaded " + o_.scene);
+      note("reloaded " + document_.path());
     } catch (const UserError& e) {
       reload_failed(stamp, e.what());
     } catch (const gpu::GpuError& e) {
@@ -235,7 +277,6 @@ class Viewer {
 
   void reload_failed(const FileStamp& stamp, const std::string& message) {
     reloader_.failed(stamp, frame_, message);
-    overlay_stale_ = true;
     note("reload failed, keeping the last good scene: " + message);
   }
 
@@ -260,17 +301,107 @@ class Viewer {
   }
 
   void handle_keys() {
+    // Keys typed into a panel's text field are the panel's.
+    const bool typing = settings_.overlay && gui_.wants_keyboard();
     for (const gpu::KeyPress& k : window_.take_key_presses()) {
+      if (typing && k.key != GLFW_KEY_ESCAPE) continue;
       const std::optional<ViewerAction> action = action_for_key(k.key, k.mods);
       if (!action) continue;
       const ViewerSettings previous = settings_;
       const ViewerEffect effect = apply_action(settings_, *action);
-      overlay_stale_ = true;
       if (effect.quit) quit_ = true;
       if (effect.toggle_camera_mode) controller_.toggle_mode();
       if (effect.reload_scene) reload_requested_ = true;
       if (effect.rebuild_runtime) rebuild(previous);
+      if (effect.undo || effect.redo || effect.save) {
+        InspectorRequest r;
+        r.undo = effect.undo;
+        r.redo = effect.redo;
+        r.save = effect.save;
+        requests_.push_back(r);
+      }
     }
+  }
+
+  // The scripted sets and undos of this frame (pyro view --set-at, --undo-at): refused ones end
+  // the session with the document's message.
+  void run_script() {
+    for (const ViewerSet& set : o_.sets) {
+      if (set.frame != frame_) continue;
+      document_.set(set.pointer, set.value);
+      after_document_change();
+    }
+    for (uint64_t undo_frame : o_.undos) {
+      if (undo_frame != frame_) continue;
+      if (!document_.can_undo())
+        throw UserError(o_.scene, "--undo-at " + std::to_string(undo_frame), "expected an edit to undo, found none");
+      document_.undo();
+      after_document_change();
+    }
+  }
+
+  // What the panels and the Ctrl keys asked for last frame; a refused one is shown in the
+  // inspector and changes nothing.
+  void take_requests() {
+    std::vector<InspectorRequest> requests = std::move(requests_);
+    requests_.clear();
+    for (const InspectorRequest& r : requests) {
+      try {
+        apply_request(r);
+      } catch (const std::exception& e) {
+        inspector_status_.error = e.what();
+      }
+    }
+  }
+
+  void apply_request(const InspectorRequest& r) {
+    if (!r.error.empty()) throw UserError(document_.path(), "", r.error);
+    if (r.edit) document_.set(r.edit->pointer, r.edit->value, r.edit->coalesce);
+    if (r.undo && document_.can_undo()) document_.undo();
+    if (r.redo && document_.can_redo()) document_.redo();
+    if (r.edit || r.undo || r.redo) {
+      inspector_status_ = {};
+      after_document_change();
+    }
+    if (r.save) save_document(document_.path());
+    if (!r.save_as.empty()) save_document(r.save_as);
+  }
+
+  void save_document(const std::string& path) {
+    if (path == document_.path()) document_.save();
+    else document_.save_as(path);
+    // The viewer's own write is not an edit from outside to reload.
+    reloader_.accept(stamp_file(document_.path()));
+    inspector_status_ = {};
+    inspector_status_.message = "saved " + document_.path();
+    note(inspector_status_.message);
+  }
+
+  // The document changed: a new runtime from its description, at the same simulation frame. The
+  // asset cache keeps every volume and flipbook the change did not touch, so an emitter's rate
+  // re-imports and re-bakes nothing. A scene the runtime refuses takes the change back.
+  void after_document_change() {
+    ++edits_applied_;
+    const uint64_t at = runtime_->frame();
+    const bool quality_changed = touches(document_.last_changed(), "/quality");
+    try {
+      OpenedScene opened = open(document_.description(), quality_changed ? std::nullopt : quality_, {});
+      while (opened.runtime->frame() < at) opened.runtime->simulate_step();
+      scene_ = std::move(opened.description);
+      take(std::move(opened));
+    } catch (const std::exception&) {
+      if (document_.can_undo()) document_.undo();
+      throw;
+    }
+    needs_redraw_ = true;
+    if (!camera_moved_) controller_ = ViewController(pose_of(scene_));
+    else camera_dirty_ = true;
+  }
+
+  static bool touches(const std::vector<std::string>& pointers, const std::string& prefix) {
+    for (const std::string& p : pointers)
+      if (p.rfind(prefix, 0) == 0) return true;
+    return false;
   }
 
   HeldKeys held_keys() const {
@@ -289,7 +420,8 @@ class Viewer {
     handle_keys();
     double dx = 0, dy = 0;
     window_.take_drag(dx, dy);
-    const double scroll = window_.take_scroll();
+    double scroll = window_.take_scroll();
+    if (settings_.overlay && gui_.wants_mouse()) dx = dy = scroll = 0;  // a panel's drag or wheel
     const HeldKeys held = held_keys();
     const glm::vec3 move = move_direction(held);
     const bool camera_input = dx != 0 || dy != 0 || scroll != 0 || move != glm::vec3(0.0f);
@@ -332,16 +464,25 @@ class Viewer {
     camera_dirty_ = false;
   }
 
-  void smooth_system_times() {
+  // The schedule's milliseconds per system, smoothed for the status line and kept over the last
+  // seconds for the profiler's plots, with the GPU passes' fragments when profiling.
+  void record_frame_times() {
+    const double t = std::chrono::duration<double>(Clock::now() - started_).count();
     for (const ecs::SystemStats& s : runtime_->schedule().stats()) {
       auto [it, fresh] = system_ms_.try_emplace(s.name, s.last_ms);
       if (!fresh) it->second = 0.9 * it->second + 0.1 * s.last_ms;
+      system_history_.add(s.name, t, s.last_ms);
     }
+    for (const TraceSpan& span : runtime_->take_trace())
+      if (span.track == TraceTrack::gpu && span.fragments >= 0)
+        fragment_history_.add(span.name, t, double(span.fragments));
+    system_history_.trim(t);
+    fragment_history_.trim(t);
   }
 
-  std::vector<OverlayLine> overlay() {
+  OverlayInfo status_info() {
     OverlayInfo info;
-    info.scene = o_.scene;
+    info.scene = document_.path();
     info.fps = shown_fps_;
     info.frame_ms = shown_frame_ms_;
     info.frame = runtime_->frame();
@@ -355,53 +496,96 @@ class Viewer {
     info.paused = settings_.paused;
     info.error = reloader_.showing_error() ? reloader_.error() : notice_;
     info.help = settings_.help;
-    const int columns = std::max(window_.framebuffer_width() / text_.cell_width() - 2, 8);
-    return overlay_lines(info, columns);
+    return info;
   }
 
-  // The runtime's output, letterboxed into the window, then the overlay (both as bytes).
+  // The panels: status (rates, modes, a failed reload's message, the keys), inspector, profiler
+  // and stereo. What they ask for is applied at the start of the next frame.
+  void draw_panels() {
+    draw_status_panel(overlay_lines(status_info(), 400));
+    InspectorStatus status = inspector_status_;
+    status.file = document_.path();
+    status.modified = document_.modified();
+    status.can_undo = document_.can_undo();
+    status.can_redo = document_.can_redo();
+    requests_.push_back(inspector_.draw(document_.tree(), scene_keys(), status));
+    StereoRequest stereo = draw_stereo_panel(settings_.stereo, document_.tree());
+    requests_.push_back(std::move(stereo.keys));
+    if (stereo.mode) {
+      const ViewerSettings previous = settings_;
+      settings_.stereo = *stereo.mode;
+      pending_rebuild_ = previous;
+    }
+    if (draw_profiler_panel(profiler_view()).toggle_gpu_profiling) {
+      gpu_profiling_ = !gpu_profiling_;
+      pending_rebuild_ = settings_;
+    }
+  }
+
+  ProfilerView profiler_view() {
+    ProfilerView v;
+    v.fps = shown_fps_;
+    v.frame_ms = shown_frame_ms_;
+    v.frame = runtime_->frame();
+    v.drawn = drawn_particles(runtime_->world());
+    v.census = count_particles(runtime_->world());
+    v.systems = &system_history_;
+    v.fragments = &fragment_history_;
+    v.asset_counters = asset_counters();
+    v.gpu_profiling = gpu_profiling_;
+    return v;
+  }
+
+  // The runtime's output, letterboxed into the window, then the panels.
   void present() {
     window_.make_current();
     const int ww = window_.framebuffer_width(), wh = window_.framebuffer_height();
-    const SrgbWritesOff bytes;
-    present_letterboxed(runtime_->output_target(), ww, wh);
+    {
+      const SrgbWritesOff bytes;
+      present_letterboxed(runtime_->output_target(), ww, wh);
+    }
     if (!settings_.overlay) return;
-    // The text is laid out again only when something in it changed (four times a second for
-    // the rates, or after a key or a reload), so a steady overlay costs one draw call.
-    if (overlay_stale_ || ww != overlay_width_) text_.set_lines(overlay());
-    overlay_stale_ = false;
-    overlay_width_ = ww;
-    text_.draw(ww, wh);
+    gui_.begin_frame();
+    draw_panels();
+    gui_.render();
   }
 
-  void save_screenshot() {
+  void save_screenshot(const std::string& file) {
     const int w = window_.framebuffer_width(), h = window_.framebuffer_height();
-    write_png(o_.screenshot, w, h, 3, read_window_rgb(w, h));  // atomically (engine/io/png_file.h)
+    write_png(file, w, h, 3, read_window_rgb(w, h));  // atomically (engine/io/png_file.h)
   }
 
   const ViewerOptions& o_;
   SceneDescription scene_;
   gpu::WindowContext window_;
-  TextRenderer text_;
+  ViewerGui gui_;
   ViewController controller_;
   SceneReloader reloader_;
+  SceneDocument document_;  // the file as the inspector edits it
+  SceneAssetCache assets_;  // volumes and flipbooks kept across the runtimes the edits make
   ViewerSettings settings_;
   bool layer_scale_chosen_ = false;  // by --layer-scale or the L key
+  bool gpu_profiling_ = false;       // the profiler panel's GPU passes
   std::unique_ptr<SceneRuntime> runtime_;
   std::optional<QualityPick> quality_;  // the pick runtime_ runs with (scene key quality.max_rmse)
+  InspectorPanel inspector_;
+  InspectorStatus inspector_status_;
+  std::vector<InspectorRequest> requests_;
+  std::optional<ViewerSettings> pending_rebuild_;  // the settings before a panel changed them
   std::map<std::string, double> system_ms_;
+  FrameTimeHistory system_history_, fragment_history_;
   std::string notice_;  // a render-setting change the runtime refused
   uint64_t frame_ = 0;
+  uint64_t edits_applied_ = 0;
   uint64_t overlay_frame_mark_ = 0;
   double shown_fps_ = 0, shown_frame_ms_ = 0;
   double runtime_seconds_ = 0, window_seconds_ = 0;
+  const Clock::time_point started_ = Clock::now();
   Clock::time_point previous_frame_ = Clock::now();
   Clock::time_point last_overlay_refresh_{};
   bool camera_moved_ = false, camera_dirty_ = false;
   bool reload_requested_ = false, quit_ = false;
-  bool overlay_stale_ = true;
   bool needs_redraw_ = true;  // paused frames draw only after a change
-  int overlay_width_ = 0;
 };
 
 }  // namespace

@@ -29,23 +29,45 @@ struct ViewerPress {
   int key = 0;
 };
 
+// At `frame`, the value at `pointer` is set through the scene document, as the inspector sets it.
+struct ViewerSet {
+  uint64_t frame = 0;
+  std::string pointer;
+  nlohmann::json value;
+};
+
+// At `frame`, the window's image is written to `file` (PNG).
+struct ViewerScreenshot {
+  uint64_t frame = 0;
+  std::string file;
+};
+
 struct ViewerOptions {
   std::string scene;           // the file shown and watched
   int width = 0, height = 0;   // view size; 0: the scene's
   int frames = 0;              // 0: until the window is closed
   std::string screenshot;      // PNG of the window after the last frame (or when closed)
-  bool overlay = true;
+  bool overlay = true;         // the panels (status, inspector, profiler, stereo)
+  std::string inspect;         // a JSON pointer the inspector opens at, e.g. "/clouds/0"
   RuntimeOptions runtime;      // stereo mode, billboards, layer scale: the keys change them later
   std::vector<ViewerEdit> edits;
   std::vector<ViewerPress> presses;
+  // Scripted authoring (tests, automation): sets, then undos, at their frames, before the frame's
+  // step; a set or undo the document refuses ends the session with the loader's message (a
+  // UserError) and nothing saved. After the last frame the document is saved to `save_as`.
+  std::vector<ViewerSet> sets;
+  std::vector<uint64_t> undos;
+  std::vector<ViewerScreenshot> screenshots;
+  std::string save_as;
   NoteSink on_note;            // reloads, good and failed
 };
 
 // Opens the window (GpuError when there is no display or no OpenGL 4.5 context), shows `scene`
 // until the window closes, Esc, or options.frames frames, and returns the summary: frames, fps,
-// milliseconds per frame (runtime and window parts), the settings at the end, the reloads, and
-// the quality pick it runs with (a scene with quality.max_rmse, opened as every command opens
-// it: systems/open_scene/open_scene.h).
+// milliseconds per frame (runtime and window parts), the settings at the end, the reloads, the
+// edits applied, what the assets cost (files read or reused, flipbooks baked), and the quality
+// pick it runs with (a scene with quality.max_rmse, opened as every command opens it:
+// systems/open_scene/open_scene.h).
 nlohmann::json run_viewer(const ViewerOptions& options, SceneDescription scene);
 
 }  // namespace pyro

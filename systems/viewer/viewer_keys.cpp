@@ -13,8 +13,21 @@ const std::vector<StereoMode>& stereo_modes_by_key() {
   return modes;
 }
 
+namespace {
+
+std::optional<ViewerAction> action_for_control_key(int key, int mods) {
+  const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
+  if (key == GLFW_KEY_Z) return ViewerAction{shift ? ViewerCommand::redo : ViewerCommand::undo};
+  if (key == GLFW_KEY_Y && !shift) return ViewerAction{ViewerCommand::redo};
+  if (key == GLFW_KEY_S && !shift) return ViewerAction{ViewerCommand::save};
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<ViewerAction> action_for_key(int key, int mods) {
-  if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) return std::nullopt;
+  if (mods & (GLFW_MOD_ALT | GLFW_MOD_SUPER)) return std::nullopt;
+  if (mods & GLFW_MOD_CONTROL) return action_for_control_key(key, mods);
   if (key >= GLFW_KEY_1 && key <= GLFW_KEY_7)
     return ViewerAction{ViewerCommand::set_stereo, stereo_modes_by_key()[size_t(key - GLFW_KEY_1)]};
   switch (key) {
@@ -63,12 +76,13 @@ std::vector<std::string> key_help_lines() {
           "B      BILLBOARDS VIEWPLANE <-> VIEWPOINT",
           "L      LAYER SCALE 1, 1/2, 1/4, 1/8",
           "SPACE  PAUSE, N SINGLE STEP",
-          "R      RELOAD, O OVERLAY, H HELP, ESC QUIT"};
+          "CTRL+Z UNDO, CTRL+Y REDO, CTRL+S SAVE (THE INSPECTOR'S EDITS)",
+          "R      RELOAD, O PANELS, H HELP, ESC QUIT"};
 }
 
 std::string key_help_title() {
   return "drag/wheel/WASDQE camera, Tab orbit/fly, 1-7 stereo, B billboards, L layer, "
-         "Space pause, N step, R reload, O overlay, H help, Esc quit";
+         "Space pause, N step, Ctrl+Z/Y/S undo/redo/save, R reload, O panels, H help, Esc quit";
 }
 
 }  // namespace pyro

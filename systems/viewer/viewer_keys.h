@@ -22,6 +22,9 @@ enum class ViewerCommand {
   reload,              // R: load the scene file again now
   toggle_overlay,      // O
   toggle_help,         // H
+  undo,                // Ctrl+Z: the inspector's last edit
+  redo,                // Ctrl+Y or Ctrl+Shift+Z
+  save,                // Ctrl+S: the edited scene over its file
 };
 
 struct ViewerAction {
@@ -35,7 +38,7 @@ struct ViewerAction {
 const std::vector<StereoMode>& stereo_modes_by_key();
 
 // The action of a key press (GLFW_KEY_* and GLFW_MOD_*), or none for keys without one
-// (the fly keys act while held, not on presses).
+// (the fly keys act while held, not on presses). With Ctrl: Z, Y and S only.
 std::optional<ViewerAction> action_for_key(int key, int mods);
 
 // A key by the name the README and --press-at use: "1".."7", "B", "L", "N", "R", "O", "H",

@@ -52,6 +52,9 @@ ViewerEffect apply_action(ViewerSettings& s, const ViewerAction& a) {
     case ViewerCommand::reload: e.reload_scene = true; break;
     case ViewerCommand::toggle_overlay: s.overlay = !s.overlay; break;
     case ViewerCommand::toggle_help: s.help = !s.help; break;
+    case ViewerCommand::undo: e.undo = true; break;
+    case ViewerCommand::redo: e.redo = true; break;
+    case ViewerCommand::save: e.save = true; break;
   }
   return e;
 }

@@ -26,6 +26,7 @@ struct ViewerEffect {
   bool reload_scene = false;
   bool quit = false;
   bool toggle_camera_mode = false;
+  bool undo = false, redo = false, save = false;  // the scene document's (the inspector's edits)
 };
 
 // 1 -> 1/2 -> 1/4 -> 1/8 -> 1; any other value goes to 1.

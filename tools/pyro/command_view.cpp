@@ -1,5 +1,8 @@
 // pyro view SCENE [--width W] [--height H] [--frames N] [--screenshot FILE] [--no-overlay]
-//                 [--replace-at FRAME:FILE ...] [--press-at FRAME:KEY ...] [--json] [render options]
+//                 [--replace-at FRAME:FILE ...] [--press-at FRAME:KEY ...]
+//                 [--set-at FRAME:/POINTER=VALUE ...] [--undo-at FRAME ...]
+//                 [--screenshot-at FRAME:FILE ...] [--save-as FILE] [--inspect POINTER] [--json]
+//                 [render options]
 //
 // Parses the options and the scripted edits and presses, then runs the viewer
 // (systems/viewer/viewer.h) and prints its summary.
@@ -34,6 +37,11 @@ struct ViewArgs {
   bool json = false;
   std::vector<std::string> replace_at;
   std::vector<std::string> press_at;
+  std::vector<std::string> set_at;
+  std::vector<std::string> undo_at;
+  std::vector<std::string> screenshot_at;
+  std::string save_as;
+  std::string inspect;
   RuntimeOptions runtime;
 };
 
@@ -76,14 +84,53 @@ std::vector<ViewerPress> parse_presses(const std::vector<std::string>& specs) {
   return presses;
 }
 
-void check_screenshot_path(const std::string& path) {
+void check_output_path(const std::string& path, const char* option, const char* kind) {
   namespace fs = std::filesystem;
   const fs::path parent = fs::path(path).parent_path();
   std::error_code ec;
   if (!parent.empty() && !fs::is_directory(parent, ec))
-    throw UserError(path, "--screenshot", "expected a PNG path in an existing folder");
+    throw UserError(path, option, std::string("expected a ") + kind + " path in an existing folder");
   if (fs::is_directory(path, ec))
-    throw UserError(path, "--screenshot", "expected a PNG file name, found a folder");
+    throw UserError(path, option, std::string("expected a ") + kind + " file name, found a folder");
+}
+
+// FRAME:/POINTER=VALUE. VALUE is JSON (3, [0, 1, 0], "text", true); a bare word that is not JSON
+// is taken as a string, so that a choice needs no shell quoting (/render/particles=spherical).
+std::vector<ViewerSet> parse_sets(const std::vector<std::string>& specs) {
+  std::vector<ViewerSet> sets;
+  for (const std::string& spec : specs) {
+    std::string rest;
+    const uint64_t frame = parse_frame_prefix(spec, "--set-at", "/POINTER=VALUE, e.g. 10:/clouds/0/density=0.6", rest);
+    const size_t eq = rest.find('=');
+    if (rest.empty() || rest[0] != '/' || eq == std::string::npos || eq + 1 >= rest.size())
+      throw UserError(spec, "--set-at", "expected FRAME:/POINTER=VALUE, e.g. 10:/clouds/0/density=0.6");
+    const std::string text = rest.substr(eq + 1);
+    nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+    if (value.is_discarded()) value = text;
+    sets.push_back({frame, rest.substr(0, eq), std::move(value)});
+  }
+  return sets;
+}
+
+std::vector<uint64_t> parse_undos(const std::vector<std::string>& specs) {
+  std::vector<uint64_t> frames;
+  for (const std::string& spec : specs) {
+    if (spec.empty() || spec.size() > 9 || spec.find_first_not_of("0123456789") != std::string::npos)
+      throw UserError(spec, "--undo-at", "expected a frame number, e.g. 12");
+    frames.push_back(std::stoull(spec));
+  }
+  return frames;
+}
+
+std::vector<ViewerScreenshot> parse_screenshots(const std::vector<std::string>& specs) {
+  std::vector<ViewerScreenshot> shots;
+  for (const std::string& spec : specs) {
+    std::string file;
+    const uint64_t frame = parse_frame_prefix(spec, "--screenshot-at", "FILE, e.g. 30:shot.png", file);
+    check_output_path(file, "--screenshot-at", "PNG");
+    shots.push_back({frame, file});
+  }
+  return shots;
 }
 
 void print_view_note(const std::string& note) { std::fprintf(stderr, "pyro view: %s\n", note.c_str()); }
@@ -93,7 +140,15 @@ void run_view(const ViewArgs& a) {
   ViewerOptions options;
   options.edits = parse_edits(a.replace_at);
   options.presses = parse_presses(a.press_at);
-  if (!a.screenshot.empty()) check_screenshot_path(a.screenshot);
+  options.sets = parse_sets(a.set_at);
+  options.undos = parse_undos(a.undo_at);
+  options.screenshots = parse_screenshots(a.screenshot_at);
+  if (!a.screenshot.empty()) check_output_path(a.screenshot, "--screenshot", "PNG");
+  if (!a.save_as.empty()) check_output_path(a.save_as, "--save-as", "scene");
+  options.save_as = a.save_as;
+  if (!a.inspect.empty() && a.inspect[0] != '/')
+    throw UserError(a.inspect, "--inspect", "expected a JSON pointer, e.g. /clouds/0");
+  options.inspect = a.inspect;
   options.scene = a.scene;
   options.width = a.width;
   options.height = a.height;
@@ -129,13 +184,25 @@ void add_view_command(CLI::App& app) {
       ->check(CLI::Range(0, 100000000));
   cmd->add_option("--screenshot", args->screenshot,
                   "Save the window's image as PNG after the last frame (or when closed)");
-  cmd->add_flag("--no-overlay", args->no_overlay, "Start with the overlay hidden (O shows it)");
+  cmd->add_flag("--no-overlay", args->no_overlay, "Start with the panels hidden: status, inspector, profiler, stereo (O shows them)");
   cmd->add_option("--replace-at", args->replace_at,
                   "FRAME:FILE: at that frame, write FILE's content over the scene file (as an "
                   "editor would; the hot reload picks it up). Repeatable; for tests and demos");
   cmd->add_option("--press-at", args->press_at,
                   "FRAME:KEY: press KEY (1-7, B, L, N, R, O, H, SPACE, TAB, ESC) at that frame. "
                   "Repeatable; for tests and demos");
+  cmd->add_option("--inspect", args->inspect,
+                  "POINTER: open the inspector at this entity or key, e.g. /clouds/0");
+  cmd->add_option("--set-at", args->set_at,
+                  "FRAME:/POINTER=VALUE: at that frame, set the scene's value at the JSON pointer, as "
+                  "the inspector does (VALUE is JSON; a bare word is a string). Repeatable; a value "
+                  "the loader refuses ends the session with its message and nothing saved");
+  cmd->add_option("--undo-at", args->undo_at, "FRAME: undo the last edit at that frame. Repeatable");
+  cmd->add_option("--screenshot-at", args->screenshot_at,
+                  "FRAME:FILE: save the window's image as PNG at that frame. Repeatable");
+  cmd->add_option("--save-as", args->save_as,
+                  "Save the edited scene to FILE after the last frame (atomically; keys keep their "
+                  "order and untouched values their text)");
   cmd->add_flag("--json", args->json, "Print a JSON summary as the last line");
   add_render_options(cmd, args->runtime);
   cmd->callback([args] { run_view(*args); });

@@ -43,6 +43,24 @@ TEST(ViewerKeys, FlyKeysAndModifiedKeysHaveNoPressAction) {
   EXPECT_TRUE(action_for_key(GLFW_KEY_R, GLFW_MOD_SHIFT));
 }
 
+TEST(ViewerKeys, ControlKeysUndoRedoAndSaveTheInspectorsEdits) {
+  EXPECT_EQ(action_for_key(GLFW_KEY_Z, GLFW_MOD_CONTROL), ViewerAction{ViewerCommand::undo});
+  EXPECT_EQ(action_for_key(GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT), ViewerAction{ViewerCommand::redo});
+  EXPECT_EQ(action_for_key(GLFW_KEY_Y, GLFW_MOD_CONTROL), ViewerAction{ViewerCommand::redo});
+  EXPECT_EQ(action_for_key(GLFW_KEY_S, GLFW_MOD_CONTROL), ViewerAction{ViewerCommand::save});
+  EXPECT_FALSE(action_for_key(GLFW_KEY_Z, 0));  // Z alone does nothing
+  EXPECT_FALSE(action_for_key(GLFW_KEY_S, GLFW_MOD_CONTROL | GLFW_MOD_ALT));
+  ViewerSettings settings;
+  const ViewerSettings before = settings;
+  const ViewerEffect undo = apply_action(settings, ViewerAction{ViewerCommand::undo});
+  EXPECT_TRUE(undo.undo);
+  EXPECT_FALSE(undo.redo || undo.save || undo.rebuild_runtime || undo.reload_scene);
+  EXPECT_TRUE(apply_action(settings, ViewerAction{ViewerCommand::redo}).redo);
+  EXPECT_TRUE(apply_action(settings, ViewerAction{ViewerCommand::save}).save);
+  EXPECT_EQ(settings.paused, before.paused);  // the document's actions change no view setting
+  EXPECT_EQ(settings.stereo, before.stereo);
+}
+
 TEST(ViewerKeys, KeyNamesForScriptedPresses) {
   EXPECT_EQ(key_from_name("1"), GLFW_KEY_1);
   EXPECT_EQ(key_from_name("7"), GLFW_KEY_7);

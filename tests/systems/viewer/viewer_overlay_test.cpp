@@ -5,7 +5,6 @@
 
 #include <sstream>
 
-#include "systems/viewer/viewer_font.h"
 #include "systems/viewer/viewer_keys.h"
 
 namespace pyro {
