@@ -101,7 +101,7 @@ ObjectReader ObjectReader::nested(const json& v, std::string_view key, Parameter
 
 const json* ObjectReader::find(std::string_view key) {
   if (table_ != nullptr) table_->key(key);  // throws for a key the table does not declare
-  known_.push_back(key);
+  if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.push_back(key);
   const auto it = object_.find(key);
   return it == object_.end() ? nullptr : &*it;
 }

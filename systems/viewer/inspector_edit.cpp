@@ -44,7 +44,7 @@ InspectorEdit edit_creating_parents(const nlohmann::json& tree, const std::vecto
   size_t keep = tokens.empty() ? 0 : tokens.size() - 1;
   if (depth < keep) {
     bool all_keys = true;
-    for (size_t i = depth + 1; i < tokens.size(); ++i) all_keys = all_keys && !is_index(tokens[i]);
+    for (size_t i = depth; i < tokens.size(); ++i) all_keys = all_keys && !is_index(tokens[i]);
     if (all_keys) {
       for (size_t i = tokens.size() - 1; i > depth; --i) value = nlohmann::json{{tokens[i], std::move(value)}};
       keep = depth;

@@ -83,7 +83,7 @@ TEST(ViewerOverlay, AReloadErrorIsShownWrappedInTheErrorColour) {
             "expected a number > 0, found -30 ");
 }
 
-TEST(ViewerOverlay, HelpListsTheKeysAndEveryCharacterHasAGlyph) {
+TEST(ViewerOverlay, HelpListsEveryKey) {
   OverlayInfo i = sample();
   i.help = true;
   const auto lines = overlay_lines(i, 100);
@@ -92,8 +92,6 @@ TEST(ViewerOverlay, HelpListsTheKeysAndEveryCharacterHasAGlyph) {
   for (const OverlayLine& l : lines)
     for (const std::string& k : keys) found += l.text == k;
   EXPECT_EQ(found, keys.size());
-  for (const OverlayLine& l : lines)
-    for (char c : l.text) EXPECT_TRUE(is_drawable(c)) << "'" << c << "' in " << l.text;
 }
 
 }  // namespace
