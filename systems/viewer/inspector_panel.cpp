@@ -101,7 +101,8 @@ void vec3_widget(const ParameterKey& key, const KeyPlace& k, const char* label, 
 void choice_widget(const ParameterKey& key, const KeyPlace& k, const char* label) {
   const json& v = shown_value(key, k.value);
   const std::string current = v.is_string() ? v.get<std::string>() : "";
-  if (!ImGui::BeginCombo(label, current.c_str())) return;
+  // A choice without a default that the file leaves out (its description says what applies).
+  if (!ImGui::BeginCombo(label, current.empty() ? "(not set)" : current.c_str())) return;
   for (std::string_view choice : key.choices) {
     const std::string name(choice);
     if (ImGui::Selectable(name.c_str(), name == current) && name != current) ask(k, name, false);

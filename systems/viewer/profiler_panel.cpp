@@ -36,8 +36,9 @@ ProfilerRequest draw_profiler_panel(const ProfilerView& v) {
   ProfilerRequest request;
   const float s = ImGui::GetIO().FontGlobalScale;
   ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 368 * s, 8 * s), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360 * s, 420 * s), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360 * s, 300 * s), ImGuiCond_FirstUseEver);
   if (ImGui::Begin("Profiler")) {
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.0f);  // room for the longest system name
     ImGui::Text("%.1f fps, %.2f ms per frame, frame %llu", v.fps, v.frame_ms, (unsigned long long)v.frame);
     particle_table(v);
     if (ImGui::CollapsingHeader("systems, ms", ImGuiTreeNodeFlags_DefaultOpen) && v.systems)
@@ -50,6 +51,7 @@ ProfilerRequest draw_profiler_panel(const ProfilerView& v) {
       for (const auto& [name, count] : v.asset_counters)
         ImGui::Text("%s: %llu", name.c_str(), (unsigned long long)count);
     }
+    ImGui::PopItemWidth();
   }
   ImGui::End();
   return request;
