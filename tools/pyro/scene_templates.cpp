@@ -24,7 +24,7 @@ struct AssetPathKey {
   const char* array;
   const char* key;
 };
-constexpr AssetPathKey kAssetPathKeys[] = {{"volumes", "file"}, {"volumes", "fallback"}, {"fires", "flipbook"}};
+constexpr AssetPathKey kAssetPathKeys[] = {{"volumes", "file"}, {"volumes", "fallback"}, {"fires", "flipbook"}, {"meshes", "file"}};
 
 json parse_template(const std::string& path, const std::string& text) {
   try {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -125,11 +126,23 @@ double mean_particle_height(SceneRuntime& runtime, float& lowest) {
   return count == 0 ? 0.0 : sum / static_cast<double>(count);
 }
 
-// The plume rises out of the chimney top (y = 3): nothing sinks below it, and its mean height
-// grows over the first frames (the prewarm is shorter than the particles' lifetime).
+// The emitter sits on the top of a chimney primitive (a cylinder standing on the ground whose
+// top disc holds the emitter's disc); the plume rises out of it (y = 3): nothing sinks below it,
+// and its mean height grows over the first frames (the prewarm is shorter than the lifetime).
 TEST(PyroNew, TheSmokeTemplatesPlumeRisesFromTheChimneyTop) {
   const fs::path file = test::scratch_dir("pyro_new_smoke") / "smoke.json";
   ASSERT_EQ(test::run_pyro({"new", file.string(), "--template", "smoke"}).exit_code, 0);
+  const SceneDescription scene = load_scene(file.string());
+  const auto chimney = std::find_if(scene.meshes.begin(), scene.meshes.end(),
+                                    [](const MeshDescription& m) { return m.kind == MeshKind::cylinder; });
+  ASSERT_NE(chimney, scene.meshes.end()) << "the smoke template has no chimney";
+  const nlohmann::json emitter_shape = nlohmann::json::parse(test::read_bytes(file))["emitters"][0]["shape"];
+  const std::vector<float> at = emitter_shape["position"].get<std::vector<float>>();
+  EXPECT_FLOAT_EQ(chimney->position.y, 0.0f);  // standing on the ground
+  EXPECT_NEAR(chimney->position.y + chimney->height * chimney->scale, at[1], 1e-5f);
+  EXPECT_NEAR(std::hypot(chimney->position.x - at[0], chimney->position.z - at[2]) +
+                  emitter_shape["radius"].get<float>(),
+              0.0f, chimney->radius * chimney->scale);
   OpenSceneOptions options;
   options.runtime.readback = false;
   OpenedScene opened = open_scene(file.string(), options);
