@@ -85,25 +85,25 @@ void SceneDocument::set(const std::string& pointer, const nlohmann::json& value,
 
 void SceneDocument::undo() {
   if (undo_.empty()) throw std::logic_error("SceneDocument::undo: nothing to undo");
-  const Change& change = undo_.back();
-  std::string text = apply(text_, change.offset, change.inserted, change.removed);
-  Loaded loaded = load(text, path_);
-  become(std::move(text), std::move(loaded));
-  last_changed_ = {change.pointer};
-  redo_.push_back(std::move(undo_.back()));
-  undo_.pop_back();
-  coalescing_ = false;
+  step(undo_, redo_, /*forward=*/false);
 }
 
 void SceneDocument::redo() {
   if (redo_.empty()) throw std::logic_error("SceneDocument::redo: nothing to redo");
-  const Change& change = redo_.back();
-  std::string text = apply(text_, change.offset, change.removed, change.inserted);
+  step(redo_, undo_, /*forward=*/true);
+}
+
+// Applies from.back() backward (undo: `inserted` back to `removed`) or forward (redo), then moves
+// it onto `to`; a text the loader refuses throws before anything changes.
+void SceneDocument::step(std::vector<Change>& from, std::vector<Change>& to, bool forward) {
+  const Change& change = from.back();
+  std::string text = forward ? apply(text_, change.offset, change.removed, change.inserted)
+                             : apply(text_, change.offset, change.inserted, change.removed);
   Loaded loaded = load(text, path_);
   become(std::move(text), std::move(loaded));
   last_changed_ = {change.pointer};
-  undo_.push_back(std::move(redo_.back()));
-  redo_.pop_back();
+  to.push_back(std::move(from.back()));
+  from.pop_back();
   coalescing_ = false;
 }
 

@@ -83,6 +83,7 @@ class SceneDocument {
   static std::string apply(const std::string& text, std::size_t offset, const std::string& removed,
                            const std::string& inserted);
   void become(std::string text, Loaded loaded);
+  void step(std::vector<Change>& from, std::vector<Change>& to, bool forward);
 
   std::string path_, text_, saved_text_;
   nlohmann::json tree_;

@@ -28,6 +28,7 @@
 #include "systems/scene/scene_keys.h"
 #include "systems/scene/scene_loader.h"
 #include "tests/support/file_bytes.h"
+#include "tests/support/schema_validator.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -48,24 +49,9 @@ std::vector<fs::path> shipped_scenes() {
   return scenes;
 }
 
-// The verdict of Python's jsonschema on each file: "valid" or "invalid <pointer>: <message>".
+// The verdict of Python's jsonschema on each file against the shipped schema.
 std::vector<std::string> schema_verdicts(const std::vector<fs::path>& files) {
-  std::string command = "/usr/bin/python3 '" + (kSource / "tests/tools/validate_json.py").string() +
-                        "' '" + (kSource / "content/scene.schema.json").string() + "'";
-  for (const fs::path& f : files) command += " '" + f.string() + "'";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(::popen(command.c_str(), "r"), ::pclose);
-  if (!pipe) throw std::runtime_error("cannot run " + command);
-  std::vector<std::string> verdicts;
-  char line[4096];
-  while (std::fgets(line, sizeof line, pipe.get()) != nullptr) {
-    std::string s = line;
-    if (!s.empty() && s.back() == '\n') s.pop_back();
-    verdicts.push_back(s);
-  }
-  if (verdicts.size() != files.size())
-    throw std::runtime_error("the validator answered " + std::to_string(verdicts.size()) + " of " +
-                             std::to_string(files.size()) + " files (is python3-jsonschema installed?)");
-  return verdicts;
+  return test::jsonschema_verdicts(kSource / "content/scene.schema.json", files);
 }
 
 // The loader's verdict: empty when it accepts, else the place of its refusal and the message.

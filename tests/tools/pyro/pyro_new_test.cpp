@@ -25,6 +25,7 @@
 #include "systems/open_scene/open_scene.h"
 #include "systems/scene/scene_loader.h"
 #include "tests/support/file_bytes.h"
+#include "tests/support/schema_validator.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -34,24 +35,6 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 const std::vector<std::string> kNewTemplateNames = {"campfire", "clouds", "explosion", "fog", "smoke", "vdb"};
-
-// Python's jsonschema verdict ("valid" or "invalid POINTER: MESSAGE") on each file.
-std::vector<std::string> new_template_schema_verdicts(const fs::path& schema, const std::vector<fs::path>& files) {
-  std::string command = "/usr/bin/python3 " +
-                        test::shell_quote((fs::path(PYRO_SOURCE_DIR) / "tests/tools/validate_json.py").string()) +
-                        " " + test::shell_quote(schema.string());
-  for (const fs::path& f : files) command += " " + test::shell_quote(f.string());
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(::popen(command.c_str(), "r"), ::pclose);
-  if (!pipe) throw std::runtime_error("cannot run " + command);
-  std::vector<std::string> verdicts;
-  char line[4096];
-  while (std::fgets(line, sizeof line, pipe.get()) != nullptr) {
-    std::string s = line;
-    if (!s.empty() && s.back() == '\n') s.pop_back();
-    verdicts.push_back(s);
-  }
-  return verdicts;
-}
 
 // The fraction of pixels further than 8 levels (any channel) from the background's own pixel.
 double fraction_unlike_background(const PngImage& image, const json& background) {
@@ -96,7 +79,7 @@ TEST(PyroNew, EveryTemplateLoadsValidatesAndRendersWhereItIsWritten) {
   const json vdb = json::parse(test::read_bytes(folder / "vdb.json"));
   EXPECT_TRUE(fs::equivalent(folder / vdb["volumes"][0]["file"].get<std::string>(),
                              fs::path(content_dir()) / "volumes" / "sample_cloud.vdb"));
-  const std::vector<std::string> verdicts = new_template_schema_verdicts(schema, files);
+  const std::vector<std::string> verdicts = test::jsonschema_verdicts(schema, files);
   ASSERT_EQ(verdicts.size(), files.size()) << "is python3-jsonschema installed?";
   for (std::size_t i = 0; i < files.size(); ++i) {
     EXPECT_EQ(verdicts[i], "valid") << files[i];
