@@ -48,6 +48,12 @@ void read_entries(const std::string& file, std::map<std::string, std::string>& o
 
 }  // namespace
 
+std::string file_version_key(const std::string& path) {
+  struct stat s {};
+  if (::stat(path.c_str(), &s) != 0) return "missing";
+  return stat_key(s);
+}
+
 std::string file_sha256(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) throw IoError(path, "open to compute its content digest", errno);

@@ -38,6 +38,11 @@ class DigestCache {
   int computed_ = 0;
 };
 
+// What identifies one version of a file without reading it: its device, inode, size and
+// modification time in nanoseconds (a file replaced or rewritten gets another); "missing" when
+// it cannot be stat'ed.
+std::string file_version_key(const std::string& path);
+
 // SHA-256 of a file's bytes, read in blocks (no cache). Throws IoError.
 std::string file_sha256(const std::string& path);
 

@@ -159,20 +159,7 @@ JsonTextSpan root_span(std::string_view t) {
 
 // RFC 6901 pointer text of the first `n` tokens.
 std::string pointer_text(const std::vector<std::string>& tokens, std::size_t n) {
-  std::string p;
-  for (std::size_t i = 0; i < n; ++i) {
-    p += '/';
-    for (const char c : tokens[i]) {
-      if (c == '~') {
-        p += "~0";
-      } else if (c == '/') {
-        p += "~1";
-      } else {
-        p += c;
-      }
-    }
-  }
-  return p;
+  return json_pointer_text(std::vector<std::string>(tokens.begin(), tokens.begin() + std::ptrdiff_t(n)));
 }
 
 std::string kind_of(const json& v) {
@@ -288,6 +275,23 @@ std::optional<std::vector<std::string>> split_json_pointer(std::string_view poin
     }
   }
   return tokens;
+}
+
+std::string json_pointer_text(const std::vector<std::string>& tokens) {
+  std::string p;
+  for (const std::string& token : tokens) {
+    p += '/';
+    for (const char c : token) {
+      if (c == '~') {
+        p += "~0";
+      } else if (c == '/') {
+        p += "~1";
+      } else {
+        p += c;
+      }
+    }
+  }
+  return p;
 }
 
 std::optional<JsonTextSpan> find_json_value(std::string_view text, std::string_view pointer) {

@@ -22,6 +22,9 @@ struct JsonTextSpan {
 // nullopt when it is not one (no leading "/", a "~" not followed by 0 or 1).
 std::optional<std::vector<std::string>> split_json_pointer(std::string_view pointer);
 
+// The RFC 6901 pointer of `tokens` ({"a", "b/c~"} -> "/a/b~1c~0"): split_json_pointer's inverse.
+std::string json_pointer_text(const std::vector<std::string>& tokens);
+
 // The span of the value at `pointer` in `text` (which must be valid JSON), without the
 // whitespace around it; nullopt when there is no value there.
 std::optional<JsonTextSpan> find_json_value(std::string_view text, std::string_view pointer);

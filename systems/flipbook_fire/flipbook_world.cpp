@@ -10,7 +10,14 @@
 
 namespace pyro {
 
-FlipbookAssets load_flipbooks(const std::vector<FlipbookFire>& fires) {
+FlipbookFrames read_prepared_flipbook(const FlipbookFire& fire) {
+  FlipbookFrames frames = read_flipbook_folder(fire.flipbook);
+  prepare_flipbook(frames, fire.preparation);
+  return frames;
+}
+
+FlipbookAssets load_flipbooks(const std::vector<FlipbookFire>& fires,
+                              const std::function<FlipbookFrames(const FlipbookFire&)>& prepared) {
   using Key = std::tuple<std::string, float, float, float, float, float, float>;
   std::map<Key, size_t> loaded;  // -> index into assets.frames
   FlipbookAssets assets;
@@ -21,9 +28,7 @@ FlipbookAssets load_flipbooks(const std::vector<FlipbookFire>& fires) {
     const Key key{fire.flipbook, p.crop.x, p.crop.y, p.crop.z, p.crop.w, p.base_line, p.soften};
     auto it = loaded.find(key);
     if (it == loaded.end()) {
-      FlipbookFrames frames = read_flipbook_folder(fire.flipbook);
-      prepare_flipbook(frames, p);
-      assets.frames.push_back(std::move(frames));
+      assets.frames.push_back(prepared(fire));
       it = loaded.emplace(key, assets.frames.size() - 1).first;
     }
     assets.fire_frames.push_back(it->second);

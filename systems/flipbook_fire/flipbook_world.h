@@ -6,6 +6,7 @@
 // the FlipbookRenderer resource (made on first use) and makes one entity per fire with its
 // billboards expanded (flipbook_layout.h). A bad folder or frame throws UserError naming it.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "components/flipbook_fire.h"
@@ -19,8 +20,14 @@ struct FlipbookAssets {
   std::vector<size_t> fire_frames;     // per fire: its index into `frames`
 };
 
-// Every fire's `flipbook` must name a folder (not be empty).
-FlipbookAssets load_flipbooks(const std::vector<FlipbookFire>& fires);
+// A fire's frames, read from its folder and prepared.
+FlipbookFrames read_prepared_flipbook(const FlipbookFire& fire);
+
+// Every fire's `flipbook` must name a folder (not be empty). `prepared` gives the frames of a
+// fire whose folder and preparation no earlier fire had (read_prepared_flipbook, or a cache).
+FlipbookAssets load_flipbooks(const std::vector<FlipbookFire>& fires,
+                              const std::function<FlipbookFrames(const FlipbookFire&)>& prepared =
+                                  read_prepared_flipbook);
 
 void add_flipbook_fires(ecs::World& world, const std::vector<FlipbookFire>& fires,
                         const FlipbookAssets& assets);

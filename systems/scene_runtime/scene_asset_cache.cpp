@@ -1,7 +1,5 @@
 #include "systems/scene_runtime/scene_asset_cache.h"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
@@ -9,7 +7,7 @@
 #include <system_error>
 #include <utility>
 
-#include "systems/flipbook_fire/flipbook_folder.h"
+#include "engine/io/content_digest.h"
 
 namespace pyro {
 namespace {
@@ -40,16 +38,6 @@ class KeyText {
   std::string text_;
 };
 
-// Size, modification time (ns), inode and device of `path`: a file replaced or rewritten gets a
-// new stamp. "missing" when it cannot be stat'ed.
-std::string file_stamp(const std::string& path) {
-  struct stat s {};
-  if (::stat(path.c_str(), &s) != 0) return "missing";
-  return std::to_string(s.st_size) + "," + std::to_string(s.st_mtim.tv_sec) + "." +
-         std::to_string(s.st_mtim.tv_nsec) + "," + std::to_string(s.st_ino) + "," +
-         std::to_string(s.st_dev);
-}
-
 // The folder's own stamp and every file's in it, by name.
 std::string folder_stamp(const std::string& folder) {
   std::vector<std::string> names;
@@ -59,8 +47,8 @@ std::string folder_stamp(const std::string& folder) {
   }
   std::sort(names.begin(), names.end());
   KeyText key;
-  key.add(file_stamp(folder));
-  for (const std::string& name : names) key.add(name).add(file_stamp(folder + "/" + name));
+  key.add(file_version_key(folder));
+  for (const std::string& name : names) key.add(name).add(file_version_key(folder + "/" + name));
   return key.text();
 }
 
@@ -89,7 +77,7 @@ std::string volume_key(const SceneDescription& scene, const VolumeDescription& v
   add_emission(key, v.emission);
   key.add(v.anchor_center).add(v.position).add(v.scale).add(v.size);
   add_scene_lighting(key, scene);
-  key.add(file_stamp(v.path));
+  key.add(file_version_key(v.path));
   return key.text();
 }
 
@@ -144,27 +132,17 @@ VolumeAsset SceneAssetCache::volume(const SceneDescription& scene, const VolumeD
 }
 
 FlipbookAssets SceneAssetCache::flipbooks(const std::vector<FlipbookFire>& fires) {
-  std::map<std::string, size_t> index_of;  // key -> index into assets.frames
-  FlipbookAssets assets;
-  for (const FlipbookFire& fire : fires) {
+  return load_flipbooks(fires, [this](const FlipbookFire& fire) {
     const std::string key = flipbook_key(fire);
-    auto it = index_of.find(key);
-    if (it == index_of.end()) {
-      FlipbookFrames* held = take_held(flipbooks_, next_flipbooks_, key);
-      if (held) {
-        ++counters_.flipbooks_reused;
-      } else {
-        FlipbookFrames frames = read_flipbook_folder(fire.flipbook);
-        prepare_flipbook(frames, fire.preparation);
-        held = &next_flipbooks_.emplace(key, std::move(frames)).first->second;
-        ++counters_.flipbooks_prepared;
-      }
-      assets.frames.push_back(*held);
-      it = index_of.emplace(key, assets.frames.size() - 1).first;
+    FlipbookFrames* held = take_held(flipbooks_, next_flipbooks_, key);
+    if (held) {
+      ++counters_.flipbooks_reused;
+    } else {
+      held = &next_flipbooks_.emplace(key, read_prepared_flipbook(fire)).first->second;
+      ++counters_.flipbooks_prepared;
     }
-    assets.fire_frames.push_back(it->second);
-  }
-  return assets;
+    return *held;
+  });
 }
 
 }  // namespace pyro

@@ -1,16 +1,11 @@
 #include "systems/viewer/inspector_edit.h"
 
+#include <algorithm>
 #include <utility>
 
-#include "engine/io/parameter_text.h"
+#include "engine/io/json_text_edit.h"
 
 namespace pyro {
-
-std::string pointer_of(const std::vector<std::string>& tokens) {
-  std::string p;
-  for (const std::string& t : tokens) p += "/" + escape_pointer_token(t);
-  return p;
-}
 
 namespace {
 
@@ -51,7 +46,7 @@ InspectorEdit edit_creating_parents(const nlohmann::json& tree, const std::vecto
     }
   }
   std::vector<std::string> target(tokens.begin(), tokens.begin() + std::min(tokens.size(), keep + 1));
-  return {pointer_of(target), std::move(value), coalesce};
+  return {json_pointer_text(target), std::move(value), coalesce};
 }
 
 }  // namespace pyro

@@ -15,9 +15,6 @@ struct InspectorEdit {
   bool coalesce = false;  // one step of a drag: joins the previous step of the same pointer
 };
 
-// The pointer of `tokens` (escaped per RFC 6901).
-std::string pointer_of(const std::vector<std::string>& tokens);
-
 // The edit that sets `value` at `tokens` in `tree`: at `tokens` itself when its parent exists,
 // otherwise at the outermost missing object, holding the value under the missing keys
 // ({"a": {"b": value}}). An index into a missing or short array cannot be made: the edit stays at

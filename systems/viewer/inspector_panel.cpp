@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/io/json_text_edit.h"
 #include "engine/io/parameter_text.h"
 
 namespace pyro {
@@ -149,7 +150,7 @@ void json_widget(const ParameterKey& key, const KeyPlace& k, const char* label) 
   std::string text = v.is_null() ? "" : v.dump();
   if (!ImGui::InputText(label, &text, ImGuiInputTextFlags_EnterReturnsTrue)) return;
   json parsed = json::parse(text, nullptr, false);
-  if (parsed.is_discarded()) k.request.error = pointer_of(k.tokens) + ": expected JSON, found " + in_quotes(text);
+  if (parsed.is_discarded()) k.request.error = json_pointer_text(k.tokens) + ": expected JSON, found " + in_quotes(text);
   else ask(k, std::move(parsed), false);
 }
 
@@ -167,13 +168,13 @@ std::string entry_label(const std::string& key, size_t i, const json& entry) {
 void objects_widget(const ParameterKey& key, const KeyPlace& k, const std::string& name) {
   const size_t n = k.value.is_array() ? k.value.size() : 0;
   const std::string label = name + " (" + std::to_string(n) + ")";
-  open_if_focused(pointer_of(k.tokens));
+  open_if_focused(json_pointer_text(k.tokens));
   if (!ImGui::TreeNode(label.c_str())) return;
   for (size_t i = 0; i < n; ++i) {
     ImGui::PushID(int(i));
     std::vector<std::string> at = k.tokens;
     at.push_back(std::to_string(i));
-    open_if_focused(pointer_of(at));
+    open_if_focused(json_pointer_text(at));
     if (ImGui::TreeNode(entry_label(name, i, k.value[i]).c_str())) {
       draw_table(*key.table, k.tree, at, k.value[i], k.request, false);
       ImGui::TreePop();
@@ -202,7 +203,7 @@ void draw_key(const ParameterKey& key, const KeyPlace& k) {
     case ParameterType::unit_color: vec3_widget(key, k, label.c_str(), true); break;
     case ParameterType::choice: choice_widget(key, k, label.c_str()); break;
     case ParameterType::object:
-      open_if_focused(pointer_of(k.tokens));
+      open_if_focused(json_pointer_text(k.tokens));
       if (ImGui::TreeNode(name.c_str())) {
         draw_table(*key.table, k.tree, k.tokens, k.value, k.request, false);
         ImGui::TreePop();

@@ -38,7 +38,7 @@ struct ViewArgs {
   std::vector<std::string> replace_at;
   std::vector<std::string> press_at;
   std::vector<std::string> set_at;
-  std::vector<std::string> undo_at;
+  std::vector<uint64_t> undo_at;
   std::vector<std::string> screenshot_at;
   std::string save_as;
   std::string inspect;
@@ -112,16 +112,6 @@ std::vector<ViewerSet> parse_sets(const std::vector<std::string>& specs) {
   return sets;
 }
 
-std::vector<uint64_t> parse_undos(const std::vector<std::string>& specs) {
-  std::vector<uint64_t> frames;
-  for (const std::string& spec : specs) {
-    if (spec.empty() || spec.size() > 9 || spec.find_first_not_of("0123456789") != std::string::npos)
-      throw UserError(spec, "--undo-at", "expected a frame number, e.g. 12");
-    frames.push_back(std::stoull(spec));
-  }
-  return frames;
-}
-
 std::vector<ViewerScreenshot> parse_screenshots(const std::vector<std::string>& specs) {
   std::vector<ViewerScreenshot> shots;
   for (const std::string& spec : specs) {
@@ -141,7 +131,7 @@ void run_view(const ViewArgs& a) {
   options.edits = parse_edits(a.replace_at);
   options.presses = parse_presses(a.press_at);
   options.sets = parse_sets(a.set_at);
-  options.undos = parse_undos(a.undo_at);
+  options.undos = a.undo_at;
   options.screenshots = parse_screenshots(a.screenshot_at);
   if (!a.screenshot.empty()) check_output_path(a.screenshot, "--screenshot", "PNG");
   if (!a.save_as.empty()) check_output_path(a.save_as, "--save-as", "scene");
@@ -197,7 +187,8 @@ void add_view_command(CLI::App& app) {
                   "FRAME:/POINTER=VALUE: at that frame, set the scene's value at the JSON pointer, as "
                   "the inspector does (VALUE is JSON; a bare word is a string). Repeatable; a value "
                   "the loader refuses ends the session with its message and nothing saved");
-  cmd->add_option("--undo-at", args->undo_at, "FRAME: undo the last edit at that frame. Repeatable");
+  cmd->add_option("--undo-at", args->undo_at, "FRAME: undo the last edit at that frame. Repeatable")
+      ->check(CLI::Range(0, 100000000));
   cmd->add_option("--screenshot-at", args->screenshot_at,
                   "FRAME:FILE: save the window's image as PNG at that frame. Repeatable");
   cmd->add_option("--save-as", args->save_as,

@@ -14,9 +14,9 @@
 #include "components/frame_image.h"
 #include "components/volume_source.h"
 #include "engine/io/png_file.h"
-#include "engine/io/vdb_reader.h"
 #include "systems/open_scene/open_scene.h"
 #include "systems/scene/scene_loader.h"
+#include "tests/support/density_ball.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -25,18 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // A soft ball of density, 8^3 voxels of 0.25 world units about the origin.
-void write_cached_ball(const std::string& path) {
-  const int n = 8;
-  std::vector<float> v(size_t(n) * n * n);
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) {
-        const double dx = x - 3.5, dy = y - 3.5, dz = z - 3.5;
-        const double r = std::sqrt(dx * dx + dy * dy + dz * dz) / 3.6;
-        v[(size_t(z) * n + y) * n + x] = r < 1.0 ? float(1.0 - r * r) : 0.0f;
-      }
-  write_vdb_fog_volume(path, "density", {0, 0, 0}, {n, n, n}, v, 0.25, {-1.0, -1.0, -1.0});
-}
+void write_cached_ball(const std::string& path) { test::write_density_ball(path, 8, 3.6, 0.25, -1.0); }
 
 // A flipbook folder of 3 frames, 8x8, a warm gradient.
 void write_cached_flipbook(const fs::path& dir) {

@@ -13,9 +13,9 @@
 #include "components/volume_source.h"
 #include "engine/io/particle_file.h"
 #include "systems/scene/scene_loader.h"
-#include "engine/io/vdb_reader.h"
 #include "systems/cloud_import/scene_volume.h"
 #include "systems/scene_runtime/scene_runtime.h"
+#include "tests/support/density_ball.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -24,18 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // A soft ball of density, 20^3 voxels of 0.1 world units centred near the origin.
-void write_ball(const std::string& path) {
-  const int n = 20;
-  std::vector<float> v(size_t(n) * n * n);
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) {
-        const double dx = x - 9.5, dy = y - 9.5, dz = z - 9.5;
-        const double r = std::sqrt(dx * dx + dy * dy + dz * dz) / 9.0;
-        v[(size_t(z) * n + y) * n + x] = r < 1.0 ? float(1.0 - r * r) : 0.0f;
-      }
-  write_vdb_fog_volume(path, "density", {0, 0, 0}, {n, n, n}, v, 0.1, {-0.95, -0.95, -0.95});
-}
+void write_ball(const std::string& path) { test::write_density_ball(path, 20, 9.0, 0.1, -0.95); }
 
 std::string scene_text(const std::string& volume) {
   return R"({"output": {"width": 64, "height": 64}, "background": [0.2, 0.3, 0.5],

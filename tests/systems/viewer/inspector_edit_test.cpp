@@ -1,5 +1,6 @@
 // The inspector's edits: a key whose object the file does not write yet is set by writing the
 // nearest missing object around it.
+#include "engine/io/json_text_edit.h"
 #include "systems/viewer/inspector_edit.h"
 
 #include <gtest/gtest.h>
@@ -36,7 +37,7 @@ TEST(InspectorEdit, LeavesAMissingArrayEntryToTheDocumentToRefuse) {
 }
 
 TEST(InspectorEdit, EscapesPointerTokens) {
-  EXPECT_EQ(pointer_of({"a/b", "c~d"}), "/a~1b/c~0d");
+  EXPECT_EQ(json_pointer_text({"a/b", "c~d"}), "/a~1b/c~0d");
 }
 
 }  // namespace
