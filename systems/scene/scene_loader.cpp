@@ -32,6 +32,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/json_document.h"
 #include "engine/io/parameter_dictionary.h"
+#include "engine/mesh/mesh_file_check.h"
 #include "systems/scene/emitter_defaults.h"
 #include "systems/scene/scene_keys.h"
 
@@ -214,8 +215,7 @@ void read_mesh_file_path(ObjectReader& r, MeshDescription& m) {
   const json& v = r.require("file", expected);
   if (!v.is_string() || v.get<std::string>().empty()) r.at("file").fail(expected + ", found " + describe(v));
   m.file = v.get<std::string>();
-  if (!ends_with_ci(m.file, ".gltf") && !ends_with_ci(m.file, ".glb") && !ends_with_ci(m.file, ".obj"))
-    r.at("file").fail(expected + ", found " + describe(v));
+  if (!mesh_file_format(m.file)) r.at("file").fail(expected + ", found " + describe(v));
   m.path = resolve_against(*r.where().file, m.file);
 }
 
