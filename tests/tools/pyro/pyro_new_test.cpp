@@ -144,6 +144,23 @@ TEST(PyroNew, TheSmokeTemplatesPlumeRisesFromTheChimneyTop) {
   }
 }
 
+// The explosion's fireball and smoke fall back under gravity as the shipped explosion's do
+// (their dynamics name gravity_scale 1 against the rising defaults): after 40 frames the mean
+// particle is below y = 4, near the view's centre (the camera looks at y = 3 from 15 units away
+// with a 50 degree field), not up at the frame's top edge near y = 10 where rising smoke is.
+TEST(PyroNew, TheExplosionTemplatesBurstStaysInView) {
+  const fs::path file = test::scratch_dir("pyro_new_explosion") / "explosion.json";
+  ASSERT_EQ(test::run_pyro({"new", file.string(), "--template", "explosion"}).exit_code, 0);
+  OpenSceneOptions options;
+  options.runtime.readback = false;
+  OpenedScene opened = open_scene(file.string(), options);
+  for (int step = 0; step < 40; ++step) opened.runtime->simulate_step();
+  float lowest = 0.0f;
+  const double mean = mean_particle_height(*opened.runtime, lowest);
+  std::printf("explosion template after 40 frames: mean particle height %.2f\n", mean);
+  EXPECT_LT(mean, 4.0);
+}
+
 TEST(PyroNew, RefusesAnExistingFileAnUnknownTemplateAndAMissingFolderWritingNothing) {
   const fs::path folder = test::scratch_dir("pyro_new_refusals");
   const fs::path existing = folder / "mine.json";
