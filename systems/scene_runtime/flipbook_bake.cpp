@@ -65,7 +65,7 @@ FlipbookBakeResult bake_flipbook(SceneRuntime& runtime, const FlipbookBakeOption
   int width = 0, height = 0;
   for (int f = 0; f < options.frames + options.loop_blend; ++f) {
     runtime.step();
-    SceneRuntime::OutputImage image = runtime.read_output();
+    ShownImage image = runtime.read_output();
     width = image.width;
     height = image.height;
     simulated.push_back(std::move(image.rgba));

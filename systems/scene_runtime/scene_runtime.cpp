@@ -7,7 +7,7 @@
 #include "components/frame_clock.h"
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
-#include "engine/io/png_file.h"
+#include "systems/output/linear_readback.h"
 #include "systems/scene_runtime/build_world.h"
 #include "systems/scene_runtime/load_scene_assets.h"
 #include "systems/scene_runtime/resolve_scene.h"
@@ -123,40 +123,19 @@ const gpu::RenderTarget& SceneRuntime::output_target() {
   return frame.display ? *frame.display : *frame.output;
 }
 
-SceneRuntime::OutputImage SceneRuntime::read_output() {
+ShownImage SceneRuntime::read_output() {
   make_current_();
   const gpu::RenderTarget& out = output_target();
   return {out.width(), out.height(), out.read_rgba8()};
 }
 
-std::vector<std::string> SceneRuntime::write_png(const std::string& stem) {
-  const OutputImage image = read_output();
-  const std::vector<uint8_t>& rgba = image.rgba;
-  const int w = image.width, h = image.height;
-  // Drop alpha; in left-right mode the output holds both views side by side: split it.
-  auto rgb_columns = [&](int x0, int width) {
-    std::vector<uint8_t> rgb(static_cast<size_t>(width) * h * 3);
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < width; ++x)
-        for (int c = 0; c < 3; ++c)
-          rgb[(static_cast<size_t>(y) * width + x) * 3 + c] =
-              rgba[(static_cast<size_t>(y) * w + x0 + x) * 4 + c];
-    return rgb;
-  };
-  const std::vector<std::string> paths = png_paths(stem);
-  if (paths.size() == 2) {
-    const int half = w / 2;
-    pyro::write_png(paths[0], half, h, 3, rgb_columns(0, half));
-    pyro::write_png(paths[1], half, h, 3, rgb_columns(half, half));
-  } else {
-    pyro::write_png(paths[0], w, h, 3, rgb_columns(0, w));
-  }
-  return paths;
+std::vector<LinearView> SceneRuntime::read_linear(bool with_depth) {
+  make_current_();
+  return read_linear_views(world_, with_depth);
 }
 
-std::vector<std::string> SceneRuntime::png_paths(const std::string& stem) {
-  if (settings().stereo_mode == StereoMode::left_right) return {stem + "_left.png", stem + "_right.png"};
-  return {stem + ".png"};
+bool SceneRuntime::shown_side_by_side() {
+  return settings().stereo_mode == StereoMode::left_right;
 }
 
 }  // namespace pyro

@@ -21,6 +21,7 @@
 #include "engine/ecs/world.h"
 #include "engine/gpu/gl_context.h"
 #include "engine/gpu/render_target.h"
+#include "systems/output/frame_source.h"
 #include "systems/scene/scene_description.h"
 #include "systems/scene_runtime/frame_sequencer.h"
 #include "systems/scene_runtime/resolved_scene.h"
@@ -35,7 +36,7 @@ struct FrameImage;
 // The process-wide headless context (made on first use).
 gpu::HeadlessContext& shared_headless_context();
 
-class SceneRuntime : public FrameStepper {
+class SceneRuntime : public FrameStepper, public FrameSource {
  public:
   // Every layer in turn: resolve (against the context's GL_MAX_TEXTURE_SIZE), load the assets
   // (notes to options.on_note), build the world and the standard schedule.
@@ -81,19 +82,15 @@ class SceneRuntime : public FrameStepper {
   // The last frame's first view, linear (requires options.readback).
   const FrameImage& image();
   // The last composed frame as shown (upscaled when the frame scale is below 1), RGBA8 sRGB.
-  struct OutputImage {
-    int width = 0, height = 0;
-    std::vector<uint8_t> rgba;
-  };
-  OutputImage read_output();
+  ShownImage read_output();
   // The target holding the last composed frame as shown (the upscaled one when the frame scale
   // is below 1): GL_SRGB8_ALPHA8, in the runtime's context.
   const gpu::RenderTarget& output_target();
-  // Writes the last composed frame as sRGB PNG: `stem`.png, or `stem`_left.png and
-  // `stem`_right.png in left-right mode. Returns the paths written.
-  std::vector<std::string> write_png(const std::string& stem);
-  // The paths write_png(stem) writes, without writing anything.
-  std::vector<std::string> png_paths(const std::string& stem);
+
+  // FrameSource, for the output phase's sinks (systems/output/frame_output.h).
+  ShownImage read_shown() override { return read_output(); }
+  std::vector<LinearView> read_linear(bool with_depth) override;
+  bool shown_side_by_side() override;
 
  private:
   SceneRuntime(const ResolvedScene& resolved, const RuntimeOptions& options);

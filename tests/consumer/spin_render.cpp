@@ -21,6 +21,7 @@
 #include "engine/io/png_file.h"
 #include "spin/spin.h"
 #include "spin/spin_system.h"
+#include "systems/output/png_sink.h"
 #include "systems/scene/scene_description.h"
 #include "systems/scene_runtime/scene_runtime.h"
 
@@ -107,7 +108,7 @@ int main(int argc, char** argv) {
   pyro::SceneRuntime runtime(scene, options);
   add_spinning_particle(runtime.world());
   for (int f = 0; f < kFrames; ++f) runtime.step();
-  runtime.write_png(out.substr(0, out.size() - 4));
+  pyro::write_shown_png(runtime.read_shown(), out.substr(0, out.size() - 4), false);
 
   const pyro::PngImage img = pyro::read_png(out);
   const glm::vec2 seen = image_centroid(img);

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/png_file.h"
+#include "systems/output/png_sink.h"
 #include "systems/scene/scene_loader.h"
 #include "engine/math/color.h"
 #include "systems/scene_runtime/scene_runtime.h"
@@ -26,7 +27,8 @@ namespace {
 namespace fs = std::filesystem;
 
 std::vector<uint8_t> output_png(SceneRuntime& run, const fs::path& dir, int f) {
-  const std::vector<std::string> files = run.write_png((dir / ("f" + std::to_string(f))).string());
+  const std::vector<std::string> files =
+      write_shown_png(run.read_shown(), (dir / ("f" + std::to_string(f))).string(), false);
   return read_png(files.at(0)).pixels;
 }
 

@@ -16,7 +16,6 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -29,6 +28,8 @@
 #include "engine/io/output_folder.h"
 #include "engine/io/text_file.h"
 #include "systems/open_scene/open_scene.h"
+#include "systems/output/frame_output.h"
+#include "systems/output/png_sink.h"
 #include "systems/quality_picker/quality_picker.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/frame_range.h"
@@ -57,12 +58,6 @@ struct RenderArgs {
   OutputFolderOptions folder;  // --wait, --overwrite, --resume
   RuntimeOptions runtime;
 };
-
-std::string frame_name(int f) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%04d", f);
-  return name;
-}
 
 nlohmann::json render_summary(const RenderArgs& a, SceneRuntime& runtime, const FrameRange& range,
                               const nlohmann::json& files, double seconds) {
@@ -120,16 +115,6 @@ std::string describe_difference(const std::string& before, const std::string& no
   return identity_difference(nlohmann::json::parse(before), nlohmann::json::parse(now));
 }
 
-// What a resumed run need not draw again: the files the folder holds for this run and those
-// adopted from killed runs of it.
-std::set<std::string> finished_files(const OutputFolder& folder, bool resume) {
-  std::set<std::string> done;
-  if (!resume) return done;
-  done.insert(folder.held_files().begin(), folder.held_files().end());
-  done.insert(folder.adopted_files().begin(), folder.adopted_files().end());
-  return done;
-}
-
 struct DrawnFrames {
   nlohmann::json files = nlohmann::json::array();  // every file of the range, under --out
   int drawn = 0;                                   // frames drawn by this run (the rest kept)
@@ -148,29 +133,23 @@ void say_what_the_folder_held(const OutputFolder& folder, const RenderArgs& a) {
                folder.replaced_because());
 }
 
-// Draws the frames of `range` that `folder` does not already hold finished (all of them unless
-// --resume) into its staging folder.
-DrawnFrames draw_into(SceneRuntime& runtime, OutputFolder& folder, const FrameRange& range,
-                      const RenderArgs& a) {
+// Draws the frames of `range` that the output folder does not already hold finished (all of them
+// unless --resume) and hands each to the sinks of `output`.
+DrawnFrames draw_into(SceneRuntime& runtime, const OutputFolder& folder, FrameOutput& output,
+                      const FrameRange& range, const RenderArgs& a) {
   say_what_the_folder_held(folder, a);
-  const std::set<std::string> done = finished_files(folder, a.folder.resume);
   DrawnFrames result;
-  std::vector<int> to_draw;
-  for (int f = range.first; f <= range.last; ++f) {
-    bool finished = true;
-    for (const std::string& path : runtime.png_paths(frame_name(f))) {
-      result.files.push_back((std::filesystem::path(a.out) / path).string());
-      finished = finished && done.count(path) > 0;
-    }
-    if (!finished) to_draw.push_back(f);
-  }
+  for (int f = range.first; f <= range.last; ++f)
+    for (const std::string& name : output.files(f))
+      result.files.push_back((std::filesystem::path(a.out) / name).string());
+  const std::vector<int> to_draw = output.frames_to_draw(range.first, range.last);
   if (a.folder.resume)
     print_note("resuming: " + std::to_string(range.count() - static_cast<int>(to_draw.size())) +
                " of " + std::to_string(range.count()) + " frame(s) already finished");
   Progress progress("render " + runtime.scene().name, to_draw.size());
   for (size_t i = 0; i < to_draw.size(); ++i) {
     runtime.draw_frame(to_draw[i]);
-    runtime.write_png((folder.staging().path() / frame_name(to_draw[i])).string());
+    output.write(to_draw[i], runtime);
     progress.update(i + 1);
   }
   progress.finish();
@@ -267,8 +246,10 @@ void run_render(const RenderArgs& a) {
   const OpenedScene opened = open_scene(a.scene, open);  // refuses a scene over its budget
   SceneRuntime& runtime = *opened.runtime;
   const std::optional<QualityPick>& quality = opened.quality;
-  const DrawnFrames drawn = draw_into(runtime, folder, range, a);
-  folder.commit();
+  FrameOutput output(folder, a.folder.resume);
+  output.add(std::make_unique<PngSink>(runtime.shown_side_by_side()));
+  const DrawnFrames drawn = draw_into(runtime, folder, output, range, a);
+  output.commit();
   if (!a.trace.empty())
     write_text_file(a.trace, chrome_trace_json(runtime.trace(), "pyro render " + scene.file));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
