@@ -12,6 +12,7 @@ packages=(
   libassimp-dev  # mesh files (glTF 2.0, OBJ) in scenes
   libglfw3-dev xvfb xauth  # pyro view's window; its tests run it under xvfb-run
   libimgui-dev  # pyro view's panels (Dear ImGui with its GLFW and OpenGL 3 backends)
+  libopenexr-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev  # OpenEXR images and MP4/WebM/GIF videos (engine/io/exr_file.h, video_file.h)
   colord-data  # CIE 1931 colour-matching functions: content/data/cie1931_2deg_xyz.cmf is checked against it
   python3 python3-matplotlib  # tools/plots (run with /usr/bin/python3, not a pyenv python3)
   python3-jsonschema  # the scene schema tests validate with it (tests/tools/validate_json.py)

@@ -1,0 +1,56 @@
+#pragma once
+// Video output, encoded frame by frame as a render goes, through libav (FFmpeg's libraries, seen
+// only by this module's sources). The container and codec follow the file's extension:
+//   .mp4   H.264 (libx264), yuv420p, BT.709 limited range. 4:2:0 H.264 has no odd sizes: an odd
+//          width or height is padded to even by repeating the last column or row, so the video
+//          is then one pixel wider or taller than the frames.
+//   .webm  VP9 (libvpx-vp9), yuv420p, BT.709 limited range.
+//   .gif   GIF, each frame reduced to 256 colours (3-3-2 RGB with error diffusion); the
+//          quality does not apply. GIF frame delays are in hundredths of a second.
+// Quality 0..100 maps linearly onto the encoder's constant-rate factor (CRF, lower is better):
+// crf = round(max_crf * (100 - quality) / 100), max_crf 51 for x264 and 63 for VP9, so the
+// default 75 is CRF 13 (x264) and 16 (VP9); 100 is CRF 0.
+//
+// Written durably (engine/io/seekable_output_file.h): the frames go to a hidden temporary file
+// `.NAME.partial-PID` beside the destination, which only finish() renames into place after an
+// fsync. A writer destroyed without finish() (an exception, a failed render) removes it, and a
+// killed run's temporary is removed by the next writer to the same path or by
+// remove_stale_staging of its folder: never a half-written video under the final name.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace pyro {
+
+class VideoWriter {
+ public:
+  static constexpr int default_quality = 75;
+
+  // Opens the encoder and the temporary file and writes the container's header. Throws
+  // UserError for an extension other than .mp4, .webm, .gif (naming the path and those) or a
+  // missing folder, IoError naming the file (the OS error or av_strerror's text) when libav or
+  // the file system fails, std::invalid_argument for a size outside 1..16384, an fps outside
+  // (0, 1000] or a quality outside 0..100.
+  VideoWriter(const std::string& path, int width, int height, double fps,
+              int quality = default_quality);
+  ~VideoWriter();  // without finish(): removes the temporary file
+  VideoWriter(const VideoWriter&) = delete;
+  VideoWriter& operator=(const VideoWriter&) = delete;
+
+  // One frame of width * height pixels, 8-bit sRGB, top row first: RGB (channels 3) or RGBA
+  // (channels 4, alpha ignored: frames are opaque). Throws IoError when encoding or writing fails.
+  void add_frame(const uint8_t* pixels, int channels);
+  // Flushes the encoder, writes the trailer, fsyncs and renames the file into place. Throws
+  // IoError (then nothing is left under either name).
+  void finish();
+
+  int frames_added() const;
+  // The temporary file the frames go to until finish().
+  const std::string& temporary_path() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace pyro
