@@ -33,14 +33,14 @@ struct VideoFormat {
   bool even_size;  // 4:2:0 H.264 needs even widths and heights
 };
 
-VideoFormat format_for(const std::string& path) {
+VideoFormat format_for(const std::string& path, const std::string& option = "") {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".mp4") return {"mp4", "libx264", AV_PIX_FMT_YUV420P, 51, true};
   if (extension == ".webm") return {"webm", "libvpx-vp9", AV_PIX_FMT_YUV420P, 63, false};
   if (extension == ".gif") return {"gif", "gif", AV_PIX_FMT_RGB8, 0, false};
-  throw UserError(path, "", "a video file name ending in .mp4, .webm or .gif, found '" +
+  throw UserError(path, option, "a video file name ending in .mp4, .webm or .gif, found '" +
                                 extension + "'");
 }
 
@@ -210,6 +210,15 @@ void VideoWriter::State::encode(const AVFrame* input) {
     packet->stream_index = stream->index;
     check(av_interleaved_write_frame(muxer, packet), "write the video");
   }
+}
+
+void check_video_path(const std::string& path, const std::string& option) {
+  format_for(path, option);
+  std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec))
+    throw UserError(path, option, "an existing folder to write the video into, found none");
 }
 
 VideoWriter::VideoWriter(const std::string& path, int width, int height, double fps, int quality) {

@@ -22,6 +22,11 @@
 
 namespace pyro {
 
+// What a VideoWriter for `path` would refuse before encoding anything: throws UserError naming
+// `option` (a command's option, or empty) and the path for an extension other than .mp4, .webm
+// or .gif, or when its folder does not exist. For commands that check their arguments first.
+void check_video_path(const std::string& path, const std::string& option = "");
+
 class VideoWriter {
  public:
   static constexpr int default_quality = 75;

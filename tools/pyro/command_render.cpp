@@ -1,6 +1,9 @@
 // pyro render SCENE --out DIR [--width W] [--height H] [--frames N | --frames A:B] [--json]
+//                  [--format png|exr [--depth]] [--video FILE [--video-quality Q]]
 //                  [--wait] [--overwrite | --resume]
 //
+// Each frame drawn is read back once and handed to the output sinks the options ask for
+// (systems/output/frame_output.h): PNG or EXR frames in DIR, and a video.
 // DIR has one writer at a time and a manifest keyed on the run's identity (its content:
 // systems/scene_runtime/run_identity.h; engine/io/output_folder.h). Frames are rendered into a
 // temporary folder inside DIR and moved into place only when every frame has been written: a
@@ -27,9 +30,12 @@
 #include "engine/core/user_error.h"
 #include "engine/io/output_folder.h"
 #include "engine/io/text_file.h"
+#include "engine/io/video_file.h"
 #include "systems/open_scene/open_scene.h"
 #include "systems/output/frame_output.h"
+#include "systems/output/exr_sink.h"
 #include "systems/output/png_sink.h"
+#include "systems/output/video_sink.h"
 #include "systems/quality_picker/quality_picker.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/frame_range.h"
@@ -55,6 +61,10 @@ struct RenderArgs {
   std::string frames = "1";
   bool json = false;
   std::string trace;  // --trace FILE: Chrome trace-event JSON of the run
+  std::string format = "png";  // --format png|exr
+  bool depth = false;          // --depth: EXR frames with a view-depth channel Z
+  std::string video;           // --video FILE: the frames encoded as they are rendered
+  int video_quality = VideoWriter::default_quality;
   OutputFolderOptions folder;  // --wait, --overwrite, --resume
   RuntimeOptions runtime;
 };
@@ -157,12 +167,32 @@ DrawnFrames draw_into(SceneRuntime& runtime, const OutputFolder& folder, FrameOu
   return result;
 }
 
+// The sinks the arguments ask for, in the folder's common frame.
+FrameOutput frame_output(OutputFolder& folder, SceneRuntime& runtime, const RenderArgs& a) {
+  FrameOutput output(folder, a.folder.resume);
+  if (a.format == "exr")
+    output.add(std::make_unique<ExrSink>(runtime.settings().stereo_mode != StereoMode::mono, a.depth));
+  else
+    output.add(std::make_unique<PngSink>(runtime.shown_side_by_side()));
+  if (!a.video.empty())
+    output.add(std::make_unique<VideoSink>(a.video, runtime.scene().frames_per_second,
+                                           a.video_quality));
+  return output;
+}
+
 // Everything the user can get wrong that needs no reading of the scene.
 void check_render_arguments(const RenderArgs& a) {
   std::error_code ec;
   if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
     throw UserError(a.out, "--out", "expected a folder for the frames, found a file");
   if (!a.trace.empty()) check_trace_path(a.trace, "--trace");
+  if (a.depth && a.format != "exr")
+    throw UserError("--depth", "", "--format exr: only EXR frames carry a depth channel");
+  if (a.format == "exr" && a.runtime.frame_scale < 1.0f)
+    throw UserError("--frame-scale", "", "1 with --format exr: EXR frames hold the views as "
+                                         "rendered, and a frame scale below 1 renders them "
+                                         "smaller, upscaling only the shown (PNG, video) frame");
+  if (!a.video.empty()) check_video_path(a.video, "--video");
   if (a.folder.resume && a.folder.overwrite)
     throw UserError("--resume", "", "either --resume (keep this run's finished frames, draw the "
                                     "rest) or --overwrite (replace another run's), not both");
@@ -191,7 +221,9 @@ std::optional<QualityPick> recorded_quality(const SceneDescription& scene,
 nlohmann::json render_identity_json(const SceneDescription& scene, const RuntimeOptions& options,
                                     const RenderArgs& a) {
   DigestCache digests(cache_folder());
-  const RunIdentity id = run_identity(scene, pixel_settings(scene, options), PYRO_VERSION, digests, print_note);
+  nlohmann::json settings = pixel_settings(scene, options);
+  if (a.depth) settings["exr_depth"] = true;  // the same file names, other contents
+  const RunIdentity id = run_identity(scene, settings, PYRO_VERSION, digests, print_note);
   return {{"digest", id.digest}, {"parts", id.parts}, {"scene_file", a.scene}};
 }
 
@@ -225,6 +257,10 @@ void run_render(const RenderArgs& a) {
     refuse_output_over_inputs(a.trace, "--trace", scene_inputs(a.scene, scene));
     refuse_output_inside(a.trace, "--trace", a.out, "--out's frames and manifest");
   }
+  if (!a.video.empty()) {
+    refuse_output_over_inputs(a.video, "--video", scene_inputs(a.scene, scene));
+    refuse_output_inside(a.video, "--video", a.out, "--out's frames and manifest");
+  }
 
   RuntimeOptions options = a.runtime;
   options.readback = false;
@@ -246,8 +282,7 @@ void run_render(const RenderArgs& a) {
   const OpenedScene opened = open_scene(a.scene, open);  // refuses a scene over its budget
   SceneRuntime& runtime = *opened.runtime;
   const std::optional<QualityPick>& quality = opened.quality;
-  FrameOutput output(folder, a.folder.resume);
-  output.add(std::make_unique<PngSink>(runtime.shown_side_by_side()));
+  FrameOutput output = frame_output(folder, runtime, a);
   const DrawnFrames drawn = draw_into(runtime, folder, output, range, a);
   output.commit();
   if (!a.trace.empty())
@@ -266,9 +301,9 @@ void run_render(const RenderArgs& a) {
 
 void add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a scene file to PNG frames");
+  CLI::App* cmd = app.add_subcommand("render", "Render a scene file to PNG or EXR frames (and a video)");
   cmd->add_option("scene", args->scene, "Scene file (JSON), e.g. content/scenes/fog.json; - reads it from standard input")->required();
-  cmd->add_option("--out", args->out, "Folder for frame_0000.png, frame_0001.png, ...")->required();
+  cmd->add_option("--out", args->out, "Folder for frame_0000.png (or .exr), frame_0001.png, ...")->required();
   cmd->add_option("--width", args->width, "Image width in pixels (default: the scene's)")
       ->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Image height in pixels (default: the scene's)")
@@ -276,6 +311,19 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--frames", args->frames,
                   "N: frames 0..N-1; A:B: frames A..B inclusive (simulated from frame 0, only A..B "
                   "written, named frame_A.png ...)");
+  cmd->add_option("--format", args->format,
+                  "Frame files: png (8-bit sRGB, as shown) or exr (linear half-float RGBA, as "
+                  "the framebuffer holds it; _left/_right per eye in stereo)")
+      ->check(CLI::IsMember({"png", "exr"}));
+  cmd->add_flag("--depth", args->depth,
+                "With --format exr: a float channel Z, the view depth of the opaque geometry "
+                "(+infinity where none)");
+  cmd->add_option("--video", args->video,
+                  "Also encode the frames as shown into FILE (.mp4 H.264, .webm VP9 or .gif) at "
+                  "the scene's fps; written into place only when the render succeeds");
+  cmd->add_option("--video-quality", args->video_quality,
+                  "0..100 (default 75): the codec's constant-rate factor, 100 the best")
+      ->check(CLI::Range(0, 100));
   cmd->add_flag("--json", args->json, "Print a JSON summary as the last line");
   cmd->add_option("--trace", args->trace,
                   "Write a Chrome trace-event JSON file (opens in Perfetto): one span per system "
