@@ -12,7 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/user_error.h"
 #include "engine/io/png_file.h"
+#include "systems/flipbook_fire/flipbook_folder.h"
 #include "engine/core/content_path.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "systems/six_way_lighting/six_way_bake.h"
@@ -28,6 +30,7 @@ constexpr float kSixWayBakeDensity = 0.6f;
 struct SixWayBakeTextures {
   PngImage a, b;
   nlohmann::json sidecar;
+  FlipbookFrames folder_a;  // six_way_a read as a flipbook folder
 };
 
 const SixWayBakeTextures& baked_particle() {
@@ -46,7 +49,8 @@ const SixWayBakeTextures& baked_particle() {
     SceneRuntime runtime(scene, six_way_runtime_options(options));
     bake_six_way(runtime, options, out);
     return SixWayBakeTextures{read_png(out + "/six_way_a/frame_0000.png"), read_png(out + "/six_way_b/frame_0000.png"),
-                              nlohmann::json::parse(read_text_file(out + "/six_way.json"))};
+                              nlohmann::json::parse(read_text_file(out + "/six_way.json")),
+                              read_flipbook_folder(out + "/six_way_a")};
   }();
   return baked;
 }
@@ -63,6 +67,19 @@ TEST(SixWayBake, WritesTwoRgbaTexturesAndTheirSidecar) {
   EXPECT_EQ(t.sidecar["textures"]["a"]["folder"], "six_way_a");
   EXPECT_EQ(t.sidecar["color_space"], "linear");
   EXPECT_EQ(t.sidecar["premultiplied"], false);
+  EXPECT_EQ(t.folder_a.files.size(), 1u);  // a flipbook folder as the flame bake's
+  EXPECT_EQ(t.folder_a.width, kSixWayBakeSize);
+}
+
+TEST(SixWayBake, AnUnlitSceneIsRefusedNamingTheKey) {
+  SceneDescription scene = test::one_particle_scene({0.0f, 0.0f, -3.0f}, 0.5f, 0.5f, 8, 8, 30.0f);
+  scene.file = "unlit.json";
+  try {
+    check_six_way_bake(scene, SixWayBakeOptions{}, "");
+    FAIL() << "an unlit scene was accepted";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("/shadows"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SixWayBake, TheCentreHoldsTheClosedForm) {
