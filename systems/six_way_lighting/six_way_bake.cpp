@@ -73,7 +73,8 @@ void check_six_way_bake(const SceneDescription& scene, const SixWayBakeOptions& 
                         const std::string& out) {
   const std::string file = scene.file.empty() ? "scene" : scene.file;
   if (!scene.fires.empty())
-    throw UserError(file, "/fires", "expected a scene of simulated smoke to bake, found flipbook fires");
+    throw UserError(file, "/fires",
+                    "expected a scene of simulated smoke to bake, found flipbook fires");
   if (!scene.shadows)
     throw UserError(file, "/shadows",
                     "expected lit media for six-way lightmaps (a \"shadows\" block), found none");
@@ -123,14 +124,23 @@ nlohmann::json six_way_sidecar(const SceneDescription& scene, const SixWayBakeOp
           {"source", scene.file},
           {"frame", "x right, y up, z towards the viewer (the baking camera's)"},
           {"textures",
-           {{"a", {{"folder", kFolderA}, {"r", "right: light at +x"}, {"g", "top: light at +y"},
-                   {"b", "back: light behind the smoke, at -z"}, {"a", "alpha"}}},
-            {"b", {{"folder", kFolderB}, {"r", "left: light at -x"}, {"g", "bottom: light at -y"},
-                   {"b", "front: light at the viewer's side, +z"}, {"a", "emissive (0: smoke)"}}}}},
+           {{"a",
+             {{"folder", kFolderA},
+              {"r", "right: light at +x"},
+              {"g", "top: light at +y"},
+              {"b", "back: light behind the smoke, at -z"},
+              {"a", "alpha"}}},
+            {"b",
+             {{"folder", kFolderB},
+              {"r", "left: light at -x"},
+              {"g", "bottom: light at -y"},
+              {"b", "front: light at the viewer's side, +z"},
+              {"a", "emissive (0: smoke)"}}}}},
           {"color_space", "linear"},
           {"premultiplied", false},
-          {"blend", "lighting = sum over axes of w_axis^2 * (w_axis >= 0 ? positive face : negative "
-                    "face), w the unit vector towards the light; colour = light * lighting * alpha"}};
+          {"blend",
+           "lighting = sum over axes of w_axis^2 * (w_axis >= 0 ? positive face : negative "
+           "face), w the unit vector towards the light; colour = light * lighting * alpha"}};
 }
 
 SixWayBakeResult bake_six_way(SceneRuntime& runtime, const SixWayBakeOptions& options,

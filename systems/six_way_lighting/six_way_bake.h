@@ -9,10 +9,9 @@
 // with DIR/six_way.json stating the packing, into a new folder that replaces DIR as a whole
 // when complete (engine/io/folder_replacement.h), as the flame bake does. The loop is
 // cross-faded over its wrap as the flame bake's (cross_fade_six_way); the borders are not faded.
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "systems/reference/rgb_image.h"
 #include "systems/scene/scene_description.h"

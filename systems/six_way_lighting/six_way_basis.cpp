@@ -6,12 +6,18 @@ namespace pyro {
 
 glm::vec3 six_way_towards_light(SixWayFace f) {
   switch (f) {
-    case SixWayFace::right: return {1.0f, 0.0f, 0.0f};
-    case SixWayFace::top: return {0.0f, 1.0f, 0.0f};
-    case SixWayFace::back: return {0.0f, 0.0f, -1.0f};
-    case SixWayFace::left: return {-1.0f, 0.0f, 0.0f};
-    case SixWayFace::bottom: return {0.0f, -1.0f, 0.0f};
-    case SixWayFace::front: return {0.0f, 0.0f, 1.0f};
+    case SixWayFace::right:
+      return {1.0f, 0.0f, 0.0f};
+    case SixWayFace::top:
+      return {0.0f, 1.0f, 0.0f};
+    case SixWayFace::back:
+      return {0.0f, 0.0f, -1.0f};
+    case SixWayFace::left:
+      return {-1.0f, 0.0f, 0.0f};
+    case SixWayFace::bottom:
+      return {0.0f, -1.0f, 0.0f};
+    case SixWayFace::front:
+      return {0.0f, 0.0f, 1.0f};
   }
   return {0.0f, 0.0f, 1.0f};
 }

@@ -19,7 +19,6 @@
 // so an axis light gives its face exactly and a diagonal (+-1, +-1, +-1)/sqrt(3) the mean of its
 // three faces.
 #include <array>
-
 #include <glm/vec3.hpp>
 
 namespace pyro {

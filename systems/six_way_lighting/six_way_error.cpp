@@ -16,8 +16,8 @@ namespace pyro {
 namespace {
 
 // The reference's pass: the particles lit by the pass's light over black, uncut.
-RgbImage reference_pass(const ParticlePool& pool, const CameraFrame& camera, const SunScattering& scattering,
-                        const SixWayPassLight& pass) {
+RgbImage reference_pass(const ParticlePool& pool, const CameraFrame& camera,
+                        const SunScattering& scattering, const SixWayPassLight& pass) {
   ReferenceSun sun;
   sun.travel = glm::dvec3(pass.travel);
   sun.color = glm::dvec3(pass.sun);
@@ -65,7 +65,8 @@ std::vector<glm::vec3> six_way_diagonals() {
   return d;
 }
 
-SixWayErrorReport measure_six_way_error(const SceneDescription& scene, const SixWayErrorOptions& options) {
+SixWayErrorReport measure_six_way_error(const SceneDescription& scene,
+                                        const SixWayErrorOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   SixWayBakeOptions bake;
   bake.frames = 1;
@@ -78,11 +79,14 @@ SixWayErrorReport measure_six_way_error(const SceneDescription& scene, const Six
   const CameraFrame camera = runtime.world().resource<View>().eyes.at(0);
   const ParticlePool pool = gather_particles(runtime.world());
   const SunScattering scattering = scene.shadows->scattering;
-  const auto reference = [&](const SixWayPassLight& pass) { return reference_pass(pool, camera, scattering, pass); };
+  const auto reference = [&](const SixWayPassLight& pass) {
+    return reference_pass(pool, camera, scattering, pass);
+  };
 
   const SixWayFrame engine_bake = unpack_six_way(pack_six_way(render_six_way_frame(runtime)));
   const SixWayRenders reference_renders = render_six_way_passes(camera, reference);
-  const SixWayFrame reference_bake = six_way_frame_from_renders(reference_renders.faces, reference_renders.opacity);
+  const SixWayFrame reference_bake =
+      six_way_frame_from_renders(reference_renders.faces, reference_renders.opacity);
 
   SixWayErrorReport report;
   report.particles = pool.size();

@@ -8,10 +8,9 @@
 // compared (RMSE, linear RGB clamped to [0, 1]) with the reference lit from that direction. The
 // engine's own render lit from the direction is scored too: what the engine gets without the
 // lightmaps; and the engine's relit bake against it, the blend's own error inside the engine.
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/vec3.hpp>
 
 #include "systems/reference/rgb_image.h"
 #include "systems/scene/scene_description.h"
@@ -46,6 +45,7 @@ struct SixWayErrorReport {
 std::vector<glm::vec3> six_way_diagonals();
 
 // Checks the scene as a six-way bake does (check_six_way_bake) and measures.
-SixWayErrorReport measure_six_way_error(const SceneDescription& scene, const SixWayErrorOptions& options);
+SixWayErrorReport measure_six_way_error(const SceneDescription& scene,
+                                        const SixWayErrorOptions& options);
 
 }  // namespace pyro

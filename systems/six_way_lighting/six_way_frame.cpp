@@ -59,7 +59,9 @@ SixWayTextures pack_six_way(const SixWayFrame& frame) {
   t.a.resize(pixels * 4);
   t.b.resize(pixels * 4);
   for (size_t p = 0; p < pixels; ++p) {
-    const auto face = [&](SixWayFace f) { return to_byte_linear(frame.faces[static_cast<int>(f)][p]); };
+    const auto face = [&](SixWayFace f) {
+      return to_byte_linear(frame.faces[static_cast<int>(f)][p]);
+    };
     t.a[4 * p + 0] = face(SixWayFace::right);
     t.a[4 * p + 1] = face(SixWayFace::top);
     t.a[4 * p + 2] = face(SixWayFace::back);
@@ -79,7 +81,9 @@ SixWayFrame unpack_six_way(const SixWayTextures& t) {
     throw std::invalid_argument("unpack_six_way: textures differ from their size");
   const auto value = [](uint8_t byte) { return byte / 255.0f; };
   for (size_t p = 0; p < pixels; ++p) {
-    const auto set = [&](SixWayFace f, uint8_t byte) { frame.faces[static_cast<int>(f)][p] = value(byte); };
+    const auto set = [&](SixWayFace f, uint8_t byte) {
+      frame.faces[static_cast<int>(f)][p] = value(byte);
+    };
     set(SixWayFace::right, t.a[4 * p + 0]);
     set(SixWayFace::top, t.a[4 * p + 1]);
     set(SixWayFace::back, t.a[4 * p + 2]);
@@ -116,7 +120,8 @@ SixWayFrame cross_fade_six_way(const SixWayFrame& a, const SixWayFrame& b, float
     const float alpha = w * a.alpha[p] + (1.0f - w) * b.alpha[p];
     out.alpha[p] = alpha;
     const auto mix = [&](float va, float vb) {
-      return alpha > 0.0f ? clamp01((w * va * a.alpha[p] + (1.0f - w) * vb * b.alpha[p]) / alpha) : 0.0f;
+      return alpha > 0.0f ? clamp01((w * va * a.alpha[p] + (1.0f - w) * vb * b.alpha[p]) / alpha)
+                          : 0.0f;
     };
     for (int i = 0; i < kSixWayFaces; ++i) out.faces[i][p] = mix(a.faces[i][p], b.faces[i][p]);
     out.emissive[p] = mix(a.emissive[p], b.emissive[p]);

@@ -8,9 +8,8 @@
 // A relit frame over black is therefore  light_color * six_way_relight(faces, w) * alpha.
 #include <array>
 #include <cstdint>
-#include <vector>
-
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "systems/reference/rgb_image.h"
 #include "systems/six_way_lighting/six_way_basis.h"

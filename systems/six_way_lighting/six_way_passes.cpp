@@ -3,7 +3,8 @@
 namespace pyro {
 
 glm::vec3 six_way_light_travel(const CameraFrame& camera, const glm::vec3& towards_light_camera) {
-  const glm::vec3 towards = camera.right * towards_light_camera.x + camera.up * towards_light_camera.y -
+  const glm::vec3 towards = camera.right * towards_light_camera.x +
+                            camera.up * towards_light_camera.y -
                             camera.forward * towards_light_camera.z;
   return -towards;
 }

@@ -6,7 +6,6 @@
 // simulation does not.
 #include <array>
 #include <functional>
-
 #include <glm/vec3.hpp>
 
 #include "engine/math/camera_math.h"

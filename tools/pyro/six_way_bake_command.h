@@ -8,7 +8,7 @@
 
 namespace pyro::cli {
 
-void run_six_way_bake(const SceneDescription& scene, const std::string& scene_file, const std::string& out,
-                      const FlipbookBakeOptions& options, bool json);
+void run_six_way_bake(const SceneDescription& scene, const std::string& scene_file,
+                      const std::string& out, const FlipbookBakeOptions& options, bool json);
 
 }  // namespace pyro::cli

@@ -5,19 +5,20 @@
 // (the lit splat's closed form at its closest point: half its column towards any light,
 // docs/lighting.md) under alpha rho (the lit splat's opacity 1 - exp(-tau0)). The textures are
 // read back from the folder the bake wrote, with its sidecar.
+#include "systems/six_way_lighting/six_way_bake.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
-
 #include <nlohmann/json.hpp>
 
+#include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "engine/io/png_file.h"
 #include "systems/flipbook_fire/flipbook_folder.h"
-#include "engine/core/content_path.h"
 #include "systems/scene_runtime/scene_runtime.h"
-#include "systems/six_way_lighting/six_way_bake.h"
+#include "systems/six_way_lighting/six_way_folder.h"
 #include "tests/support/one_particle_scene.h"
 #include "tests/support/test_paths.h"
 
@@ -31,6 +32,7 @@ struct SixWayBakeTextures {
   PngImage a, b;
   nlohmann::json sidecar;
   FlipbookFrames folder_a;  // six_way_a read as a flipbook folder
+  std::string out;
 };
 
 const SixWayBakeTextures& baked_particle() {
@@ -48,9 +50,10 @@ const SixWayBakeTextures& baked_particle() {
     const std::string out = (test::scratch_dir("six_way_bake") / "bake").string();
     SceneRuntime runtime(scene, six_way_runtime_options(options));
     bake_six_way(runtime, options, out);
-    return SixWayBakeTextures{read_png(out + "/six_way_a/frame_0000.png"), read_png(out + "/six_way_b/frame_0000.png"),
+    return SixWayBakeTextures{read_png(out + "/six_way_a/frame_0000.png"),
+                              read_png(out + "/six_way_b/frame_0000.png"),
                               nlohmann::json::parse(read_text_file(out + "/six_way.json")),
-                              read_flipbook_folder(out + "/six_way_a")};
+                              read_flipbook_folder(out + "/six_way_a"), out};
   }();
   return baked;
 }
@@ -71,6 +74,14 @@ TEST(SixWayBake, WritesTwoRgbaTexturesAndTheirSidecar) {
   EXPECT_EQ(t.folder_a.width, kSixWayBakeSize);
 }
 
+TEST(SixWayBake, AFrameReadsBackFromTheFolder) {
+  const SixWayBakeTextures& t = baked_particle();
+  const SixWayTextures read = read_six_way_frame(t.out, 0);
+  EXPECT_EQ(read.a, t.a.pixels);
+  EXPECT_EQ(read.b, t.b.pixels);
+  EXPECT_THROW(read_six_way_frame(t.out, 1), UserError);  // one frame baked
+}
+
 TEST(SixWayBake, AnUnlitSceneIsRefusedNamingTheKey) {
   SceneDescription scene = test::one_particle_scene({0.0f, 0.0f, -3.0f}, 0.5f, 0.5f, 8, 8, 30.0f);
   scene.file = "unlit.json";
@@ -88,7 +99,8 @@ TEST(SixWayBake, TheCentreHoldsTheClosedForm) {
   const auto centre = [&](const PngImage& image, int c) {
     const int m = kSixWayBakeSize / 2;
     return (six_way_channel(image, m - 1, m - 1, c) + six_way_channel(image, m, m - 1, c) +
-            six_way_channel(image, m - 1, m, c) + six_way_channel(image, m, m, c)) / (4.0 * 255.0);
+            six_way_channel(image, m - 1, m, c) + six_way_channel(image, m, m, c)) /
+           (4.0 * 255.0);
   };
   EXPECT_NEAR(centre(t.a, 3), kSixWayBakeDensity, 0.03);  // alpha
   const double face = std::sqrt(1.0 - kSixWayBakeDensity);

@@ -2,11 +2,12 @@
 // Unity VFX Graph (A = right, top, back, alpha; B = left, bottom, front, emissive), the straight
 // (un-premultiplied) faces, the blend's closed form for axis and diagonal lights, and where each
 // face's light is for a camera.
+#include "systems/six_way_lighting/six_way_frame.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "systems/six_way_lighting/six_way_frame.h"
 #include "systems/six_way_lighting/six_way_passes.h"
 
 namespace pyro {
@@ -30,7 +31,9 @@ TEST(SixWayPacking, ChannelsFollowUnitysLightmapsAAndB) {
   SixWayFrame frame = made_up_six_way_frame();
   frame.emissive[0] = 0.25f;
   const SixWayTextures t = pack_six_way(frame);
-  const auto face = [](SixWayFace f) { return six_way_byte(static_cast<float>(static_cast<int>(f) + 1) / 8.0f); };
+  const auto face = [](SixWayFace f) {
+    return six_way_byte(static_cast<float>(static_cast<int>(f) + 1) / 8.0f);
+  };
   EXPECT_EQ(t.a[0], face(SixWayFace::right));
   EXPECT_EQ(t.a[1], face(SixWayFace::top));
   EXPECT_EQ(t.a[2], face(SixWayFace::back));
@@ -39,12 +42,13 @@ TEST(SixWayPacking, ChannelsFollowUnitysLightmapsAAndB) {
   EXPECT_EQ(t.b[1], face(SixWayFace::bottom));
   EXPECT_EQ(t.b[2], face(SixWayFace::front));
   EXPECT_EQ(t.b[3], six_way_byte(0.25f));  // emissive
-  for (int c = 0; c < 4; ++c) {             // no medium: nothing lit, transparent
+  for (int c = 0; c < 4; ++c) {            // no medium: nothing lit, transparent
     EXPECT_EQ(t.a[4 + c], 0);
     EXPECT_EQ(t.b[4 + c], 0);
   }
   const SixWayFrame back = unpack_six_way(t);
-  for (int i = 0; i < kSixWayFaces; ++i) EXPECT_NEAR(back.faces[i][0], (i + 1) / 8.0f, 0.5f / 255.0f + 1e-6f);
+  for (int i = 0; i < kSixWayFaces; ++i)
+    EXPECT_NEAR(back.faces[i][0], (i + 1) / 8.0f, 0.5f / 255.0f + 1e-6f);
 }
 
 TEST(SixWayRelight, AnAxisLightGivesItsFaceExactly) {
@@ -80,9 +84,12 @@ TEST(SixWayRelight, DiagonalLightsBlendBySquaredComponents) {
 
 TEST(SixWayPasses, EachFacesLightTravelsFromItsSideOfTheCamerasFrame) {
   // A camera on +x looking at the origin: its right is -z, its front (the viewer's side) +x.
-  const CameraFrame camera = make_camera_frame({4, 0, 0}, {0, 0, 0}, {0, 1, 0}, 40.0f, 0.1f, 100.0f, 8, 8);
+  const CameraFrame camera =
+      make_camera_frame({4, 0, 0}, {0, 0, 0}, {0, 1, 0}, 40.0f, 0.1f, 100.0f, 8, 8);
   const auto travel = [&](SixWayFace f) { return six_way_face_pass(camera, f).travel; };
-  const auto near = [](const glm::vec3& a, const glm::vec3& b) { return glm::length(a - b) < 1e-5f; };
+  const auto near = [](const glm::vec3& a, const glm::vec3& b) {
+    return glm::length(a - b) < 1e-5f;
+  };
   EXPECT_TRUE(near(travel(SixWayFace::right), {0, 0, 1}));  // the light at -z travels along +z
   EXPECT_TRUE(near(travel(SixWayFace::top), {0, -1, 0}));
   EXPECT_TRUE(near(travel(SixWayFace::front), {-1, 0, 0}));  // from the viewer into the scene
