@@ -1,4 +1,4 @@
-// pyro bake-flipbook SCENE --out DIR [--frames N] [--width W] [--height H] [--loop-blend K] [--json]
+// pyro bake-flipbook SCENE --out DIR [--frames N] [--width W] [--height H] [--loop-blend K] [--six-way] [--json]
 // pyro analyze flipbook-pattern [--scene SCENE] [--frames N] [--json]
 // Flipbook fire (Rose 2007, chapter 4): baking a flame flipbook from the engine's own
 // fire simulation (the scene opened as every command opens it: a quality target's pick applied),
@@ -22,6 +22,7 @@
 #include "systems/flipbook_fire/flipbook_pattern.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/print_note.h"
+#include "tools/pyro/six_way_bake_command.h"
 #include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
@@ -32,6 +33,7 @@ struct BakeArgs {
   std::string scene;
   std::string out;
   FlipbookBakeOptions options;
+  bool six_way = false;
   bool json = false;
 };
 
@@ -52,6 +54,7 @@ void run_bake(const BakeArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   const SceneDescription scene = load_scene(a.scene);
   if (a.scene != "-") check_bake_destination(a);
+  if (a.six_way) return run_six_way_bake(scene, a.scene, a.out, a.options, a.json);
   check_flipbook_bake(scene, a.options, a.out);
   OpenSceneOptions open;
   open.runtime = flipbook_runtime_options(a.options);
@@ -154,6 +157,8 @@ void add_flipbook_commands(CLI::App& app, CLI::App& analyze) {
   b->add_option("--loop-blend", bake->options.loop_blend,
                  "Frames cross-faded over the loop's wrap (0: none; below --frames)")
       ->check(CLI::Range(0, 10000));
+  b->add_flag("--six-way", bake->six_way,
+              "Six-way lightmaps of a lit smoke scene instead (six_way_a/, six_way_b/, six_way.json)");
   b->add_flag("--json", bake->json, "Print a JSON summary as the last line");
   b->callback([bake] { run_bake(*bake); });
 
@@ -164,6 +169,7 @@ void add_flipbook_commands(CLI::App& app, CLI::App& analyze) {
   p->add_option("--frames", pattern->frames, "Frames in the flipbook loop")->check(CLI::Range(1, 100000));
   p->add_flag("--json", pattern->json, "Print one JSON object");
   p->callback([pattern] { run_pattern(*pattern); });
+  add_six_way_analysis(analyze);
 }
 
 }  // namespace pyro::cli

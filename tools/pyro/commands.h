@@ -10,6 +10,8 @@ void add_bench_commands(CLI::App& app);
 void add_import_command(CLI::App& app);
 // `pyro bake-flipbook` and `pyro analyze flipbook-pattern` (command_flipbook.cpp).
 void add_flipbook_commands(CLI::App& app, CLI::App& analyze);
+// `pyro analyze six-way`, registered by add_flipbook_commands (command_six_way.cpp).
+void add_six_way_analysis(CLI::App& analyze);
 void add_profile_command(CLI::App& app);  // command_profile.cpp
 void add_quality_command(CLI::App& app);  // command_quality.cpp
 void add_view_command(CLI::App& app);  // command_view.cpp: the interactive viewer

@@ -125,6 +125,7 @@ const std::map<std::string, std::vector<std::string>>& cheap_json_runs() {
       {"analyze blackbody", {"analyze", "blackbody"}},
       {"analyze phase", {"analyze", "phase", "--cos-intervals", "8", "--azimuth-steps", "2"}},
       {"analyze flipbook-pattern", {"analyze", "flipbook-pattern", "--frames", "2"}},
+      {"analyze six-way", {"analyze", "six-way", "--frame", "0", "--width", "4", "--height", "6"}},
       {"bench ecs", {"bench", "ecs", "--entities", "10", "--repeats", "1"}},
       {"bench sort", {"bench", "sort", "--count", "10", "--repeats", "1"}},
       {"bench scale", {"bench", "scale", test::scene_path("clouds.json"), "--counts", "100", "--frames", "1",
