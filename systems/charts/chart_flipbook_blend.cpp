@@ -4,6 +4,8 @@
 // scene is baked as an atlas with motion vectors (pyro bake-flipbook --atlas, without the loop's
 // cross-fade) at 2n frames per loop: its even frames are the n-frame flipbook (motion over one of
 // its frames: twice the baked motion over one step), its odd frames the truth at the half step.
+// By default without the bake's border fade: the chart compares ways of moving the medium between
+// frames, and the fade is a window fixed to the frame that the medium moves under.
 #include <unistd.h>
 
 #include <cmath>
@@ -71,6 +73,7 @@ BlendErrors measure(const SceneDescription& base, const FlipbookBlendChartOption
   bake.height = o.height;
   bake.atlas_columns = 8;
   bake.atlas_rows = (bake.frames + 7) / 8;
+  if (!o.border_fade) bake.fade = {0.0f, 0.0f, 0.0f};
   BlendErrors e;
   e.seconds = bake_flipbook(scene, bake, folder.string()).seconds;
   const FlipbookFrames f = read_flipbook_atlas(folder.string());
@@ -98,7 +101,9 @@ ChartTable chart_flipbook_blend(const FlipbookBlendChartOptions& o) {
   t.y_label = "RMSE (linear RGB) against the true half-step frame";
   t.ground_truth = "the simulation rendered at the half step (a bake at twice the frames: its odd frames)";
   t.notes = {"loop " + std::to_string(o.loop_seconds) + " s; in-betweens at t = 0.5 between every pair of frames",
-             "motion vectors as the atlas stores them (8-bit, strength from the sidecar)"};
+             "motion vectors as the atlas stores them (8-bit, strength from the sidecar)",
+             o.border_fade ? "frames faded at the borders as the bake fades them"
+                           : "frames without the bake's border fade (a window fixed to the frame, not carried by the medium)"};
   BlendScratch scratch;
   nlohmann::json summary = nlohmann::json::array();
   for (int frames : o.frames_per_loop) {

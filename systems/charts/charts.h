@@ -98,6 +98,7 @@ struct FlipbookBlendChartOptions {
   std::vector<int> frames_per_loop{8, 16, 32};
   double loop_seconds = 16.0 / 30.0;
   int width = 64, height = 96;
+  bool border_fade = false;  // the bake's border fade (FrameFade) on the frames
 };
 ChartTable chart_flipbook_blend(const FlipbookBlendChartOptions& options);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace pyro {
 
@@ -19,15 +20,54 @@ void MotionSums::add(const MotionSums& other, double scale) {
   }
 }
 
-MotionField MotionSums::field() const {
+namespace {
+
+// One pass of the dilation: every empty pixel with filled neighbours (8-connected) takes their
+// mean and becomes filled. Returns whether any pixel was filled.
+bool dilate_once(MotionField& f, std::vector<uint8_t>& filled) {
+  const std::vector<float> before = f.uv;
+  const std::vector<uint8_t> was = filled;
+  bool grew = false;
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * f.width + x;
+      if (was[i]) continue;
+      float u = 0.0f, v = 0.0f;
+      int n = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= f.width || ny >= f.height) continue;
+          const size_t j = static_cast<size_t>(ny) * f.width + nx;
+          if (!was[j]) continue;
+          u += before[j * 2];
+          v += before[j * 2 + 1];
+          ++n;
+        }
+      if (n == 0) continue;
+      f.uv[i * 2] = u / static_cast<float>(n);
+      f.uv[i * 2 + 1] = v / static_cast<float>(n);
+      filled[i] = 1;
+      grew = true;
+    }
+  return grew;
+}
+
+}  // namespace
+
+MotionField MotionSums::field(int dilation) const {
   MotionField f;
   f.width = width;
   f.height = height;
   f.uv.assign(weighted_uv.size(), 0.0f);
+  std::vector<uint8_t> filled(weight.size(), 0);
   for (size_t i = 0; i < weight.size(); ++i) {
     if (weight[i] <= 1e-12) continue;
     f.uv[i * 2] = static_cast<float>(weighted_uv[i * 2] / weight[i]);
     f.uv[i * 2 + 1] = static_cast<float>(weighted_uv[i * 2 + 1] / weight[i]);
+    filled[i] = 1;
+  }
+  for (int pass = 0; pass < dilation && dilate_once(f, filled); ++pass) {
   }
   return f;
 }

@@ -6,7 +6,10 @@
 // pixel, weighted by the particle's opacity times density times the footprint kernel
 //   k(d) = (1 - d^2 / R^2)^2 for d < R,  R = radius f / depth  (f: the focal length in pixels),
 // so that each pixel gets the motion of the medium that covers it. Pixels no particle covers
-// get 0.
+// take the motion of the nearest covered ones, dilated outward one pixel per pass (8-connected
+// mean), for `dilation` passes (then 0): the motion-vector blend samples a frame at
+// uv - t m(uv), so the pixels just ahead of the flame must carry its motion for the flame to be
+// moved into them.
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -31,7 +34,7 @@ struct MotionSums {
   std::vector<double> weight;       // 1 per pixel
   MotionSums(int w, int h);
   void add(const MotionSums& other, double scale);
-  MotionField field() const;
+  MotionField field(int dilation = 16) const;
 };
 
 // Splats `particles` seen by `camera` (whose width and height may differ from the sums': pixel

@@ -141,7 +141,17 @@ MotionField written_motion(const SimulatedFrames& sim, int f, const FlipbookBake
   const float w = own_weight(f, options);
   sums.add(sim.motion[static_cast<size_t>(f)], w);
   if (f < options.loop_blend) sums.add(sim.motion[static_cast<size_t>(options.frames + f)], 1.0f - w);
-  return sums.field();
+  MotionField field = sums.field();
+  // The border fade is a window fixed to the frame, not carried by the medium: where it dims the
+  // flame, the motion is dimmed with it, so that a blend does not slide the window's edge.
+  for (int y = 0; y < sim.height; ++y)
+    for (int x = 0; x < sim.width; ++x) {
+      const float k = frame_fade_weight(options.fade, sim.width, sim.height, x, y);
+      const size_t i = (static_cast<size_t>(y) * sim.width + x) * 2;
+      field.uv[i] *= k;
+      field.uv[i + 1] *= k;
+    }
+  return field;
 }
 
 void write_frame_folder(const SimulatedFrames& sim, const SceneDescription& scene,
