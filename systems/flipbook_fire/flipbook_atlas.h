@@ -3,9 +3,9 @@
 // pixels, frame i in tile (c, r) = (i mod columns, i div columns), row 0 at the top of the image
 // (row-major from the top left). This is the order Unity's Shader Graph Flipbook node reads with
 // its default Invert Y ("flipbooks typically start from top left": docs.unity3d.com, Packages
-// com.unity.shadergraph, Flipbook-Node) and the order of Unreal's SubUV/flipbook material
-// functions (tile 0 at the top left, across then down). Tiles beyond the last frame are left
-// zero (transparent black).
+// com.unity.shadergraph, Flipbook-Node) and Unreal's ("sub-images are ordered from
+// left-to-right, top-to-bottom": dev.epicgames.com, unreal-engine, subuv-modules). Tiles beyond
+// the last frame are left zero (transparent black).
 #include <cstdint>
 #include <string>
 #include <vector>
