@@ -6,8 +6,10 @@
 // On disk (motion.png, an atlas laid out like the colour atlas) they are packed the way Unity's
 // VFX Graph "Flipbook Motion Blend" UV mode (docs.unity3d.com, Packages
 // com.unity.visualeffectgraph, Block-FlipbookPlayer and the output contexts' UV Mode) and
-// Unreal's FlipBook_MotionVectors material function decode them, as signed vectors centred on
-// 0.5 in two linear 8-bit channels:
+// Unreal's FlipBook motion-vector material function decode them (realtimevfx.com, "UE4's Flip
+// Book Motion Vector Material Function": still pixels are (128, 128, 0), the texture is biased
+// and scaled to [-1, 1] and multiplied by a strength; the blend itself: Klemen Lozar, "Frame
+// Blending with Motion Vectors"), as signed vectors centred on 0.5 in two linear 8-bit channels:
 //   R = 0.5 + u 0.5 / strength,  G = 0.5 + v_up 0.5 / strength,  B = 0,  A = 1,
 // clamped to [0, 1], decoded as (2 c - 1) strength. v_up = -v: G grows upward, as UV's v does in
 // Unity (its UV origin is the bottom left: Shader Graph Flipbook node); for Unreal, whose texture
