@@ -25,6 +25,11 @@ struct FlipbookQuad {
   // bottom-left, bottom-right, top-left, top-right (as seen from the viewer)
   std::array<glm::vec3, 4> corners{};
   int frame = 0;            // texture layer
+  // Between frames (a flipbook with motion vectors): the next frame's layer, the fraction of the
+  // way to it, and the frames it lies ahead (the billboard's increment, which scales the motion).
+  int next_frame = 0;
+  float blend = 0.0f;
+  float motion_scale = 1.0f;
   float intensity = 1.0f;   // colour scale
   float depth = 0.0f;       // along `toward` in the fire's frame: larger is nearer the viewer
 };

@@ -84,6 +84,7 @@ struct FlipbookFire {
   std::vector<FlipbookBillboard> billboards;  // from `groups`
   int frame_count = 0;                        // frames in the flipbook
   int texture = -1;                           // index of its frames in the FlipbookRenderer
+  bool motion_vectors = false;                // the flipbook has them: frames blend between steps
 };
 
 }  // namespace pyro

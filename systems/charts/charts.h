@@ -89,6 +89,19 @@ struct ParticleBudgetChartOptions {
 };
 ChartTable chart_particle_budget(const ParticleBudgetChartOptions& options);
 
+// Flipbook in-between frames (systems/charts/chart_flipbook_blend.cpp): for each count of frames
+// per loop, the fire scene baked as an atlas with motion vectors at twice the frames; linear and
+// motion-vector blends of neighbouring even frames at t = 0.5 against the odd frame between them.
+// "time" is the frame count, "error" the RMSE.
+struct FlipbookBlendChartOptions {
+  std::string scene;  // empty: content/scenes/flipbook_fire.json
+  std::vector<int> frames_per_loop{8, 16, 32};
+  double loop_seconds = 16.0 / 30.0;
+  int width = 64, height = 96;
+  bool border_fade = false;  // the bake's border fade (FrameFade) on the frames
+};
+ChartTable chart_flipbook_blend(const FlipbookBlendChartOptions& options);
+
 // ms per frame against particles, log-log (`pyro bench scale`): not a time-against-error chart,
 // so it has its own CSV (particles, ms_per_frame, cpu_ms_per_frame and the stages; the fitted
 // slopes in comment lines), drawn by tools/plots/plot_scale.py.
@@ -105,7 +118,8 @@ struct ScaleChart {
 };
 ScaleChart chart_scale(const ScaleChartOptions& options);
 
-// "footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators", "scale".
+// "footprint", "billboard-modes", "layer-resolution", "particle-budget", "integrators",
+// "flipbook-blend", "scale".
 std::vector<std::string> chart_names();
 
 }  // namespace pyro

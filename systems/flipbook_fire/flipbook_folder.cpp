@@ -11,6 +11,7 @@
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "engine/io/png_file.h"
+#include "systems/flipbook_fire/flipbook_atlas_folder.h"
 
 namespace pyro {
 
@@ -34,23 +35,7 @@ bool split_number(const std::string& stem, NumberedName& out) {
 }
 
 std::vector<uint8_t> to_rgba(const PngImage& img) {
-  const size_t n = static_cast<size_t>(img.width) * img.height;
-  std::vector<uint8_t> out(n * 4);
-  for (size_t i = 0; i < n; ++i) {
-    const uint8_t* p = &img.pixels[i * img.channels];
-    uint8_t r, g, b, a;
-    switch (img.channels) {
-      case 1: r = g = b = a = p[0]; break;
-      case 2: r = g = b = p[0]; a = p[1]; break;
-      case 3: r = p[0]; g = p[1]; b = p[2]; a = std::max({r, g, b}); break;
-      default: r = p[0]; g = p[1]; b = p[2]; a = p[3]; break;
-    }
-    out[i * 4 + 0] = r;
-    out[i * 4 + 1] = g;
-    out[i * 4 + 2] = b;
-    out[i * 4 + 3] = a;
-  }
-  return out;
+  return flipbook_rgba(img.pixels.data(), img.width, img.height, img.channels);
 }
 
 // The folder's PNG files (any case of .png), sorted by name; UserError when there is no folder,
@@ -146,7 +131,28 @@ void read_frames(FlipbookFrames& f) {
 
 }  // namespace
 
+std::vector<uint8_t> flipbook_rgba(const uint8_t* pixels, int width, int height, int channels) {
+  const size_t n = static_cast<size_t>(width) * height;
+  std::vector<uint8_t> out(n * 4);
+  for (size_t i = 0; i < n; ++i) {
+    const uint8_t* p = &pixels[i * static_cast<size_t>(channels)];
+    uint8_t r, g, b, a;
+    switch (channels) {
+      case 1: r = g = b = a = p[0]; break;
+      case 2: r = g = b = p[0]; a = p[1]; break;
+      case 3: r = p[0]; g = p[1]; b = p[2]; a = std::max({r, g, b}); break;
+      default: r = p[0]; g = p[1]; b = p[2]; a = p[3]; break;
+    }
+    out[i * 4 + 0] = r;
+    out[i * 4 + 1] = g;
+    out[i * 4 + 2] = b;
+    out[i * 4 + 3] = a;
+  }
+  return out;
+}
+
 FlipbookFrames read_flipbook_folder(const std::string& folder) {
+  if (holds_flipbook_atlas(folder)) return read_flipbook_atlas(folder);
   FlipbookFrames f;
   f.folder = folder;
   f.files = list_png_files(folder);
@@ -155,6 +161,29 @@ FlipbookFrames read_flipbook_folder(const std::string& folder) {
   read_frames(f);
   return f;
 }
+
+namespace {
+
+// Motion in the cropped frame's UV: u scales by full width / cropped width, v likewise.
+void crop_motion(std::vector<MotionField>& motion, int x0, int y0, int w, int h) {
+  for (MotionField& m : motion) {
+    const float su = static_cast<float>(m.width) / static_cast<float>(w);
+    const float sv = static_cast<float>(m.height) / static_cast<float>(h);
+    MotionField out;
+    out.width = w;
+    out.height = h;
+    out.uv.resize(static_cast<size_t>(w) * h * 2);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const size_t i = (static_cast<size_t>(y) * w + x) * 2;
+        out.uv[i] = m.u(x0 + x, y0 + y) * su;
+        out.uv[i + 1] = m.v(x0 + x, y0 + y) * sv;
+      }
+    m = std::move(out);
+  }
+}
+
+}  // namespace
 
 float base_softening(float a, float base_line, float soften) {
   if (a < base_line) return 0.0f;
@@ -187,6 +216,7 @@ void prepare_flipbook(FlipbookFrames& frames, const FlipbookPreparation& p) {
         }
     frame = std::move(out);
   }
+  crop_motion(frames.motion, x0, y0, w, h);
   frames.width = w;
   frames.height = h;
 }

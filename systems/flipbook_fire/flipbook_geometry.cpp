@@ -35,7 +35,7 @@ FireFrame face_viewer(const glm::vec3& base, const glm::vec3& up, const glm::vec
 }
 
 std::vector<FlipbookQuad> flipbook_quads(const FlipbookFire& fire, const FireFrame& frame,
-                                         int64_t step, int frame_count) {
+                                         int64_t step, int frame_count, float fraction) {
   std::vector<FlipbookQuad> quads;
   quads.reserve(fire.billboards.size());
   const float half = 0.5f * fire.width;
@@ -48,6 +48,9 @@ std::vector<FlipbookQuad> flipbook_quads(const FlipbookFire& fire, const FireFra
     q.corners[2] = q.corners[0] + height;
     q.corners[3] = q.corners[1] + height;
     q.frame = flipbook_frame(b.start_frame, b.increment, step, frame_count);
+    q.next_frame = flipbook_frame(b.start_frame, b.increment, step + 1, frame_count);
+    q.blend = fraction;
+    q.motion_scale = static_cast<float>(b.increment);
     q.intensity = b.intensity;
     q.depth = b.depth;
     quads.push_back(q);

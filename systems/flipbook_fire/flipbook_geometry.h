@@ -20,8 +20,9 @@ FireFrame face_viewer(const glm::vec3& base, const glm::vec3& up, const glm::vec
                       const glm::vec3& fallback_toward);
 
 // The quads of one fire at flipbook time step `step`, sorted back to front (by depth; ties by
-// billboard order), for a flipbook of `frame_count` frames.
+// billboard order), for a flipbook of `frame_count` frames; `fraction` of the way to step + 1
+// (each quad's next_frame, blend and motion_scale).
 std::vector<FlipbookQuad> flipbook_quads(const FlipbookFire& fire, const FireFrame& frame,
-                                         int64_t step, int frame_count);
+                                         int64_t step, int frame_count, float fraction = 0.0f);
 
 }  // namespace pyro

@@ -31,8 +31,13 @@ void orient_flipbook_fires(ecs::World& world) {
     if (fire.frame_count <= 0 || fire.texture < 0) return;
     FlipbookDrawList::Fire f;
     f.frame = face_viewer(fire.position, fire.up, list.viewer, -view->frame.forward);
-    f.quads = flipbook_quads(fire, f.frame, flipbook_step(time, fire.frames_per_second),
-                             fire.frame_count);
+    const int64_t step = flipbook_step(time, fire.frames_per_second);
+    // Between steps only where motion vectors carry the flame there; else the step's frame.
+    const float fraction =
+        fire.motion_vectors
+            ? std::clamp(static_cast<float>(time * fire.frames_per_second - static_cast<double>(step)), 0.0f, 1.0f)
+            : 0.0f;
+    f.quads = flipbook_quads(fire, f.frame, step, fire.frame_count, fraction);
     f.texture = fire.texture;
     f.blend = fire.blend;
     f.distance = glm::length(fire.position - list.viewer);

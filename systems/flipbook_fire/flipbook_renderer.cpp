@@ -12,7 +12,22 @@
 namespace pyro {
 
 namespace {
-constexpr int kFloatsPerVertex = 7;  // position (3), u, v, layer, intensity
+constexpr int kFloatsPerVertex = 10;  // position (3), u, v, layer, intensity, next layer, blend, motion scale
+
+gpu::Texture motion_texture(const FlipbookFrames& frames) {
+  gpu::Texture t = gpu::make_texture(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(t.get(), 1, GL_RG16F, frames.width, frames.height,
+                     static_cast<GLsizei>(frames.motion.size()));
+  for (size_t layer = 0; layer < frames.motion.size(); ++layer)
+    glTextureSubImage3D(t.get(), 0, 0, 0, static_cast<GLint>(layer), frames.width, frames.height, 1, GL_RG,
+                        GL_FLOAT, frames.motion[layer].uv.data());
+  glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
 }
 
 FlipbookRenderer::FlipbookRenderer()
@@ -20,9 +35,9 @@ FlipbookRenderer::FlipbookRenderer()
       buffer_(gpu::make_buffer()),
       vao_(gpu::make_vertex_array()) {
   const GLuint vao = vao_.get();
-  const GLint sizes[3] = {3, 3, 1};
-  const GLuint offsets[3] = {0, 3 * sizeof(float), 6 * sizeof(float)};
-  for (GLuint a = 0; a < 3; ++a) {
+  const GLint sizes[4] = {3, 3, 1, 3};
+  const GLuint offsets[4] = {0, 3 * sizeof(float), 6 * sizeof(float), 7 * sizeof(float)};
+  for (GLuint a = 0; a < 4; ++a) {
     glEnableVertexArrayAttrib(vao, a);
     glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
     glVertexArrayAttribBinding(vao, a, 0);
@@ -56,14 +71,19 @@ int FlipbookRenderer::add_flipbook(const FlipbookFrames& frames) {
   glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  textures_.push_back(std::move(t));
-  return static_cast<int>(textures_.size()) - 1;
+  Flipbook book{std::move(t), {}, false};
+  if (frames.motion.size() == frames.rgba.size()) {
+    book.motion = motion_texture(frames);
+    book.has_motion = true;
+  }
+  flipbooks_.push_back(std::move(book));
+  return static_cast<int>(flipbooks_.size()) - 1;
 }
 
 void FlipbookRenderer::draw(const std::vector<FlipbookQuad>& quads, int texture, FlipbookBlend blend,
                             const CameraFrame& view, const gpu::RenderTarget& target) {
   if (quads.empty()) return;
-  if (texture < 0 || static_cast<size_t>(texture) >= textures_.size())
+  if (texture < 0 || static_cast<size_t>(texture) >= flipbooks_.size())
     throw std::out_of_range("FlipbookRenderer::draw: no such flipbook");
   // Two triangles per quad; v = 0 at the top of the frame (PNG rows run top to bottom).
   vertices_.clear();
@@ -73,7 +93,8 @@ void FlipbookRenderer::draw(const std::vector<FlipbookQuad>& quads, int texture,
   for (const FlipbookQuad& q : quads)
     for (int c : kCorner) {
       const glm::vec3& p = q.corners[static_cast<size_t>(c)];
-      vertices_.insert(vertices_.end(), {p.x, p.y, p.z, kU[c], kV[c], static_cast<float>(q.frame), q.intensity});
+      vertices_.insert(vertices_.end(), {p.x, p.y, p.z, kU[c], kV[c], static_cast<float>(q.frame), q.intensity,
+                                         static_cast<float>(q.next_frame), q.blend, q.motion_scale});
     }
   const size_t count = vertices_.size() / kFloatsPerVertex;
   if (count > capacity_) {
@@ -101,7 +122,10 @@ void FlipbookRenderer::draw(const std::vector<FlipbookQuad>& quads, int texture,
   glUseProgram(program_.get());
   glUniformMatrix4fv(gpu::uniform_location(program_, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(view.view_projection));
-  glBindTextureUnit(0, textures_[static_cast<size_t>(texture)].get());
+  const Flipbook& book = flipbooks_[static_cast<size_t>(texture)];
+  glUniform1i(gpu::uniform_location(program_, "u_has_motion"), book.has_motion ? 1 : 0);
+  glBindTextureUnit(0, book.frames.get());
+  if (book.has_motion) glBindTextureUnit(1, book.motion.get());
   glBindVertexArray(vao_.get());
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count));
   glBindVertexArray(0);

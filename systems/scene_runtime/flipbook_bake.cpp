@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "components/particle_set.h"
+#include "components/view.h"
 #include "engine/core/content_location.h"
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
@@ -15,6 +17,9 @@
 #include "engine/io/folder_replacement.h"
 #include "engine/math/color.h"
 #include "engine/io/text_file.h"
+#include "systems/flipbook_fire/flipbook_atlas_sidecar.h"
+#include "systems/flipbook_fire/flipbook_motion.h"
+#include "systems/flipbook_fire/particle_motion_splat.h"
 #include "systems/scene_runtime/scene_runtime.h"
 
 namespace pyro {
@@ -34,6 +39,12 @@ void check_flipbook_bake(const SceneDescription& scene, const FlipbookBakeOption
                     "expected a cross-fade shorter than the flipbook (0 to " +
                         std::to_string(options.frames - 1) + " frames), found " +
                         std::to_string(options.loop_blend));
+  const long long tiles = static_cast<long long>(options.atlas_columns) * options.atlas_rows;
+  if ((options.atlas_columns > 0 || options.atlas_rows > 0) && tiles < options.frames)
+    throw UserError("", "--atlas",
+                    "expected a grid with room for the " + std::to_string(options.frames) +
+                        " frames, found " + std::to_string(options.atlas_columns) + "x" +
+                        std::to_string(options.atlas_rows) + " = " + std::to_string(tiles) + " tiles");
 }
 
 RuntimeOptions flipbook_runtime_options(const FlipbookBakeOptions& options) {
@@ -55,45 +66,102 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
   return result;
 }
 
-FlipbookBakeResult bake_flipbook(SceneRuntime& runtime, const FlipbookBakeOptions& options,
-                                 const std::string& out) {
-  namespace fs = std::filesystem;
-  const auto t0 = std::chrono::steady_clock::now();
-  const SceneDescription& scene = runtime.scene();
-  FolderReplacement staging(out);
-  std::vector<std::vector<uint8_t>> simulated;  // RGBA8 sRGB, frames + loop_blend of them
+namespace {
+
+bool bakes_atlas(const FlipbookBakeOptions& options) { return options.atlas_columns > 0; }
+
+// What the simulation gave, frames + loop_blend of them: RGBA8 sRGB images and, for an atlas,
+// the medium's motion.
+struct SimulatedFrames {
   int width = 0, height = 0;
+  std::vector<std::vector<uint8_t>> rgba;
+  std::vector<MotionSums> motion;
+};
+
+// The particles of every set in the world, as the motion splat takes them.
+std::vector<MotionParticle> motion_particles(ecs::World& world) {
+  std::vector<MotionParticle> out;
+  world.each<const ParticleSet>([&](const ParticleSet& set) {
+    const ParticlePool& p = set.pool;
+    for (size_t i = 0; i < p.size(); ++i)
+      out.push_back({{p.px[i], p.py[i], p.pz[i]}, {p.vx[i], p.vy[i], p.vz[i]}, p.radius[i],
+                     p.opacity[i] * p.density[i]});
+  });
+  return out;
+}
+
+SimulatedFrames simulate(SceneRuntime& runtime, const FlipbookBakeOptions& options) {
+  SimulatedFrames sim;
+  const float dt = 1.0f / runtime.scene().frames_per_second;
   for (int f = 0; f < options.frames + options.loop_blend; ++f) {
     runtime.step();
     ShownImage image = runtime.read_output();
-    width = image.width;
-    height = image.height;
-    simulated.push_back(std::move(image.rgba));
+    sim.width = image.width;
+    sim.height = image.height;
+    sim.rgba.push_back(std::move(image.rgba));
+    if (!bakes_atlas(options)) continue;
+    MotionSums& sums = sim.motion.emplace_back(image.width, image.height);
+    if (const View* view = runtime.world().try_resource<const View>())
+      splat_particle_motion(motion_particles(runtime.world()), view->frame, dt, sums);
   }
-  FlipbookBakeResult result;
-  result.removed_leftovers = staging.removed_leftovers();
-  result.restored_old_folder = staging.restored_old_folder();
-  const size_t pixels = static_cast<size_t>(width) * height;
-  for (int f = 0; f < options.frames; ++f) {
-    std::vector<uint8_t> rgb(pixels * 3);
-    const std::vector<uint8_t>& a = simulated[static_cast<size_t>(f)];
-    if (f < options.loop_blend) {
-      // Cross-fade in linear light: w on frame f, 1 - w on frame frames + f.
-      const std::vector<uint8_t>& b = simulated[static_cast<size_t>(options.frames + f)];
-      const float w = static_cast<float>(f + 1) / static_cast<float>(options.loop_blend + 1);
-      for (size_t i = 0; i < pixels; ++i)
-        for (int c = 0; c < 3; ++c) {
-          const float la = srgb_to_linear(a[i * 4 + c] / 255.0f), lb = srgb_to_linear(b[i * 4 + c] / 255.0f);
-          rgb[i * 3 + c] = to_byte(linear_to_srgb(w * la + (1.0f - w) * lb));
-        }
-    } else {
-      for (size_t i = 0; i < pixels; ++i)
-        for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = a[i * 4 + c];
+  return sim;
+}
+
+// Weight of simulated frame f in written frame f (the loop's cross-fade; 1 past it).
+float own_weight(int f, const FlipbookBakeOptions& options) {
+  if (f >= options.loop_blend) return 1.0f;
+  return static_cast<float>(f + 1) / static_cast<float>(options.loop_blend + 1);
+}
+
+// Written frame f, RGB8 sRGB: cross-faded in linear light with simulated frame frames + f
+// (weight own_weight on frame f), then faded at the borders.
+std::vector<uint8_t> written_frame(const SimulatedFrames& sim, int f, const FlipbookBakeOptions& options) {
+  const size_t pixels = static_cast<size_t>(sim.width) * sim.height;
+  std::vector<uint8_t> rgb(pixels * 3);
+  const std::vector<uint8_t>& a = sim.rgba[static_cast<size_t>(f)];
+  if (f < options.loop_blend) {
+    const std::vector<uint8_t>& b = sim.rgba[static_cast<size_t>(options.frames + f)];
+    const float w = own_weight(f, options);
+    for (size_t i = 0; i < pixels; ++i)
+      for (int c = 0; c < 3; ++c) {
+        const float la = srgb_to_linear(a[i * 4 + c] / 255.0f), lb = srgb_to_linear(b[i * 4 + c] / 255.0f);
+        rgb[i * 3 + c] = to_byte(linear_to_srgb(w * la + (1.0f - w) * lb));
+      }
+  } else {
+    for (size_t i = 0; i < pixels; ++i)
+      for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = a[i * 4 + c];
+  }
+  apply_frame_fade(options.fade, sim.width, sim.height, rgb);
+  return rgb;
+}
+
+// Written frame f's motion: the same cross-fade of the simulated frames' motion sums.
+MotionField written_motion(const SimulatedFrames& sim, int f, const FlipbookBakeOptions& options) {
+  MotionSums sums(sim.width, sim.height);
+  const float w = own_weight(f, options);
+  sums.add(sim.motion[static_cast<size_t>(f)], w);
+  if (f < options.loop_blend) sums.add(sim.motion[static_cast<size_t>(options.frames + f)], 1.0f - w);
+  MotionField field = sums.field();
+  // The border fade is a window fixed to the frame, not carried by the medium: where it dims the
+  // flame, the motion is dimmed with it, so that a blend does not slide the window's edge.
+  for (int y = 0; y < sim.height; ++y)
+    for (int x = 0; x < sim.width; ++x) {
+      const float k = frame_fade_weight(options.fade, sim.width, sim.height, x, y);
+      const size_t i = (static_cast<size_t>(y) * sim.width + x) * 2;
+      field.uv[i] *= k;
+      field.uv[i + 1] *= k;
     }
-    apply_frame_fade(options.fade, width, height, rgb);
+  return field;
+}
+
+void write_frame_folder(const SimulatedFrames& sim, const SceneDescription& scene,
+                        const FlipbookBakeOptions& options, const std::string& out,
+                        const FolderReplacement& staging, FlipbookBakeResult& result) {
+  namespace fs = std::filesystem;
+  for (int f = 0; f < options.frames; ++f) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", f);
-    write_png((staging.path() / name).string(), width, height, 3, rgb);
+    write_png((staging.path() / name).string(), sim.width, sim.height, 3, written_frame(sim, f, options));
     result.files.push_back((fs::path(out) / name).string());
   }
   const nlohmann::json manifest = {{"frames", options.frames},
@@ -104,6 +172,51 @@ FlipbookBakeResult bake_flipbook(SceneRuntime& runtime, const FlipbookBakeOption
                                    {"source", scene.file}};
   write_text_file((staging.path() / "flipbook.json").string(), manifest.dump(2) + "\n");
   result.files.push_back((fs::path(out) / "flipbook.json").string());
+}
+
+void write_atlas(const SimulatedFrames& sim, const SceneDescription& scene,
+                 const FlipbookBakeOptions& options, const std::string& out,
+                 const FolderReplacement& staging, FlipbookBakeResult& result) {
+  namespace fs = std::filesystem;
+  AtlasSidecar s;
+  s.layout = {options.atlas_columns, options.atlas_rows, sim.width, sim.height};
+  s.frames = options.frames;
+  s.frames_per_second = scene.frames_per_second;
+  s.scene = scene.file;
+  s.loop_blend = options.loop_blend;
+  s.engine_version = options.engine_version;
+  s.motion_image = "motion.png";
+  std::vector<std::vector<uint8_t>> colour, motion_tiles;
+  std::vector<MotionField> motion;
+  for (int f = 0; f < options.frames; ++f) {
+    colour.push_back(written_frame(sim, f, options));
+    motion.push_back(written_motion(sim, f, options));
+  }
+  s.motion_strength = motion_strength(motion);
+  for (const MotionField& m : motion) motion_tiles.push_back(encode_motion(m, s.motion_strength));
+  write_png((staging.path() / s.image).string(), s.layout.width(), s.layout.height(), 3,
+            pack_atlas(s.layout, colour, 3));
+  write_png((staging.path() / s.motion_image).string(), s.layout.width(), s.layout.height(), 4,
+            pack_atlas(s.layout, motion_tiles, 4));
+  write_text_file((staging.path() / "atlas.json").string(), atlas_sidecar_json(s).dump(2) + "\n");
+  for (const char* name : {"atlas.png", "motion.png", "atlas.json"})
+    result.files.push_back((fs::path(out) / name).string());
+}
+
+}  // namespace
+
+FlipbookBakeResult bake_flipbook(SceneRuntime& runtime, const FlipbookBakeOptions& options,
+                                 const std::string& out) {
+  const auto t0 = std::chrono::steady_clock::now();
+  FolderReplacement staging(out);
+  const SimulatedFrames sim = simulate(runtime, options);
+  FlipbookBakeResult result;
+  result.removed_leftovers = staging.removed_leftovers();
+  result.restored_old_folder = staging.restored_old_folder();
+  if (bakes_atlas(options))
+    write_atlas(sim, runtime.scene(), options, out, staging, result);
+  else
+    write_frame_folder(sim, runtime.scene(), options, out, staging, result);
   staging.commit();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;

@@ -7,6 +7,11 @@
 // `flipbook.json` (frame count, size, source scene), all written into a new folder beside `out`
 // that replaces it as a whole only when complete (engine/io/folder_replacement.h): a kill leaves
 // the old bake or the new one, and a bake of fewer frames leaves exactly its own.
+// With an atlas grid (options.atlas_columns x atlas_rows), the same frames go into one atlas
+// instead (atlas.png, tiles in row-major order from the top left: flipbook_atlas.h), with the
+// medium's motion vectors from the simulation's own particle velocities in a second atlas of the
+// same layout (motion.png: particle_motion_splat.h, packed as flipbook_motion.h says) and the
+// sidecar atlas.json (flipbook_atlas_sidecar.h), replacing the folder the same way.
 #include <string>
 #include <vector>
 
@@ -30,6 +35,9 @@ struct FlipbookBakeOptions {
   // Preparation of every written frame (after the cross-fade): sides, top and base faded to
   // black (systems/flipbook_fire/flipbook_frame_fade.h).
   FrameFade fade;
+  // An atlas of atlas_columns x atlas_rows tiles (both 0: a folder of frames); frames must fit.
+  int atlas_columns = 0, atlas_rows = 0;
+  std::string engine_version;  // recorded in the atlas sidecar
 };
 
 struct FlipbookBakeResult {
@@ -40,8 +48,8 @@ struct FlipbookBakeResult {
 };
 
 // What a bake refuses before anything runs: throws UserError naming the scene when it has
-// `fires` (a bake renders simulated fire, not flipbooks), `out` when it is a file, or
-// "--loop-blend" when it is not below the frame count.
+// `fires` (a bake renders simulated fire, not flipbooks), `out` when it is a file,
+// "--loop-blend" when it is not below the frame count, or "--atlas" when the frames do not fit.
 void check_flipbook_bake(const SceneDescription& scene, const FlipbookBakeOptions& options,
                          const std::string& out);
 

@@ -56,7 +56,7 @@ void refuse_unused(const ChartArgs& a, bool size_used, bool frames_used) {
 ChartTable make_chart(const ChartArgs& a) {
   const bool renders = a.name == "billboard-modes" || a.name == "layer-resolution" ||
                        a.name == "particle-budget" || a.name == "shadows" ||
-                       a.name == "scattering";
+                       a.name == "scattering" || a.name == "flipbook-blend";
   refuse_unused(a, renders,
                 a.name == "billboard-modes" || a.name == "layer-resolution" || a.name == "shadows" ||
                     a.name == "scattering");
@@ -86,13 +86,18 @@ ChartTable make_chart(const ChartArgs& a) {
     if (a.frames > 0) o.frames = a.frames;
     return chart_scattering(o);
   }
+  if (a.name == "flipbook-blend") {
+    FlipbookBlendChartOptions o;
+    override_size(o, a);
+    return chart_flipbook_blend(o);
+  }
   if (a.name == "particle-budget") {
     ParticleBudgetChartOptions o;
     override_size(o, a);
     return chart_particle_budget(o);
   }
   throw UserError("command line", "NAME", "one of footprint, billboard-modes, layer-resolution, "
-                                          "particle-budget, integrators, shadows, scattering, scale; found \"" + a.name + "\"");
+                                          "particle-budget, integrators, shadows, scattering, flipbook-blend, scale; found \"" + a.name + "\"");
 }
 
 // Before any measuring: --out must be a folder or creatable as one, in a folder that can be
@@ -176,20 +181,20 @@ void run_chart(const ChartArgs& a) {
 
 std::vector<std::string> chart_names() {
   return {"footprint",  "billboard-modes", "layer-resolution", "particle-budget",
-          "integrators", "shadows",         "scattering",       "scale"};
+          "integrators", "shadows",         "scattering",       "flipbook-blend", "scale"};
 }
 
 void add_chart_command(CLI::App& app) {
   auto a = std::make_shared<ChartArgs>();
   CLI::App* cmd = app.add_subcommand(
       "chart", "Time against error, one point per setting, Pareto front marked: CSV and PNG");
-  cmd->add_option("name", a->name, "footprint, billboard-modes, layer-resolution, particle-budget, integrators or scale")
+  cmd->add_option("name", a->name, "footprint, billboard-modes, layer-resolution, particle-budget, integrators, shadows, scattering, flipbook-blend or scale")
       ->required()
       ->check(CLI::IsMember(chart_names()));
   cmd->add_option("--out", a->out, "Folder for NAME.csv and NAME.png")->required();
-  cmd->add_option("--width", a->width, "Image width (billboard-modes, layer-resolution, particle-budget, scale)")
+  cmd->add_option("--width", a->width, "Image width (billboard-modes, layer-resolution, particle-budget, flipbook-blend, scale)")
       ->check(CLI::Range(16, 4096));
-  cmd->add_option("--height", a->height, "Image height (billboard-modes, layer-resolution, particle-budget, scale)")
+  cmd->add_option("--height", a->height, "Image height (billboard-modes, layer-resolution, particle-budget, flipbook-blend, scale)")
       ->check(CLI::Range(16, 4096));
   cmd->add_option("--frames", a->frames, "Timed frames per point (billboard-modes, layer-resolution, scale)")
       ->check(CLI::Range(1, 10000));

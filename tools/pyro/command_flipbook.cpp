@@ -1,4 +1,5 @@
-// pyro bake-flipbook SCENE --out DIR [--frames N] [--width W] [--height H] [--loop-blend K] [--six-way] [--json]
+// pyro bake-flipbook SCENE --out DIR [--frames N] [--width W] [--height H] [--loop-blend K]
+//                    [--atlas CxR | --six-way] [--json]
 // pyro analyze flipbook-pattern [--scene SCENE] [--frames N] [--json]
 // Flipbook fire (Rose 2007, chapter 4): baking a flame flipbook from the engine's own
 // fire simulation (the scene opened as every command opens it: a quality target's pick applied),
@@ -18,6 +19,7 @@
 #include "systems/open_scene/open_scene.h"
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/flipbook_bake.h"
+#include "systems/flipbook_fire/flipbook_atlas.h"
 #include "systems/flipbook_fire/flipbook_layout.h"
 #include "systems/flipbook_fire/flipbook_pattern.h"
 #include "tools/pyro/commands.h"
@@ -34,6 +36,7 @@ struct BakeArgs {
   std::string out;
   FlipbookBakeOptions options;
   bool six_way = false;
+  std::string atlas;  // "CxR", empty: a folder of frames
   bool json = false;
 };
 
@@ -50,8 +53,17 @@ void check_bake_destination(const BakeArgs& a) {
   }
 }
 
-void run_bake(const BakeArgs& a) {
+void run_bake(BakeArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (a.six_way && !a.atlas.empty())
+    throw UserError("--atlas", "", "either --atlas (a flame flipbook's atlas) or --six-way (six-way "
+                                   "lightmap folders), not both");
+  if (!a.atlas.empty()) {
+    const AtlasLayout grid = parse_atlas_grid(a.atlas, "--atlas");
+    a.options.atlas_columns = grid.columns;
+    a.options.atlas_rows = grid.rows;
+    a.options.engine_version = PYRO_VERSION;
+  }
   const SceneDescription scene = load_scene(a.scene);
   if (a.scene != "-") check_bake_destination(a);
   if (a.six_way) return run_six_way_bake(scene, a.scene, a.out, a.options, a.json);
@@ -70,6 +82,7 @@ void run_bake(const BakeArgs& a) {
   const nlohmann::json summary = {{"scene", scene.file}, {"out", a.out},
                                   {"frames", a.options.frames}, {"width", a.options.width},
                                   {"height", a.options.height}, {"loop_blend", a.options.loop_blend},
+                                  {"atlas", a.atlas},
                                   {"files", r.files},
                                   {"seconds", r.seconds}};
   if (a.json)
@@ -159,6 +172,9 @@ void add_flipbook_commands(CLI::App& app, CLI::App& analyze) {
       ->check(CLI::Range(0, 10000));
   b->add_flag("--six-way", bake->six_way,
               "Six-way lightmaps of a lit smoke scene instead (six_way_a/, six_way_b/, six_way.json)");
+  b->add_option("--atlas", bake->atlas,
+                "Write one atlas of COLUMNSxROWS tiles (e.g. 8x8; row-major from the top left) with "
+                "motion vectors and atlas.json instead of a folder of frames");
   b->add_flag("--json", bake->json, "Print a JSON summary as the last line");
   b->callback([bake] { run_bake(*bake); });
 
