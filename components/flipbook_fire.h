@@ -85,6 +85,7 @@ struct FlipbookFire {
   int frame_count = 0;                        // frames in the flipbook
   int texture = -1;                           // index of its frames in the FlipbookRenderer
   bool motion_vectors = false;                // the flipbook has them: frames blend between steps
+  bool six_way = false;                       // six-way lightmaps: smoke relit by the scene's light
 };
 
 }  // namespace pyro

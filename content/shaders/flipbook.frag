@@ -10,6 +10,12 @@
 // FlipBook_MotionVectors do it) samples a at uv - t m_a(uv) and b at uv + (1 - t) m_b(uv) and
 // mixes them by t; m is a frame's motion over one frame in UV (v down, as these UVs), times the
 // frames b lies ahead of a. Without motion vectors, t is 0 and the frame is shown as it is.
+// A six-way flipbook (u_six_way: smoke baked under six lights, Unity VFX Graph's packing, A =
+// right/top/back + alpha, B = left/bottom/front + emissive; systems/six_way_lighting/
+// six_way_basis.h) is relit here by Unity's blend (URP SixWayLighting.hlsl, SixWayLightBlend):
+// with w the unit vector towards the light in the fire's frame (x right, y up, z toward the
+// viewer), lighting = sum over the axes of w_axis^2 times the face on w_axis's side. The smoke's
+// colour is (light lighting + ambient + emissive) alpha, premultiplied: it is blended over.
 in vec3 v_uv_layer;
 in float v_intensity;
 in vec3 v_next_blend_scale;  // next layer, t, motion scale
@@ -17,12 +23,31 @@ in vec3 v_next_blend_scale;  // next layer, t, motion scale
 layout(binding = 0) uniform sampler2DArray u_frames;  // sRGB texels, read as linear
 layout(binding = 1) uniform sampler2DArray u_motion;  // RG: motion over one frame, frame UV
 uniform bool u_has_motion;
+layout(binding = 2) uniform sampler2DArray u_six_way_b;  // left, bottom, front, emissive: linear
+uniform bool u_six_way;
+uniform vec3 u_towards_light;  // unit, the fire's frame
+uniform vec3 u_light_color;
+uniform vec3 u_ambient;
 
 #include "highlight_rolloff.glsl"
 
 layout(location = 0) out vec4 o_color;
 
+// Lightmap A (right, top, back, alpha) and B (left, bottom, front, emissive) relit.
+vec4 six_way_lit(vec4 a, vec4 b) {
+  const vec3 w = u_towards_light;
+  const vec3 positive = vec3(a.r, a.g, b.b);  // right (+x), top (+y), front (+z)
+  const vec3 negative = vec3(b.r, b.g, a.b);  // left (-x), bottom (-y), back (-z)
+  const float lighting = dot(w * w, mix(negative, positive, greaterThanEqual(w, vec3(0.0))));
+  const vec3 color = (u_light_color * lighting + u_ambient + vec3(b.a)) * v_intensity;
+  return vec4(color * a.a, a.a);
+}
+
 void main() {
+  if (u_six_way) {
+    o_color = six_way_lit(texture(u_frames, v_uv_layer), texture(u_six_way_b, v_uv_layer));
+    return;
+  }
   vec4 t;
   if (u_has_motion) {
     const vec2 uv = v_uv_layer.xy;

@@ -8,7 +8,8 @@
 namespace pyro {
 
 // Per frame, the mean over every texel of its sRGB colour made linear, times its alpha when
-// `blend` is linear-alpha (one-minus-destination ignores alpha: black is transparent).
+// `blend` is linear-alpha (one-minus-destination ignores alpha: black is transparent). A six-way
+// flipbook's: the mean of its emissive value times its alpha, grey (0 for baked smoke).
 FlipbookEmission flipbook_emission(const FlipbookFrames& frames, FlipbookBlend blend);
 
 }  // namespace pyro

@@ -12,6 +12,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/png_file.h"
 #include "systems/flipbook_fire/flipbook_atlas_folder.h"
+#include "systems/flipbook_fire/flipbook_six_way_folder.h"
 
 namespace pyro {
 
@@ -153,6 +154,7 @@ std::vector<uint8_t> flipbook_rgba(const uint8_t* pixels, int width, int height,
 
 FlipbookFrames read_flipbook_folder(const std::string& folder) {
   if (holds_flipbook_atlas(folder)) return read_flipbook_atlas(folder);
+  if (holds_six_way_bake(folder)) return read_six_way_flipbook(folder);
   FlipbookFrames f;
   f.folder = folder;
   f.files = list_png_files(folder);
@@ -183,6 +185,24 @@ void crop_motion(std::vector<MotionField>& motion, int x0, int y0, int w, int h)
   }
 }
 
+struct FrameCrop {
+  int full_width, x0, y0, w, h;
+};
+
+// The crop of an RGBA frame, channels from `first_faded` on scaled by their row's `keep`.
+void crop_and_fade(std::vector<uint8_t>& frame, const FrameCrop& c, const std::vector<float>& keep,
+                   int first_faded) {
+  std::vector<uint8_t> out(static_cast<size_t>(c.w) * c.h * 4);
+  for (int y = 0; y < c.h; ++y)
+    for (int x = 0; x < c.w; ++x)
+      for (int ch = 0; ch < 4; ++ch) {
+        const uint8_t v = frame[(static_cast<size_t>(c.y0 + y) * c.full_width + (c.x0 + x)) * 4 + ch];
+        const float k = ch >= first_faded ? keep[static_cast<size_t>(y)] : 1.0f;
+        out[(static_cast<size_t>(y) * c.w + x) * 4 + ch] = static_cast<uint8_t>(std::lround(v * k));
+      }
+  frame = std::move(out);
+}
+
 }  // namespace
 
 float base_softening(float a, float base_line, float soften) {
@@ -205,17 +225,10 @@ void prepare_flipbook(FlipbookFrames& frames, const FlipbookPreparation& p) {
   for (int y = 0; y < h; ++y)
     keep[static_cast<size_t>(y)] =
         base_softening((static_cast<float>(h - y) - 0.5f) / static_cast<float>(h), p.base_line, p.soften);
-  for (std::vector<uint8_t>& frame : frames.rgba) {
-    std::vector<uint8_t> out(static_cast<size_t>(w) * h * 4);
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        for (int ch = 0; ch < 4; ++ch) {
-          const uint8_t v = frame[(static_cast<size_t>(y0 + y) * frames.width + (x0 + x)) * 4 + ch];
-          out[(static_cast<size_t>(y) * w + x) * 4 + ch] =
-              static_cast<uint8_t>(std::lround(v * keep[static_cast<size_t>(y)]));
-        }
-    frame = std::move(out);
-  }
+  const FrameCrop crop{frames.width, x0, y0, w, h};
+  // A six-way flipbook's lightmaps are lighting: only its alpha (channel 3 of A) fades.
+  for (std::vector<uint8_t>& frame : frames.rgba) crop_and_fade(frame, crop, keep, frames.six_way() ? 3 : 0);
+  for (std::vector<uint8_t>& frame : frames.six_way_b) crop_and_fade(frame, crop, keep, 4);
   crop_motion(frames.motion, x0, y0, w, h);
   frames.width = w;
   frames.height = h;

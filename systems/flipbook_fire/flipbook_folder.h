@@ -6,7 +6,8 @@
 // folder (written by the bake) states the frame count, which is then checked too. A folder holding
 // an atlas sidecar (atlas.json, flipbook_atlas_sidecar.h) is read as an atlas instead: its tiles
 // become the same frames a folder of the same frames gives, with the motion vectors when the
-// bake wrote them (flipbook_atlas_folder.h).
+// bake wrote them (flipbook_atlas_folder.h). A folder holding a six-way sidecar (six_way.json,
+// from `pyro bake-flipbook --six-way`) is read as six-way lightmaps (flipbook_six_way_folder.h).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,6 +24,12 @@ struct FlipbookFrames {
   std::vector<std::vector<uint8_t>> rgba;     // per frame, 8-bit sRGB RGBA, row 0 at the top
   // Per frame, the medium's motion over one frame (an atlas bake's motion.png); empty: none.
   std::vector<MotionField> motion;
+  // Per frame, six-way lightmap B (left, bottom, front, emissive; Unity VFX Graph's packing,
+  // systems/six_way_lighting/six_way_basis.h); empty: not a six-way flipbook. When present,
+  // `rgba` holds lightmap A (right, top, back, alpha), and both hold linear values, not sRGB.
+  std::vector<std::vector<uint8_t>> six_way_b;
+
+  bool six_way() const { return !six_way_b.empty(); }
 };
 
 // One frame's RGBA from 8-bit pixels of 1 to 4 channels (below).
@@ -37,7 +44,8 @@ FlipbookFrames read_flipbook_folder(const std::string& folder);
 // `soften`. Row y (0 at the top) of a frame h rows high, at height above the bottom
 // a = (h - y - 0.5) / h, keeps the fraction
 //   0 for a < base_line;  (a - base_line) / soften for a < base_line + soften;  1 above,
-// of every channel (alpha included). Motion vectors are cropped with their frames and rescaled to
+// of every channel (alpha included); of a six-way flipbook, of its alpha alone (its lighting
+// stays: the smoke thins out, it does not darken), both lightmaps cropped. Motion vectors are cropped with their frames and rescaled to
 // the cropped frame's UV. Throws std::invalid_argument for a crop outside [0, 1] or
 // empty (the scene loader checks these first).
 void prepare_flipbook(FlipbookFrames& frames, const FlipbookPreparation& preparation);

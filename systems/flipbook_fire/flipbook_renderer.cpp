@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "engine/core/user_error.h"
@@ -28,6 +29,40 @@ gpu::Texture motion_texture(const FlipbookFrames& frames) {
   return t;
 }
 
+// The frames as a mipmapped RGBA8 array: sRGB-encoded colour, or linear lightmap values.
+gpu::Texture frame_array(const std::vector<std::vector<uint8_t>>& layers, int width, int height,
+                         GLenum internal_format) {
+  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(width, height))));
+  gpu::Texture t = gpu::make_texture(GL_TEXTURE_2D_ARRAY);
+  glTextureStorage3D(t.get(), levels, internal_format, width, height, static_cast<GLsizei>(layers.size()));
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (size_t layer = 0; layer < layers.size(); ++layer)
+    glTextureSubImage3D(t.get(), 0, 0, 0, static_cast<GLint>(layer), width, height, 1, GL_RGBA,
+                        GL_UNSIGNED_BYTE, layers[layer].data());
+  glGenerateTextureMipmap(t.get());
+  glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+}  // namespace
+
+FlipbookLight flipbook_light(const glm::vec3& sun_direction, const glm::vec3& sun_color,
+                             const glm::vec3& ambient, const FireFrame& frame) {
+  FlipbookLight light;
+  light.ambient = ambient;
+  const float length = glm::length(sun_direction);
+  if (!(length > 0.0f)) {
+    light.color = glm::vec3(0.0f);
+    return light;
+  }
+  const glm::vec3 towards = -sun_direction / length;
+  light.towards_light = {glm::dot(towards, frame.right), glm::dot(towards, frame.up),
+                         glm::dot(towards, frame.toward)};
+  light.color = sun_color;
+  return light;
 }
 
 FlipbookRenderer::FlipbookRenderer()
@@ -58,20 +93,13 @@ int FlipbookRenderer::add_flipbook(const FlipbookFrames& frames) {
                         std::to_string(frames.rgba.size()) + " frames of " +
                         std::to_string(frames.width) + "x" + std::to_string(frames.height));
   }
-  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(frames.width, frames.height))));
-  gpu::Texture t = gpu::make_texture(GL_TEXTURE_2D_ARRAY);
-  glTextureStorage3D(t.get(), levels, GL_SRGB8_ALPHA8, frames.width, frames.height,
-                     static_cast<GLsizei>(frames.rgba.size()));
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  for (size_t layer = 0; layer < frames.rgba.size(); ++layer)
-    glTextureSubImage3D(t.get(), 0, 0, 0, static_cast<GLint>(layer), frames.width, frames.height, 1,
-                        GL_RGBA, GL_UNSIGNED_BYTE, frames.rgba[layer].data());
-  glGenerateTextureMipmap(t.get());
-  glTextureParameteri(t.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(t.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(t.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(t.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  Flipbook book{std::move(t), {}, false};
+  const GLenum format = frames.six_way() ? GL_RGBA8 : GL_SRGB8_ALPHA8;
+  gpu::Texture t = frame_array(frames.rgba, frames.width, frames.height, format);
+  Flipbook book{std::move(t), {}, false, {}, false};
+  if (frames.six_way()) {
+    book.six_way_b = frame_array(frames.six_way_b, frames.width, frames.height, GL_RGBA8);
+    book.six_way = true;
+  }
   if (frames.motion.size() == frames.rgba.size()) {
     book.motion = motion_texture(frames);
     book.has_motion = true;
@@ -81,7 +109,8 @@ int FlipbookRenderer::add_flipbook(const FlipbookFrames& frames) {
 }
 
 void FlipbookRenderer::draw(const std::vector<FlipbookQuad>& quads, int texture, FlipbookBlend blend,
-                            const CameraFrame& view, const gpu::RenderTarget& target) {
+                            const FlipbookLight& light, const CameraFrame& view,
+                            const gpu::RenderTarget& target) {
   if (quads.empty()) return;
   if (texture < 0 || static_cast<size_t>(texture) >= flipbooks_.size())
     throw std::out_of_range("FlipbookRenderer::draw: no such flipbook");
@@ -113,7 +142,11 @@ void FlipbookRenderer::draw(const std::vector<FlipbookQuad>& quads, int texture,
   glDepthMask(GL_FALSE);
   glDisable(GL_CULL_FACE);
   glEnable(GL_BLEND);
-  if (blend == FlipbookBlend::one_minus_destination) {
+  const Flipbook& book = flipbooks_[static_cast<size_t>(texture)];
+  if (book.six_way) {
+    // The shader gives the lit smoke premultiplied by its alpha: over, with coverage.
+    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  } else if (blend == FlipbookBlend::one_minus_destination) {
     // Rose 2007, section 4.3: S = 1 - D, D = 1 on every channel: result = src (1 - dst) + dst.
     glBlendFunc(GL_ONE_MINUS_DST_COLOR, GL_ONE);
   } else {
@@ -122,10 +155,16 @@ void FlipbookRenderer::draw(const std::vector<FlipbookQuad>& quads, int texture,
   glUseProgram(program_.get());
   glUniformMatrix4fv(gpu::uniform_location(program_, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(view.view_projection));
-  const Flipbook& book = flipbooks_[static_cast<size_t>(texture)];
   glUniform1i(gpu::uniform_location(program_, "u_has_motion"), book.has_motion ? 1 : 0);
+  glUniform1i(gpu::uniform_location(program_, "u_six_way"), book.six_way ? 1 : 0);
   glBindTextureUnit(0, book.frames.get());
   if (book.has_motion) glBindTextureUnit(1, book.motion.get());
+  if (book.six_way) {
+    glBindTextureUnit(2, book.six_way_b.get());
+    glUniform3fv(gpu::uniform_location(program_, "u_towards_light"), 1, glm::value_ptr(light.towards_light));
+    glUniform3fv(gpu::uniform_location(program_, "u_light_color"), 1, glm::value_ptr(light.color));
+    glUniform3fv(gpu::uniform_location(program_, "u_ambient"), 1, glm::value_ptr(light.ambient));
+  }
   glBindVertexArray(vao_.get());
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count));
   glBindVertexArray(0);

@@ -5,8 +5,15 @@
 // fire's blend: (1 - dst colour, 1) or linear alpha. A flipbook with motion vectors gets a second
 // array (RG16F, frame UV per frame) and is drawn between its frames by the motion-vector blend
 // (flipbook_motion_blend.h, content/shaders/flipbook.frag); without, each step shows its frame.
+// A six-way flipbook (smoke baked as lightmaps, flipbook_six_way_folder.h) gets its two lightmaps
+// as linear RGBA8 arrays and is relit per fragment by Unity's six-way blend
+// (systems/six_way_lighting/six_way_basis.h) under the light it is given, and drawn over what is
+// behind it with premultiplied alpha whatever the fire's blend: it is a medium, not a glow.
 #include <vector>
 
+#include <glm/vec3.hpp>
+
+#include "components/flipbook_draw_list.h"
 #include "components/flipbook_fire.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
@@ -16,14 +23,27 @@
 
 namespace pyro {
 
+// The light a six-way flipbook is drawn under.
+struct FlipbookLight {
+  glm::vec3 towards_light{0.0f, 0.0f, 1.0f};  // unit, in the fire's frame: x right, y up, z toward the viewer
+  glm::vec3 color{1.0f};                      // the light's colour times its intensity
+  glm::vec3 ambient{0.0f};
+};
+
+// The scene's sun in a fire's frame (components/flipbook_draw_list.h): towards the light is
+// minus its travel direction, normalised (a zero direction gives no directional light).
+FlipbookLight flipbook_light(const glm::vec3& sun_direction, const glm::vec3& sun_color,
+                             const glm::vec3& ambient, const FireFrame& frame);
+
 class FlipbookRenderer {
  public:
   FlipbookRenderer();
   // Uploads a flipbook's frames; returns the index that FlipbookFire::texture refers to.
   int add_flipbook(const FlipbookFrames& frames);
-  // Blends one fire's quads (back to front) into `target` as seen from `view`.
+  // Blends one fire's quads (back to front) into `target` as seen from `view`; `light` lights a
+  // six-way flipbook (others ignore it).
   void draw(const std::vector<FlipbookQuad>& quads, int texture, FlipbookBlend blend,
-            const CameraFrame& view, const gpu::RenderTarget& target);
+            const FlipbookLight& light, const CameraFrame& view, const gpu::RenderTarget& target);
 
  private:
   gpu::Program program_;
@@ -34,6 +54,8 @@ class FlipbookRenderer {
     gpu::Texture frames;
     gpu::Texture motion;  // empty when the flipbook has no motion vectors
     bool has_motion = false;
+    gpu::Texture six_way_b;  // lightmap B of a six-way flipbook (`frames` then holds A)
+    bool six_way = false;
   };
   std::vector<Flipbook> flipbooks_;
   std::vector<float> vertices_;

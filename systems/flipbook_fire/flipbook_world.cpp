@@ -51,6 +51,7 @@ void add_flipbook_fires(ecs::World& world, const std::vector<FlipbookFire>& fire
     fire.texture = textures.at(index);
     fire.frame_count = static_cast<int>(assets.frames[index].rgba.size());
     fire.motion_vectors = !assets.frames[index].motion.empty();
+    fire.six_way = assets.frames[index].six_way();
     fire.billboards = expand_flipbook_groups(fire);
     const ecs::Entity e = world.create();
     world.emplace<FlipbookEmission>(e, flipbook_emission(assets.frames[index], fire.blend));

@@ -53,7 +53,7 @@ const ParameterTable& fire_keys() {
            .with_default(d.blend),
        number_key("frames_per_second", kPositive, "Flipbook steps per second of scene time.")
            .with_default(d.frames_per_second),
-       string_key("flipbook", "A folder of PNG flame frames (absent: the engine's baked flipbook)."),
+       string_key("flipbook", "A folder of PNG flame frames, a flipbook atlas or a six-way bake (absent: the engine's baked flipbook)."),
        object_key("preparation", fire_preparation_keys(), "How the frames are prepared."),
        objects_key("groups", fire_group_keys(), "Groups of billboards (absent: three overlapped pairs).")
            .with_min_items(1)}};
