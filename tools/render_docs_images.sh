@@ -46,6 +46,8 @@ shot explosion_lit explosion 30 384 384 --shadows map
 shot explosion_dusk explosion_dusk 30 384 384
 shot explosion_behind_tower explosion_behind_tower 30 384 384
 shot flipbook_fire flipbook_fire 12 192 288
+shot smoke_stacks smoke_stacks 0 480 300
+shot smoke_stacks_backlit smoke_stacks 180 480 300
 shot campfire campfire 20 480 360 --stereo side-by-side
 shot flipbook_grid flipbook_grid 20 320 240 --stereo side-by-side
 shot explosion_anaglyph explosion 30 384 384 --stereo anaglyph
