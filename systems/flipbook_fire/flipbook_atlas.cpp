@@ -42,20 +42,36 @@ AtlasLayout parse_atlas_grid(const std::string& text, const std::string& option)
   return l;
 }
 
-std::vector<uint8_t> pack_atlas(const AtlasLayout& l, const std::vector<std::vector<uint8_t>>& frames,
-                                int channels) {
+namespace {
+
+// Bytes or floats alike: each frame's rows copied into its tile, the rest left zero.
+template <typename Sample>
+std::vector<Sample> pack_tiles(const AtlasLayout& l, const std::vector<std::vector<Sample>>& frames,
+                               int channels) {
   if (frames.size() > static_cast<size_t>(l.tiles()))
     throw std::invalid_argument("pack_atlas: more frames than tiles");
-  const size_t frame_bytes = static_cast<size_t>(l.frame_width) * l.frame_height * channels;
-  std::vector<uint8_t> atlas(static_cast<size_t>(l.width()) * l.height() * channels, 0);
+  const size_t frame_samples = static_cast<size_t>(l.frame_width) * l.frame_height * channels;
+  std::vector<Sample> atlas(static_cast<size_t>(l.width()) * l.height() * channels, Sample{0});
+  const size_t row_samples = static_cast<size_t>(l.frame_width) * channels;
   for (size_t i = 0; i < frames.size(); ++i) {
-    if (frames[i].size() != frame_bytes) throw std::invalid_argument("pack_atlas: frame of the wrong size");
-    const size_t row_bytes = static_cast<size_t>(l.frame_width) * channels;
+    if (frames[i].size() != frame_samples) throw std::invalid_argument("pack_atlas: frame of the wrong size");
     for (int y = 0; y < l.frame_height; ++y)
       std::memcpy(atlas.data() + tile_row_offset(l, static_cast<int>(i), y, channels),
-                  frames[i].data() + static_cast<size_t>(y) * row_bytes, row_bytes);
+                  frames[i].data() + static_cast<size_t>(y) * row_samples, row_samples * sizeof(Sample));
   }
   return atlas;
+}
+
+}  // namespace
+
+std::vector<uint8_t> pack_atlas(const AtlasLayout& l, const std::vector<std::vector<uint8_t>>& frames,
+                                int channels) {
+  return pack_tiles(l, frames, channels);
+}
+
+std::vector<float> pack_atlas(const AtlasLayout& l, const std::vector<std::vector<float>>& frames,
+                              int channels) {
+  return pack_tiles(l, frames, channels);
 }
 
 std::vector<std::vector<uint8_t>> split_atlas(const AtlasLayout& l, const std::vector<uint8_t>& atlas,

@@ -28,6 +28,9 @@ AtlasLayout parse_atlas_grid(const std::string& text, const std::string& option)
 // than tiles or a frame has the wrong size.
 std::vector<uint8_t> pack_atlas(const AtlasLayout& layout, const std::vector<std::vector<uint8_t>>& frames,
                                 int channels);
+// The same of float frames (linear data: an EXR atlas).
+std::vector<float> pack_atlas(const AtlasLayout& layout, const std::vector<std::vector<float>>& frames,
+                              int channels);
 
 // The first `frames` tiles of `atlas` (width() x height() x channels), in frame order.
 std::vector<std::vector<uint8_t>> split_atlas(const AtlasLayout& layout, const std::vector<uint8_t>& atlas,

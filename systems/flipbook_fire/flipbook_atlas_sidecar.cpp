@@ -72,6 +72,14 @@ nlohmann::json atlas_sidecar_json(const AtlasSidecar& s) {
                            {"encoding", kEncoding},
                            {"v_axis", kVAxis},
                            {"strength_choice", "the largest |u| or |v| of the bake (x 128/127): nothing clamps"}};
+  if (!s.linear_image.empty())
+    j["linear"] = {{"image", s.linear_image},
+                   {"color_space", "linear"},
+                   {"channels", "RGBA half float, alpha premultiplied, before the highlight roll-off"}};
+  if (!s.motion_linear_image.empty() && j.contains("motion_vectors")) {
+    j["motion_vectors"]["linear_image"] = s.motion_linear_image;
+    j["motion_vectors"]["linear_encoding"] = "R = u, G = v up, frame UV per frame, half float, unscaled";
+  }
   return j;
 }
 
@@ -95,7 +103,9 @@ AtlasSidecar parse_atlas_sidecar(const std::string& file, const nlohmann::json& 
     const nlohmann::json& m = j["motion_vectors"];
     s.motion_image = require_string(file, m, "/motion_vectors", "image");
     s.motion_strength = static_cast<float>(require_positive(file, m, "/motion_vectors", "strength"));
+    if (m.contains("linear_image")) s.motion_linear_image = require_string(file, m, "/motion_vectors", "linear_image");
   }
+  if (j.contains("linear")) s.linear_image = require_string(file, j["linear"], "/linear", "image");
   return s;
 }
 

@@ -25,6 +25,11 @@ struct AtlasSidecar {
   // The motion-vector atlas: empty when the bake has none.
   std::string motion_image;
   float motion_strength = 0.0f;
+  // The same atlases as OpenEXR, for linear data (empty: none): colour as linear half-float
+  // RGBA, alpha premultiplied, before the shown frame's highlight roll-off; motion as R = u,
+  // G = v up in frame UV per frame, exact (no bias, strength or rounding).
+  std::string linear_image;
+  std::string motion_linear_image;
 };
 
 nlohmann::json atlas_sidecar_json(const AtlasSidecar& sidecar);

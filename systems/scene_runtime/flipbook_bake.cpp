@@ -13,6 +13,7 @@
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "systems/scene/scene_loader.h"
+#include "engine/io/exr_file.h"
 #include "engine/io/png_file.h"
 #include "engine/io/folder_replacement.h"
 #include "engine/math/color.h"
@@ -76,7 +77,21 @@ struct SimulatedFrames {
   int width = 0, height = 0;
   std::vector<std::vector<uint8_t>> rgba;
   std::vector<MotionSums> motion;
+  std::vector<std::vector<float>> linear;  // for an atlas: linear RGBA, premultiplied
 };
+
+// The frame just drawn, linear, for the EXR atlas: the one view, at the shown frame's size.
+std::vector<float> linear_frame(SceneRuntime& runtime, int width, int height) {
+  std::vector<LinearView> views = runtime.read_linear(false);
+  if (views.size() != 1 || views[0].width != width || views[0].height != height)
+    throw UserError(runtime.scene().file, "/quality",
+                    "expected a mono scene drawn at full size for the linear (EXR) atlas, found " +
+                        std::to_string(views.size()) + " view(s) of " +
+                        (views.empty() ? std::string("no size")
+                                       : std::to_string(views[0].width) + "x" + std::to_string(views[0].height)) +
+                        " for a " + std::to_string(width) + "x" + std::to_string(height) + " frame");
+  return std::move(views[0].rgba);
+}
 
 // The particles of every set in the world, as the motion splat takes them.
 std::vector<MotionParticle> motion_particles(ecs::World& world) {
@@ -100,6 +115,7 @@ SimulatedFrames simulate(SceneRuntime& runtime, const FlipbookBakeOptions& optio
     sim.height = image.height;
     sim.rgba.push_back(std::move(image.rgba));
     if (!bakes_atlas(options)) continue;
+    sim.linear.push_back(linear_frame(runtime, sim.width, sim.height));
     MotionSums& sums = sim.motion.emplace_back(image.width, image.height);
     if (const View* view = runtime.world().try_resource<const View>())
       splat_particle_motion(motion_particles(runtime.world()), view->frame, dt, sums);
@@ -133,6 +149,36 @@ std::vector<uint8_t> written_frame(const SimulatedFrames& sim, int f, const Flip
   }
   apply_frame_fade(options.fade, sim.width, sim.height, rgb);
   return rgb;
+}
+
+// Written frame f, linear RGBA (premultiplied) for the EXR atlas: the same cross-fade and border
+// fade as the PNG frame's, on every channel, without the shown frame's roll-off or rounding.
+std::vector<float> written_linear(const SimulatedFrames& sim, int f, const FlipbookBakeOptions& options) {
+  std::vector<float> out = sim.linear[static_cast<size_t>(f)];
+  if (f < options.loop_blend) {
+    const std::vector<float>& b = sim.linear[static_cast<size_t>(options.frames + f)];
+    const float w = own_weight(f, options);
+    for (size_t i = 0; i < out.size(); ++i) out[i] = w * out[i] + (1.0f - w) * b[i];
+  }
+  for (int y = 0; y < sim.height; ++y)
+    for (int x = 0; x < sim.width; ++x) {
+      const float k = frame_fade_weight(options.fade, sim.width, sim.height, x, y);
+      for (int c = 0; c < 4; ++c) out[(static_cast<size_t>(y) * sim.width + x) * 4 + c] *= k;
+    }
+  return out;
+}
+
+// A motion field as RGBA floats for the EXR motion atlas: R = u, G = v up (the PNG's axes,
+// unscaled and unbiased), B = 0, A = 1.
+std::vector<float> motion_floats(const MotionField& m) {
+  std::vector<float> out(static_cast<size_t>(m.width) * m.height * 4);
+  for (size_t i = 0; i < out.size() / 4; ++i) {
+    out[i * 4 + 0] = m.uv[i * 2];
+    out[i * 4 + 1] = -m.uv[i * 2 + 1];
+    out[i * 4 + 2] = 0.0f;
+    out[i * 4 + 3] = 1.0f;
+  }
+  return out;
 }
 
 // Written frame f's motion: the same cross-fade of the simulated frames' motion sums.
@@ -174,6 +220,22 @@ void write_frame_folder(const SimulatedFrames& sim, const SceneDescription& scen
   result.files.push_back((fs::path(out) / "flipbook.json").string());
 }
 
+// The EXR atlases beside the PNG ones: linear colour (half RGBA, premultiplied) and exact motion.
+void write_linear_atlases(const SimulatedFrames& sim, const AtlasSidecar& s,
+                          const std::vector<MotionField>& motion, const FlipbookBakeOptions& options,
+                          const FolderReplacement& staging) {
+  std::vector<std::vector<float>> colour, motion_tiles;
+  for (int f = 0; f < options.frames; ++f) colour.push_back(written_linear(sim, f, options));
+  for (const MotionField& m : motion) motion_tiles.push_back(motion_floats(m));
+  ExrImage image;
+  image.width = s.layout.width();
+  image.height = s.layout.height();
+  image.rgba = pack_atlas(s.layout, colour, 4);
+  write_exr((staging.path() / s.linear_image).string(), image);
+  image.rgba = pack_atlas(s.layout, motion_tiles, 4);
+  write_exr((staging.path() / s.motion_linear_image).string(), image);
+}
+
 void write_atlas(const SimulatedFrames& sim, const SceneDescription& scene,
                  const FlipbookBakeOptions& options, const std::string& out,
                  const FolderReplacement& staging, FlipbookBakeResult& result) {
@@ -186,6 +248,8 @@ void write_atlas(const SimulatedFrames& sim, const SceneDescription& scene,
   s.loop_blend = options.loop_blend;
   s.engine_version = options.engine_version;
   s.motion_image = "motion.png";
+  s.linear_image = "atlas.exr";
+  s.motion_linear_image = "motion.exr";
   std::vector<std::vector<uint8_t>> colour, motion_tiles;
   std::vector<MotionField> motion;
   for (int f = 0; f < options.frames; ++f) {
@@ -198,8 +262,10 @@ void write_atlas(const SimulatedFrames& sim, const SceneDescription& scene,
             pack_atlas(s.layout, colour, 3));
   write_png((staging.path() / s.motion_image).string(), s.layout.width(), s.layout.height(), 4,
             pack_atlas(s.layout, motion_tiles, 4));
+  write_linear_atlases(sim, s, motion, options, staging);
   write_text_file((staging.path() / "atlas.json").string(), atlas_sidecar_json(s).dump(2) + "\n");
-  for (const char* name : {"atlas.png", "motion.png", "atlas.json"})
+  for (const std::string& name : {s.image, s.motion_image, s.linear_image, s.motion_linear_image,
+                                  std::string("atlas.json")})
     result.files.push_back((fs::path(out) / name).string());
 }
 
