@@ -26,8 +26,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kW = 64, kH = 48;
-constexpr float kBackground = 0.2f;
+constexpr int kSixWayWidth = 64, kSixWayHeight = 48;
+constexpr float kSixWayBackground = 0.2f;
 // Each face a different value, so that a face read for another shows: right, top, back, left,
 // bottom, front (SixWayFace order), then alpha and emissive.
 constexpr std::array<uint8_t, 6> kFaces{230, 180, 40, 90, 20, 140};
@@ -65,9 +65,9 @@ SixWayValues faces() {
 // fire's frame is the world's: right +x, up +y, toward the viewer +z.
 SceneDescription six_way_scene(const std::string& folder, const glm::vec3& towards_light) {
   SceneDescription s;
-  s.width = kW;
-  s.height = kH;
-  s.background = glm::vec3(kBackground);
+  s.width = kSixWayWidth;
+  s.height = kSixWayHeight;
+  s.background = glm::vec3(kSixWayBackground);
   s.camera.position = {0.0f, 0.5f, 2.0f};
   s.camera.target = {0.0f, 0.5f, 0.0f};
   s.camera.fov_y_deg = 60.0f;
@@ -89,9 +89,9 @@ SceneDescription six_way_scene(const std::string& folder, const glm::vec3& towar
   return s;
 }
 
-glm::vec3 centre_of(SceneRuntime& r) {
+glm::vec3 six_way_centre_pixel(SceneRuntime& r) {
   const std::vector<float> px = r.world().resource<GpuFrame>().eyes[0].scene->read_rgba();
-  const size_t i = (static_cast<size_t>(kH / 2) * kW + kW / 2) * 4;
+  const size_t i = (static_cast<size_t>(kSixWayHeight / 2) * kSixWayWidth + kSixWayWidth / 2) * 4;
   return {px[i], px[i + 1], px[i + 2]};
 }
 
@@ -152,8 +152,8 @@ TEST(FlipbookSixWay, GpuRelightMatchesTheBlendForAxesAndDiagonals) {
     SceneRuntime r(six_way_scene(folder, w), o);
     r.step();
     const float lighting = six_way_relight(faces(), w);
-    const glm::vec3 expected = (light_color * lighting + ambient) * alpha + kBackground * (1.0f - alpha);
-    const glm::vec3 c = centre_of(r);
+    const glm::vec3 expected = (light_color * lighting + ambient) * alpha + kSixWayBackground * (1.0f - alpha);
+    const glm::vec3 c = six_way_centre_pixel(r);
     for (int ch = 0; ch < 3; ++ch)
       EXPECT_NEAR(c[ch], expected[ch], 3e-3f) << "towards the light " << w.x << " " << w.y << " " << w.z;
   }
