@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engine/core/sha256.h"
+#include "engine/io/video_reader.h"
 #include "tests/support/cli_render.h"
 #include "tests/support/file_bytes.h"
 #include "tests/support/test_paths.h"
@@ -88,6 +89,12 @@ TEST(PyroCliFarm, CollectedChunksAreTheBytesOfOneRenderAndADeletedFrameIsNamed) 
   for (const auto& [name, bytes] : frames) sums += sha256_hex(bytes) + "  " + name + "\n";
   EXPECT_EQ(test::read_bytes(out / "SHA256SUMS"), sums);
   EXPECT_FALSE(fs::exists(out / ".farm" / "chunks" / "0-3")) << "a collected chunk's folder goes";
+  const auto video = test::run_pyro({"farm", "collect", out.string(), "--video", (dir / "farm.gif").string()});
+  ASSERT_EQ(video.exit_code, 0) << video.err;
+  const VideoClip clip = read_video((dir / "farm.gif").string());
+  EXPECT_EQ(clip.frame_count(), 6);
+  EXPECT_EQ(clip.width, 32);
+  EXPECT_EQ(clip.height, 24);
 
   fs::remove(out / "frame_0004.png");
   const auto incomplete = test::run_pyro({"farm", "collect", out.string()});
