@@ -10,9 +10,10 @@
 #  3. one chunk's frames deleted from the collected folder: `pyro farm collect` names the range
 #     and exits non-zero.
 # Usage: slurm_farm_test.sh PYRO   (ctest: the slurm_farm test, label "slurm").
-# Needs root (the daemons run as root, as in CI) and Debian's slurm-wlm and munge: without root
-# it exits 77 (ctest's skip); as root without the packages it fails. PYRO_FARM_TEST_CPUS sets
-# the node's CPU count (default: all), so that a timing run can put the tasks one after another.
+# Needs root (the daemons run as root, as in CI) and Debian's slurm-wlm and munge. Without root
+# it exits 77 (ctest's skip), or fails when $CI is set; as root without the packages it fails.
+# PYRO_FARM_TEST_CPUS sets the node's CPU count (default: all), so that a timing run can put the
+# tasks one after another.
 set -euo pipefail
 
 fail() {
@@ -21,6 +22,8 @@ fail() {
 }
 [ $# -eq 1 ] || fail "usage: slurm_farm_test.sh PYRO"
 if [ "$(id -u)" -ne 0 ]; then
+  # CI runs as root and must run this test: there, not being root is a failure.
+  [ -z "${CI:-}" ] || fail "CI is set but this is not root: starting munged, slurmctld and slurmd needs root"
   echo "slurm_farm_test: SKIP: starting munged, slurmctld and slurmd needs root (CI runs as root)"
   exit 77
 fi
