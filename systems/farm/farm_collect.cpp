@@ -4,7 +4,6 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
-
 #include <nlohmann/json.hpp>
 
 #include "engine/core/user_error.h"
@@ -23,8 +22,10 @@ int frame_of_file(const std::string& name) {
   constexpr std::string_view prefix = "frame_";
   if (name.rfind(prefix, 0) != 0) return -1;
   size_t end = prefix.size();
-  while (end < name.size() && end - prefix.size() < 9 && name[end] >= '0' && name[end] <= '9') ++end;
-  if (end == prefix.size() || end == name.size() || (name[end] != '.' && name[end] != '_')) return -1;
+  while (end < name.size() && end - prefix.size() < 9 && name[end] >= '0' && name[end] <= '9')
+    ++end;
+  if (end == prefix.size() || end == name.size() || (name[end] != '.' && name[end] != '_'))
+    return -1;
   return std::stoi(name.substr(prefix.size(), end - prefix.size()));
 }
 
@@ -44,7 +45,8 @@ nlohmann::json read_manifest(const fs::path& folder) {
 
 std::string manifest_digest(const nlohmann::json& m) {
   const nlohmann::json::json_pointer p("/identity/digest");
-  return m.is_object() && m.contains(p) && m.at(p).is_string() ? m.at(p).get<std::string>() : std::string();
+  return m.is_object() && m.contains(p) && m.at(p).is_string() ? m.at(p).get<std::string>()
+                                                               : std::string();
 }
 
 // The frames of `record` whose files `folder`'s manifest names for the record's identity and
@@ -57,7 +59,8 @@ std::set<int> frames_in_manifest(const fs::path& folder, const FarmRecord& recor
   std::error_code ec;
   for (const auto& f : m.at("files")) {
     const int frame = f.is_string() ? frame_of_file(f.get<std::string>()) : -1;
-    if (frame >= record.frames.first && frame <= record.frames.last && fs::exists(folder / f.get<std::string>(), ec))
+    if (frame >= record.frames.first && frame <= record.frames.last &&
+        fs::exists(folder / f.get<std::string>(), ec))
       frames.insert(frame);
   }
   return frames;
@@ -66,7 +69,8 @@ std::set<int> frames_in_manifest(const fs::path& folder, const FarmRecord& recor
 std::vector<fs::path> chunk_folders(const std::string& dir) {
   std::vector<fs::path> folders;
   std::error_code ec;
-  for (fs::directory_iterator it(farm_folder(dir) / "chunks", ec), end; !ec && it != end; it.increment(ec))
+  for (fs::directory_iterator it(farm_folder(dir) / "chunks", ec), end; !ec && it != end;
+       it.increment(ec))
     if (it->is_directory(ec)) folders.push_back(it->path());
   std::sort(folders.begin(), folders.end());
   return folders;
@@ -74,7 +78,8 @@ std::vector<fs::path> chunk_folders(const std::string& dir) {
 
 // A chunk folder locked, its manifest checked against the job's identity; null (with a note when
 // it holds something) when its frames cannot be moved in now.
-std::unique_ptr<OutputFolder> open_chunk(const fs::path& path, const FarmRecord& record, const NoteSink& note) {
+std::unique_ptr<OutputFolder> open_chunk(const fs::path& path, const FarmRecord& record,
+                                         const NoteSink& note) {
   try {
     auto folder = std::make_unique<OutputFolder>(path.string(), record.identity.dump(),
                                                  describe_difference, OutputFolderOptions{});
@@ -104,13 +109,14 @@ std::string run_quality(const OutputFolder& out, std::vector<std::unique_ptr<Out
 
 // Removes what is left of the collected chunks: their manifests (DIR's names their frames now),
 // staging folders of killed tasks, and the folders once empty.
-void remove_collected(std::vector<std::unique_ptr<OutputFolder>>& chunks, const std::vector<fs::path>& paths) {
+void remove_collected(std::vector<std::unique_ptr<OutputFolder>>& chunks,
+                      const std::vector<fs::path>& paths) {
   std::error_code ec;
   for (size_t i = 0; i < chunks.size(); ++i) {
     if (!chunks[i]) continue;
     fs::remove(paths[i] / kOutputManifestName, ec);
     remove_stale_staging(paths[i]);
-    chunks[i].reset();  // unlocks
+    chunks[i].reset();         // unlocks
     fs::remove(paths[i], ec);  // (only when empty)
   }
 }
@@ -138,7 +144,8 @@ void write_checksums(const std::string& dir, const FarmCollection& c) {
     return;
   }
   std::string text;
-  for (const std::string& name : c.files) text += file_sha256((fs::path(dir) / name).string()) + "  " + name + "\n";
+  for (const std::string& name : c.files)
+    text += file_sha256((fs::path(dir) / name).string()) + "  " + name + "\n";
   write_text_file(file.string(), text);
 }
 
@@ -148,12 +155,15 @@ void refuse_other_run(const std::string& dir, const std::string& digest) {
   const nlohmann::json m = read_manifest(dir);
   std::error_code ec;
   if (!fs::exists(fs::path(dir) / kOutputManifestName, ec) || manifest_digest(m) == digest) return;
-  throw UserError(dir, "", "a folder for this farm job's frames; its manifest (" +
-                               std::string(kOutputManifestName) + ") holds another run's (another "
-                               "scene, asset, settings or engine): use another folder");
+  throw UserError(dir, "",
+                  "a folder for this farm job's frames; its manifest (" +
+                      std::string(kOutputManifestName) +
+                      ") holds another run's (another "
+                      "scene, asset, settings or engine): use another folder");
 }
 
-FarmCollection collect_farm(const std::string& dir, const FarmRecord& record, const NoteSink& note) {
+FarmCollection collect_farm(const std::string& dir, const FarmRecord& record,
+                            const NoteSink& note) {
   refuse_other_run(dir, record.digest());
   OutputFolderOptions options;
   options.wait = true;    // a render by hand into DIR finishes first
@@ -163,7 +173,8 @@ FarmCollection collect_farm(const std::string& dir, const FarmRecord& record, co
   std::vector<std::unique_ptr<OutputFolder>> chunks;
   for (const fs::path& p : paths) chunks.push_back(open_chunk(p, record, note));
   const std::string quality = run_quality(out, chunks, paths, note);
-  out.begin(quality.empty() ? "{}" : nlohmann::json{{"quality", nlohmann::json::parse(quality)}}.dump());
+  out.begin(quality.empty() ? "{}"
+                            : nlohmann::json{{"quality", nlohmann::json::parse(quality)}}.dump());
   FarmCollection c;
   c.moved = move_chunks_in(out, chunks, paths, record.frames);
   out.commit();

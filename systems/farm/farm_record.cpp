@@ -13,7 +13,8 @@ namespace fs = std::filesystem;
 fs::path farm_folder(const std::string& dir) { return fs::path(dir) / ".farm"; }
 fs::path farm_record_path(const std::string& dir) { return farm_folder(dir) / "farm.json"; }
 fs::path chunk_folder(const std::string& dir, const FrameRange& chunk) {
-  return farm_folder(dir) / "chunks" / (std::to_string(chunk.first) + "-" + std::to_string(chunk.last));
+  return farm_folder(dir) / "chunks" /
+         (std::to_string(chunk.first) + "-" + std::to_string(chunk.last));
 }
 
 namespace {
@@ -27,15 +28,18 @@ nlohmann::json submission_json(const FarmSubmission& s) {
 }
 
 // The value at `pointer`, of the type `check` accepts; UserError naming both otherwise.
-const nlohmann::json& field(const nlohmann::json& j, const std::string& pointer, const std::string& file,
-                            bool (nlohmann::json::*check)() const noexcept, const std::string& expected) {
+const nlohmann::json& field(const nlohmann::json& j, const std::string& pointer,
+                            const std::string& file, bool (nlohmann::json::*check)() const noexcept,
+                            const std::string& expected) {
   const nlohmann::json::json_pointer p(pointer);
   if (!j.contains(p) || !(j.at(p).*check)()) throw UserError(file, pointer, "expected " + expected);
   return j.at(p);
 }
 
-FrameRange range_from(const nlohmann::json& j, const std::string& pointer, const std::string& file) {
-  const nlohmann::json& r = field(j, pointer, file, &nlohmann::json::is_array, "[first, last] frames");
+FrameRange range_from(const nlohmann::json& j, const std::string& pointer,
+                      const std::string& file) {
+  const nlohmann::json& r =
+      field(j, pointer, file, &nlohmann::json::is_array, "[first, last] frames");
   if (r.size() != 2 || !r[0].is_number_integer() || !r[1].is_number_integer() ||
       r[0].get<int>() < 0 || r[0].get<int>() > r[1].get<int>())
     throw UserError(file, pointer, "expected [first, last] frames with 0 <= first <= last");
@@ -52,12 +56,17 @@ std::vector<std::string> strings_from(const nlohmann::json& j, const std::string
   return out;
 }
 
-FarmSubmission submission_from(const nlohmann::json& j, const std::string& pointer, const std::string& file) {
+FarmSubmission submission_from(const nlohmann::json& j, const std::string& pointer,
+                               const std::string& file) {
   FarmSubmission s;
-  s.array_job = field(j, pointer + "/array_job", file, &nlohmann::json::is_string, "a job id").get<std::string>();
-  s.collect_job = field(j, pointer + "/collect_job", file, &nlohmann::json::is_string, "a job id").get<std::string>();
-  const size_t n = field(j, pointer + "/chunks", file, &nlohmann::json::is_array, "an array of chunks").size();
-  for (size_t i = 0; i < n; ++i) s.chunks.push_back(range_from(j, pointer + "/chunks/" + std::to_string(i), file));
+  s.array_job = field(j, pointer + "/array_job", file, &nlohmann::json::is_string, "a job id")
+                    .get<std::string>();
+  s.collect_job = field(j, pointer + "/collect_job", file, &nlohmann::json::is_string, "a job id")
+                      .get<std::string>();
+  const size_t n =
+      field(j, pointer + "/chunks", file, &nlohmann::json::is_array, "an array of chunks").size();
+  for (size_t i = 0; i < n; ++i)
+    s.chunks.push_back(range_from(j, pointer + "/chunks/" + std::to_string(i), file));
   return s;
 }
 
@@ -88,10 +97,13 @@ FarmRecord farm_record_from_json(const nlohmann::json& j, const std::string& fil
   field(j, "/identity/digest", file, &J::is_string, "the identity's digest");
   r.pyro = field(j, "/pyro", file, &J::is_string, "the pyro binary's path").get<std::string>();
   r.render_options = strings_from(j, "/render_options", file);
-  r.partition = field(j, "/partition", file, &J::is_string, "a partition name or \"\"").get<std::string>();
-  r.frames_per_second = field(j, "/frames_per_second", file, &J::is_number, "the scene's fps").get<double>();
+  r.partition =
+      field(j, "/partition", file, &J::is_string, "a partition name or \"\"").get<std::string>();
+  r.frames_per_second =
+      field(j, "/frames_per_second", file, &J::is_number, "the scene's fps").get<double>();
   const size_t n = field(j, "/submissions", file, &J::is_array, "the jobs submitted").size();
-  for (size_t i = 0; i < n; ++i) r.submissions.push_back(submission_from(j, "/submissions/" + std::to_string(i), file));
+  for (size_t i = 0; i < n; ++i)
+    r.submissions.push_back(submission_from(j, "/submissions/" + std::to_string(i), file));
   return r;
 }
 
@@ -102,11 +114,14 @@ FarmRecord read_farm_record(const std::string& dir) {
   const std::string file = farm_record_path(dir).string();
   std::ifstream in(file, std::ios::binary);
   if (!in)
-    throw UserError(file, "", "the farm record `pyro farm submit` writes into its --out folder; "
-                              "there is none, so " + dir + " holds no farm job");
+    throw UserError(file, "",
+                    "the farm record `pyro farm submit` writes into its --out folder; "
+                    "there is none, so " +
+                        dir + " holds no farm job");
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-  if (j.is_discarded() || !j.is_object()) throw UserError(file, "", "a JSON object (a farm record)");
+  if (j.is_discarded() || !j.is_object())
+    throw UserError(file, "", "a JSON object (a farm record)");
   return farm_record_from_json(j, file);
 }
 

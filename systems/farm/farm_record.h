@@ -7,18 +7,17 @@
 // Slurm jobs submitted so far. Beside it: the batch scripts and the tasks' logs, and chunks/A-B,
 // the output folder of the task rendering frames A..B.
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "systems/scene_runtime/frame_range.h"
 
 namespace pyro {
 
 struct FarmSubmission {
-  std::string array_job;    // the render job array's Slurm job id
-  std::string collect_job;  // the collect job's, run after every task of the array
+  std::string array_job;           // the render job array's Slurm job id
+  std::string collect_job;         // the collect job's, run after every task of the array
   std::vector<FrameRange> chunks;  // one per array task, in task order
 };
 

@@ -29,8 +29,10 @@ std::vector<FrameRange> missing_ranges(const FrameRange& range, const std::set<i
   std::vector<FrameRange> missing;
   for (int f = range.first; f <= range.last; ++f) {
     if (present.count(f)) continue;
-    if (!missing.empty() && missing.back().last == f - 1) missing.back().last = f;
-    else missing.push_back({f, f});
+    if (!missing.empty() && missing.back().last == f - 1)
+      missing.back().last = f;
+    else
+      missing.push_back({f, f});
   }
   return missing;
 }

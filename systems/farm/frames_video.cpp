@@ -19,8 +19,9 @@ void check_one_png_per_frame(const std::vector<std::string>& files) {
     if (std::filesystem::path(name).extension() != ".png")
       throw UserError("--video", "", "PNG frames to encode (--format png); found " + name);
     if (!frames.insert(frame_of_file(name)).second)
-      throw UserError("--video", "", "one PNG per frame; frame " + std::to_string(frame_of_file(name)) +
-                                         " has two (stereo eyes in separate files)");
+      throw UserError("--video", "",
+                      "one PNG per frame; frame " + std::to_string(frame_of_file(name)) +
+                          " has two (stereo eyes in separate files)");
   }
 }
 

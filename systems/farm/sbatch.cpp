@@ -31,8 +31,9 @@ std::string find_on_path(const std::string& name) {
 
 void require_sbatch() {
   if (find_on_path("sbatch").empty())
-    throw UserError("sbatch", "", "Slurm's sbatch on $PATH to submit the jobs; it is not there (run "
-                                  "on a Slurm login node, or pass --dry-run to print the scripts)");
+    throw UserError("sbatch", "",
+                    "Slurm's sbatch on $PATH to submit the jobs; it is not there (run "
+                    "on a Slurm login node, or pass --dry-run to print the scripts)");
 }
 
 namespace {
@@ -43,8 +44,10 @@ std::string read_all(int fd) {
   char buffer[4096];
   for (;;) {
     const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n > 0) text.append(buffer, static_cast<size_t>(n));
-    else if (n == 0 || errno != EINTR) return text;
+    if (n > 0)
+      text.append(buffer, static_cast<size_t>(n));
+    else if (n == 0 || errno != EINTR)
+      return text;
   }
 }
 
@@ -83,8 +86,9 @@ std::string run_sbatch(const std::vector<std::string>& args) {
   // --parsable prints "JOBID" or "JOBID;CLUSTER".
   const std::string id = printed.substr(0, printed.find_first_of(";\n"));
   if (status != 0 || id.empty() || id.find_first_not_of("0123456789") != std::string::npos)
-    throw UserError("sbatch", "", "a job id from sbatch; it exited with status " + std::to_string(status) +
-                                      " and printed \"" + printed + "\" (its message is above)");
+    throw UserError("sbatch", "",
+                    "a job id from sbatch; it exited with status " + std::to_string(status) +
+                        " and printed \"" + printed + "\" (its message is above)");
   return id;
 }
 

@@ -35,7 +35,8 @@ std::string slurm_pattern_path(const std::string& path) {
 // --parsable: sbatch prints the job id alone. `log_pattern` names the log inside DIR/.farm/logs
 // (Slurm's replacements in it are kept).
 std::vector<std::string> common_sbatch_args(const FarmRecord& record, const std::string& dir,
-                                            const std::string& name, const std::string& log_pattern) {
+                                            const std::string& name,
+                                            const std::string& log_pattern) {
   const std::string logs = slurm_pattern_path((farm_folder(dir) / "logs").string());
   std::vector<std::string> args = {"--parsable", "--job-name=" + name,
                                    "--output=" + logs + "/" + log_pattern};
@@ -56,12 +57,14 @@ std::string render_array_script(const FarmRecord& record, const std::string& dir
   for (const std::string& o : record.render_options) options += " " + shell_quote(o);
   return "#!/bin/bash\n"
          "# pyro farm: array task i renders the frames ranges[i] of the scene into its own output\n"
-         "# folder, folders[i]; `pyro farm collect` moves them into the farm's folder. --resume keeps\n"
+         "# folder, folders[i]; `pyro farm collect` moves them into the farm's folder. --resume "
+         "keeps\n"
          "# what a killed or requeued run of the task had finished.\n"
          "set -eu\n" +
          bash_array("ranges", ranges) + bash_array("folders", folders) +
          "i=${SLURM_ARRAY_TASK_ID:?this script runs as a task of a Slurm job array}\n"
-         "exec " + shell_quote(record.pyro) + " render " + shell_quote(record.scene) +
+         "exec " +
+         shell_quote(record.pyro) + " render " + shell_quote(record.scene) +
          " --out \"${folders[$i]}\" --frames \"${ranges[$i]}\" --wait --resume" + options + "\n";
 }
 
@@ -70,12 +73,14 @@ std::string collect_job_script(const FarmRecord& record, const std::string& dir)
          "# pyro farm: after every task of the render array, the frames moved into the farm's\n"
          "# folder and checked; a missing range fails this job (pyro farm resubmit renders it).\n"
          "set -eu\n"
-         "exec " + shell_quote(record.pyro) + " farm collect " + shell_quote(dir) + "\n";
+         "exec " +
+         shell_quote(record.pyro) + " farm collect " + shell_quote(dir) + "\n";
 }
 
 std::vector<std::string> render_array_sbatch_args(const FarmRecord& record, const std::string& dir,
                                                   const std::string& script, int tasks) {
-  std::vector<std::string> args = common_sbatch_args(record, dir, "pyro-render", "render-%A_%a.log");
+  std::vector<std::string> args =
+      common_sbatch_args(record, dir, "pyro-render", "render-%A_%a.log");
   args.push_back("--array=0-" + std::to_string(tasks - 1));
   // A task whose node fails is queued again (and resumes its chunk) rather than lost.
   args.push_back("--requeue");
@@ -84,7 +89,8 @@ std::vector<std::string> render_array_sbatch_args(const FarmRecord& record, cons
 }
 
 std::vector<std::string> collect_sbatch_args(const FarmRecord& record, const std::string& dir,
-                                             const std::string& script, const std::string& array_job) {
+                                             const std::string& script,
+                                             const std::string& array_job) {
   std::vector<std::string> args = common_sbatch_args(record, dir, "pyro-collect", "collect-%j.log");
   args.push_back("--dependency=afterany:" + array_job);
   args.push_back(script);

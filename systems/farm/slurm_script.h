@@ -34,6 +34,7 @@ std::string collect_job_script(const FarmRecord& record, const std::string& dir)
 std::vector<std::string> render_array_sbatch_args(const FarmRecord& record, const std::string& dir,
                                                   const std::string& script, int tasks);
 std::vector<std::string> collect_sbatch_args(const FarmRecord& record, const std::string& dir,
-                                             const std::string& script, const std::string& array_job);
+                                             const std::string& script,
+                                             const std::string& array_job);
 
 }  // namespace pyro

@@ -53,8 +53,8 @@ struct SubmitArgs {
 
 // The farm's own options; every other option given to `farm submit` is a render option, passed
 // on to each task as given.
-const std::set<std::string> kFarmOptions = {"--out", "--frames", "--chunk", "--partition",
-                                            "--dry-run", "--help"};
+const std::set<std::string> kFarmOptions = {"--out",       "--frames",  "--chunk",
+                                            "--partition", "--dry-run", "--help"};
 
 std::vector<std::string> render_options_given(const CLI::App& cmd) {
   std::vector<std::string> args;
@@ -77,23 +77,26 @@ std::vector<std::string> render_options_given(const CLI::App& cmd) {
 std::string this_program() {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) throw UserError("/proc/self/exe", "", "the path of the running pyro, for the tasks to run it");
+  if (ec)
+    throw UserError("/proc/self/exe", "", "the path of the running pyro, for the tasks to run it");
   return exe.string();
 }
 
 // Prints what would be submitted: the scripts and the sbatch command lines.
 void print_dry_run(const std::string& render_path, const std::string& render_script,
                    const std::string& collect_path, const std::string& collect_script,
-                   const std::vector<std::string>& render_args, const std::vector<std::string>& collect_args) {
-  write_stdout("# " + render_path + "\n" + render_script + "\n# " + collect_path + "\n" + collect_script +
-               "\n# submitted with (RENDER_JOB: the job id the first prints)\nsbatch " +
-               shell_command_text(render_args) + "\nsbatch " + shell_command_text(collect_args) + "\n");
+                   const std::vector<std::string>& render_args,
+                   const std::vector<std::string>& collect_args) {
+  write_stdout(
+      "# " + render_path + "\n" + render_script + "\n# " + collect_path + "\n" + collect_script +
+      "\n# submitted with (RENDER_JOB: the job id the first prints)\nsbatch " +
+      shell_command_text(render_args) + "\nsbatch " + shell_command_text(collect_args) + "\n");
 }
 
 // Writes the scripts of submission number record.submissions.size() for `chunks` and submits
 // them (or prints them: `dry_run`), recording the jobs in the farm record.
-void submit_chunks(FarmRecord& record, const std::string& dir, const std::vector<FrameRange>& chunks,
-                   bool dry_run) {
+void submit_chunks(FarmRecord& record, const std::string& dir,
+                   const std::vector<FrameRange>& chunks, bool dry_run) {
   const std::string n = std::to_string(record.submissions.size());
   const std::string render_path = (farm_folder(dir) / ("render-" + n + ".sh")).string();
   const std::string collect_path = (farm_folder(dir) / ("collect-" + n + ".sh")).string();
@@ -108,14 +111,17 @@ void submit_chunks(FarmRecord& record, const std::string& dir, const std::vector
   }
   std::error_code ec;
   fs::create_directories(farm_folder(dir) / "logs", ec);  // Slurm does not create a log's folder
-  if (ec) throw IoError((farm_folder(dir) / "logs").string(), "create the farm's folders", ec.value());
+  if (ec)
+    throw IoError((farm_folder(dir) / "logs").string(), "create the farm's folders", ec.value());
   write_text_file(render_path, render_script);
   write_text_file(collect_path, collect_script);
   write_farm_record(dir, record);  // before any job runs: collect reads it
-  FarmSubmission s{run_sbatch(render_array_sbatch_args(record, dir, render_path, tasks)), "", chunks};
+  FarmSubmission s{run_sbatch(render_array_sbatch_args(record, dir, render_path, tasks)), "",
+                   chunks};
   record.submissions.push_back(s);
   try {
-    record.submissions.back().collect_job = run_sbatch(collect_sbatch_args(record, dir, collect_path, s.array_job));
+    record.submissions.back().collect_job =
+        run_sbatch(collect_sbatch_args(record, dir, collect_path, s.array_job));
   } catch (...) {
     write_farm_record(dir, record);  // the array runs: collect or resubmit can still find it
     throw;
@@ -129,16 +135,18 @@ void submit_chunks(FarmRecord& record, const std::string& dir, const std::vector
 // Everything the user can get wrong that needs no reading of the scene.
 void check_submit_arguments(const SubmitArgs& a) {
   if (a.scene == "-")
-    throw UserError("-", "SCENE", "a scene file every node can read; the tasks cannot read standard input");
+    throw UserError("-", "SCENE",
+                    "a scene file every node can read; the tasks cannot read standard input");
   if (a.depth && a.format != "exr")
     throw UserError("--depth", "", "--format exr: only EXR frames carry a depth channel");
   std::error_code ec;
   if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
     throw UserError(a.out, "--out", "expected a folder for the frames, found a file");
   if (fs::exists(farm_record_path(a.out), ec))
-    throw UserError(a.out, "--out", "a folder with no farm job yet; it holds one (" +
-                                        farm_record_path(a.out).string() + "): `pyro farm resubmit " +
-                                        a.out + "` renders what it is missing");
+    throw UserError(a.out, "--out",
+                    "a folder with no farm job yet; it holds one (" +
+                        farm_record_path(a.out).string() + "): `pyro farm resubmit " + a.out +
+                        "` renders what it is missing");
   if (!a.dry_run) require_sbatch();
 }
 
@@ -181,17 +189,26 @@ void run_submit(const SubmitArgs& a, const CLI::App& cmd) {
 
 void add_submit(CLI::App& farm) {
   auto a = std::make_shared<SubmitArgs>();
-  CLI::App* cmd = farm.add_subcommand("submit", "Render a scene's frames on a Slurm cluster: a job "
-                                                "array of chunks, then a collect job");
-  cmd->add_option("scene", a->scene, "Scene file (JSON) on a file system every node sees")->required();
+  CLI::App* cmd = farm.add_subcommand("submit",
+                                      "Render a scene's frames on a Slurm cluster: a job "
+                                      "array of chunks, then a collect job");
+  cmd->add_option("scene", a->scene, "Scene file (JSON) on a file system every node sees")
+      ->required();
   cmd->add_option("--out", a->out, "Output folder, on a file system every node sees")->required();
-  cmd->add_option("--frames", a->frames, "A:B: frames A..B inclusive (N: frames 0..N-1)")->required();
-  cmd->add_option("--chunk", a->chunk, "Frames per array task")->required()->check(CLI::Range(1, 1000000));
+  cmd->add_option("--frames", a->frames, "A:B: frames A..B inclusive (N: frames 0..N-1)")
+      ->required();
+  cmd->add_option("--chunk", a->chunk, "Frames per array task")
+      ->required()
+      ->check(CLI::Range(1, 1000000));
   cmd->add_option("--partition", a->partition, "Slurm partition (default: the cluster's)");
-  cmd->add_flag("--dry-run", a->dry_run, "Print the batch scripts and sbatch commands; submit nothing");
-  cmd->add_option("--width", a->width, "Image width in pixels (default: the scene's)")->check(CLI::Range(1, 8192));
-  cmd->add_option("--height", a->height, "Image height in pixels (default: the scene's)")->check(CLI::Range(1, 8192));
-  cmd->add_option("--format", a->format, "Frame files: png or exr")->check(CLI::IsMember({"png", "exr"}));
+  cmd->add_flag("--dry-run", a->dry_run,
+                "Print the batch scripts and sbatch commands; submit nothing");
+  cmd->add_option("--width", a->width, "Image width in pixels (default: the scene's)")
+      ->check(CLI::Range(1, 8192));
+  cmd->add_option("--height", a->height, "Image height in pixels (default: the scene's)")
+      ->check(CLI::Range(1, 8192));
+  cmd->add_option("--format", a->format, "Frame files: png or exr")
+      ->check(CLI::IsMember({"png", "exr"}));
   cmd->add_flag("--depth", a->depth, "With --format exr: a view-depth channel Z");
   add_render_options(cmd, a->runtime);
   cmd->callback([a, cmd] { run_submit(*a, *cmd); });
@@ -207,9 +224,10 @@ void run_collect(const CollectArgs& a) {
   if (!a.video.empty()) check_video_path(a.video, "--video");
   const FarmCollection c = collect_farm(a.dir, record, print_note);
   if (!c.missing.empty())
-    throw UserError(a.dir, "", "every frame of " + range_text(record.frames) + "; missing frames " +
-                                   ranges_text(c.missing) + " (`pyro farm resubmit " + a.dir +
-                                   "` renders them again)");
+    throw UserError(a.dir, "",
+                    "every frame of " + range_text(record.frames) + "; missing frames " +
+                        ranges_text(c.missing) + " (`pyro farm resubmit " + a.dir +
+                        "` renders them again)");
   if (!a.video.empty())
     encode_frames_video(a.dir, c.files, a.video, record.frames_per_second, a.video_quality);
   write_stdout("collected frames " + range_text(record.frames) + " into " + a.dir + " (" +
@@ -220,11 +238,14 @@ void run_collect(const CollectArgs& a) {
 
 void add_collect(CLI::App& farm) {
   auto a = std::make_shared<CollectArgs>();
-  CLI::App* cmd = farm.add_subcommand("collect", "Move a farm job's frames into its folder, check "
-                                                 "every frame is there and write their SHA-256");
+  CLI::App* cmd = farm.add_subcommand("collect",
+                                      "Move a farm job's frames into its folder, check "
+                                      "every frame is there and write their SHA-256");
   cmd->add_option("dir", a->dir, "The --out folder of `pyro farm submit`")->required();
-  cmd->add_option("--video", a->video, "Also encode the PNG frames into FILE (.mp4, .webm or .gif)");
-  cmd->add_option("--video-quality", a->video_quality, "0..100 (default 75)")->check(CLI::Range(0, 100));
+  cmd->add_option("--video", a->video,
+                  "Also encode the PNG frames into FILE (.mp4, .webm or .gif)");
+  cmd->add_option("--video-quality", a->video_quality, "0..100 (default 75)")
+      ->check(CLI::Range(0, 100));
   cmd->callback([a] { run_collect(*a); });
 }
 
@@ -237,13 +258,16 @@ void run_resubmit(const ResubmitArgs& a) {
   const std::string dir = normalized_output_path(a.dir).string();
   FarmRecord record = read_farm_record(dir);
   if (::access(record.pyro.c_str(), X_OK) != 0)
-    throw UserError(farm_record_path(dir).string(), "/pyro", "a pyro binary the tasks can run; " +
-                                                                 record.pyro + " is not there");
+    throw UserError(farm_record_path(dir).string(), "/pyro",
+                    "a pyro binary the tasks can run; " + record.pyro + " is not there");
   if (!a.dry_run) require_sbatch();
-  const std::vector<FrameRange> missing = missing_ranges(record.frames, finished_farm_frames(dir, record));
+  const std::vector<FrameRange> missing =
+      missing_ranges(record.frames, finished_farm_frames(dir, record));
   if (missing.empty()) {
-    write_stdout("nothing to resubmit: every frame of " + range_text(record.frames) + " is finished (`pyro "
-                 "farm collect " + dir + "` moves them in)\n");
+    write_stdout("nothing to resubmit: every frame of " + range_text(record.frames) +
+                 " is finished (`pyro "
+                 "farm collect " +
+                 dir + "` moves them in)\n");
     return;
   }
   print_note("resubmitting the missing frames " + ranges_text(missing));
@@ -252,17 +276,20 @@ void run_resubmit(const ResubmitArgs& a) {
 
 void add_resubmit(CLI::App& farm) {
   auto a = std::make_shared<ResubmitArgs>();
-  CLI::App* cmd = farm.add_subcommand("resubmit", "Submit again only the frames a farm job is missing "
-                                                  "(a new array and collect job)");
+  CLI::App* cmd = farm.add_subcommand("resubmit",
+                                      "Submit again only the frames a farm job is missing "
+                                      "(a new array and collect job)");
   cmd->add_option("dir", a->dir, "The --out folder of `pyro farm submit`")->required();
-  cmd->add_flag("--dry-run", a->dry_run, "Print the batch scripts and sbatch commands; submit nothing");
+  cmd->add_flag("--dry-run", a->dry_run,
+                "Print the batch scripts and sbatch commands; submit nothing");
   cmd->callback([a] { run_resubmit(*a); });
 }
 
 }  // namespace
 
 void add_farm_command(CLI::App& app) {
-  CLI::App* farm = app.add_subcommand("farm", "Render a sequence on a Slurm cluster (docs/farm.md)");
+  CLI::App* farm =
+      app.add_subcommand("farm", "Render a sequence on a Slurm cluster (docs/farm.md)");
   farm->require_subcommand(1);
   add_submit(*farm);
   add_collect(*farm);

@@ -23,8 +23,10 @@ nlohmann::json pixel_settings(const SceneDescription& scene, const RuntimeOption
                       {"layer_scale", rs.layer_scale},
                       {"frame_scale", o.frame_scale}};
   if (o.shading) s["shading"] = name_of(*o.shading);
-  if (o.shadows_off) s["shadows"] = "off";
-  else if (o.shadow_method) s["shadows"] = name_of(*o.shadow_method);
+  if (o.shadows_off)
+    s["shadows"] = "off";
+  else if (o.shadow_method)
+    s["shadows"] = name_of(*o.shadow_method);
   if (o.interocular) s["interocular"] = *o.interocular;
   if (o.zero_parallax_distance) s["zero_parallax"] = *o.zero_parallax_distance;
   if (o.swap_eyes) s["swap_eyes"] = *o.swap_eyes;

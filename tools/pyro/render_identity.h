@@ -2,9 +2,8 @@
 // The identity of a `pyro render` run (systems/scene_runtime/run_identity.h) from the command's
 // options: what keys its output folder. `pyro farm submit` computes the same for the job its
 // tasks run, so that `pyro farm collect` can tell their frames apart from another run's.
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "systems/scene/scene_description.h"
 #include "systems/scene_runtime/runtime_options.h"

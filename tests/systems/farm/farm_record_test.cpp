@@ -17,7 +17,8 @@ FarmRecord sample_farm_record() {
   r.scene = "/shared/scenes/explosion.json";
   r.frames = {10, 69};
   r.chunk = 10;
-  r.identity = {{"digest", std::string(64, 'a')}, {"parts", {{"scene", "b"}}}, {"scene_file", r.scene}};
+  r.identity = {
+      {"digest", std::string(64, 'a')}, {"parts", {{"scene", "b"}}}, {"scene_file", r.scene}};
   r.pyro = "/shared/pyro/bin/pyro";
   r.render_options = {"--width", "160", "--depth"};
   r.partition = "render";

@@ -17,12 +17,14 @@ std::vector<std::pair<int, int>> chunk_pairs(const std::vector<FrameRange>& rang
 }
 
 TEST(FrameChunks, CutsARangeIntoChunksWithTheRestLast) {
-  EXPECT_EQ(chunk_pairs(chunk_frames({0, 59}, 10)),
-            (std::vector<std::pair<int, int>>{{0, 9}, {10, 19}, {20, 29}, {30, 39}, {40, 49}, {50, 59}}));
+  EXPECT_EQ(
+      chunk_pairs(chunk_frames({0, 59}, 10)),
+      (std::vector<std::pair<int, int>>{{0, 9}, {10, 19}, {20, 29}, {30, 39}, {40, 49}, {50, 59}}));
   EXPECT_EQ(chunk_pairs(chunk_frames({5, 17}, 5)),
             (std::vector<std::pair<int, int>>{{5, 9}, {10, 14}, {15, 17}}));
   EXPECT_EQ(chunk_pairs(chunk_frames({7, 7}, 10)), (std::vector<std::pair<int, int>>{{7, 7}}));
-  EXPECT_EQ(chunk_pairs(chunk_frames({0, 2}, 1)), (std::vector<std::pair<int, int>>{{0, 0}, {1, 1}, {2, 2}}));
+  EXPECT_EQ(chunk_pairs(chunk_frames({0, 2}, 1)),
+            (std::vector<std::pair<int, int>>{{0, 0}, {1, 1}, {2, 2}}));
 }
 
 TEST(FrameChunks, ChunksCoverEveryFrameOnceForAnyChunkSize) {

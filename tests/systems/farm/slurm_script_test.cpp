@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 // A record whose "pyro" is a script writing its arguments, one per line, into `args_file`.
 FarmRecord slurm_script_record(const fs::path& dir, const fs::path& args_file) {
   const fs::path fake = dir / "fake pyro 'x' $HOME";
-  std::ofstream(fake) << "#!/bin/sh\nprintf '%s\\n' \"$@\" > " << shell_quote(args_file.string()) << "\n";
+  std::ofstream(fake) << "#!/bin/sh\nprintf '%s\\n' \"$@\" > " << shell_quote(args_file.string())
+                      << "\n";
   ::chmod(fake.c_str(), 0755);
   FarmRecord r;
   r.scene = (dir / "my scene; rm -rf $HOME.json").string();
@@ -48,12 +49,14 @@ TEST(SlurmScript, EachArrayTaskRendersItsChunkWithTheWordsQuoted) {
   const std::string run = "SLURM_ARRAY_TASK_ID=1 bash " + shell_quote((tmp / "render.sh").string());
   ASSERT_EQ(std::system(run.c_str()), 0);
   EXPECT_EQ(slurm_script_lines(args),
-            (std::vector<std::string>{"render", r.scene, "--out", (fs::path(dir) / ".farm/chunks/4-7").string(),
-                                      "--frames", "4:7", "--wait", "--resume", "--width", "32", "--stereo",
-                                      "a b'c"}));
+            (std::vector<std::string>{
+                "render", r.scene, "--out", (fs::path(dir) / ".farm/chunks/4-7").string(),
+                "--frames", "4:7", "--wait", "--resume", "--width", "32", "--stereo", "a b'c"}));
   // Outside an array task the script refuses rather than render something else.
-  EXPECT_NE(std::system(("env -u SLURM_ARRAY_TASK_ID bash " + shell_quote((tmp / "render.sh").string()) +
-                         " 2>/dev/null").c_str()), 0);
+  EXPECT_NE(std::system(("env -u SLURM_ARRAY_TASK_ID bash " +
+                         shell_quote((tmp / "render.sh").string()) + " 2>/dev/null")
+                            .c_str()),
+            0);
 }
 
 TEST(SlurmScript, TheCollectJobCollectsTheFolder) {
@@ -69,22 +72,27 @@ TEST(SlurmScript, TheCollectJobCollectsTheFolder) {
 TEST(SlurmScript, SbatchArgumentsNameTheArrayTheDependencyAndTheLogs) {
   FarmRecord r;
   r.partition = "gpu";
-  const std::vector<std::string> render = render_array_sbatch_args(r, "/f/50%", "/f/50%/.farm/render-0.sh", 6);
+  const std::vector<std::string> render =
+      render_array_sbatch_args(r, "/f/50%", "/f/50%/.farm/render-0.sh", 6);
   EXPECT_EQ(render, (std::vector<std::string>{"--parsable", "--job-name=pyro-render",
                                               "--output=/f/50%%/.farm/logs/render-%A_%a.log",
                                               "--partition=gpu", "--array=0-5", "--requeue",
                                               "/f/50%/.farm/render-0.sh"}));
   r.partition.clear();
-  const std::vector<std::string> collect = collect_sbatch_args(r, "/f", "/f/.farm/collect-0.sh", "77");
-  EXPECT_EQ(collect, (std::vector<std::string>{"--parsable", "--job-name=pyro-collect",
-                                               "--output=/f/.farm/logs/collect-%j.log",
-                                               "--dependency=afterany:77", "/f/.farm/collect-0.sh"}));
+  const std::vector<std::string> collect =
+      collect_sbatch_args(r, "/f", "/f/.farm/collect-0.sh", "77");
+  EXPECT_EQ(collect,
+            (std::vector<std::string>{"--parsable", "--job-name=pyro-collect",
+                                      "--output=/f/.farm/logs/collect-%j.log",
+                                      "--dependency=afterany:77", "/f/.farm/collect-0.sh"}));
 }
 
 TEST(SlurmScript, ShellQuotingSurvivesTheShell) {
-  for (const std::string word : {"plain", "a b", "it's", "$(echo no)", "`x`", "a\\b", "\"q\"", ""}) {
+  for (const std::string word :
+       {"plain", "a b", "it's", "$(echo no)", "`x`", "a\\b", "\"q\"", ""}) {
     const std::string out = test::scratch_dir("quote").string() + "/w";
-    ASSERT_EQ(std::system(("printf %s " + shell_quote(word) + " > " + shell_quote(out)).c_str()), 0);
+    ASSERT_EQ(std::system(("printf %s " + shell_quote(word) + " > " + shell_quote(out)).c_str()),
+              0);
     EXPECT_EQ(test::read_bytes(out), word);
   }
 }

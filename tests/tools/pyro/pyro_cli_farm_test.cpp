@@ -4,7 +4,6 @@
 // one `pyro render` of the whole range; a deleted frame is reported as a range with a non-zero
 // exit. (tests/farm/slurm_farm_test.sh does the same on a real single-node Slurm.)
 #include <gtest/gtest.h>
-
 #include <sys/stat.h>
 #include <sys/wait.h>
 
@@ -43,9 +42,13 @@ test::CommandResult farm_with_path(const fs::path& bin, const std::vector<std::s
   return test::run_pyro_with("env PATH=" + test::shell_quote(bin.string()) + ":\"$PATH\"", args);
 }
 
-std::vector<std::string> farm_submit_args(const fs::path& out, const std::vector<std::string>& extra = {}) {
-  std::vector<std::string> args = {"farm", "submit", test::scene_path("fog.json"), "--out", out.string(),
-                                   "--frames", "0:5", "--chunk", "4", "--width", "32", "--height", "24"};
+std::vector<std::string> farm_submit_args(const fs::path& out,
+                                          const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args = {"farm",    "submit",     test::scene_path("fog.json"),
+                                   "--out",   out.string(), "--frames",
+                                   "0:5",     "--chunk",    "4",
+                                   "--width", "32",         "--height",
+                                   "24"};
   args.insert(args.end(), extra.begin(), extra.end());
   return args;
 }
@@ -53,7 +56,8 @@ std::vector<std::string> farm_submit_args(const fs::path& out, const std::vector
 // Runs array task `task` of the submission's batch script as Slurm would.
 int run_farm_task(const fs::path& out, int task) {
   const std::string cmd = "SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " bash " +
-                          test::shell_quote((out / ".farm" / "render-0.sh").string()) + " >/dev/null 2>&1";
+                          test::shell_quote((out / ".farm" / "render-0.sh").string()) +
+                          " >/dev/null 2>&1";
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
@@ -70,8 +74,10 @@ TEST(PyroCliFarm, CollectedChunksAreTheBytesOfOneRenderAndADeletedFrameIsNamed) 
   const fs::path bin = fake_sbatch_folder(dir), out = dir / "farm out";
   const auto submitted = farm_with_path(bin, farm_submit_args(out));
   ASSERT_EQ(submitted.exit_code, 0) << submitted.err;
-  EXPECT_NE(submitted.out.find("submitted render job array 101 (2 task(s): frames 0:3, 4:5) and collect job 102"),
-            std::string::npos) << submitted.out;
+  EXPECT_NE(submitted.out.find(
+                "submitted render job array 101 (2 task(s): frames 0:3, 4:5) and collect job 102"),
+            std::string::npos)
+      << submitted.out;
   const std::string calls = test::read_bytes(bin / "calls.txt");
   EXPECT_NE(calls.find("--array=0-1\n"), std::string::npos) << calls;
   EXPECT_NE(calls.find("--dependency=afterany:101\n"), std::string::npos) << calls;
@@ -80,8 +86,11 @@ TEST(PyroCliFarm, CollectedChunksAreTheBytesOfOneRenderAndADeletedFrameIsNamed) 
 
   const auto collected = test::run_pyro({"farm", "collect", out.string()});
   ASSERT_EQ(collected.exit_code, 0) << collected.err;
-  ASSERT_EQ(test::run_pyro({"render", test::scene_path("fog.json"), "--out", (dir / "single").string(),
-                            "--frames", "0:5", "--width", "32", "--height", "24"}).exit_code, 0);
+  ASSERT_EQ(
+      test::run_pyro({"render", test::scene_path("fog.json"), "--out", (dir / "single").string(),
+                      "--frames", "0:5", "--width", "32", "--height", "24"})
+          .exit_code,
+      0);
   const auto frames = farm_frames(out);
   ASSERT_EQ(frames.size(), 6u);
   EXPECT_EQ(frames, farm_frames(dir / "single"));
@@ -89,7 +98,8 @@ TEST(PyroCliFarm, CollectedChunksAreTheBytesOfOneRenderAndADeletedFrameIsNamed) 
   for (const auto& [name, bytes] : frames) sums += sha256_hex(bytes) + "  " + name + "\n";
   EXPECT_EQ(test::read_bytes(out / "SHA256SUMS"), sums);
   EXPECT_FALSE(fs::exists(out / ".farm" / "chunks" / "0-3")) << "a collected chunk's folder goes";
-  const auto video = test::run_pyro({"farm", "collect", out.string(), "--video", (dir / "farm.gif").string()});
+  const auto video =
+      test::run_pyro({"farm", "collect", out.string(), "--video", (dir / "farm.gif").string()});
   ASSERT_EQ(video.exit_code, 0) << video.err;
   const VideoClip clip = read_video((dir / "farm.gif").string());
   EXPECT_EQ(clip.frame_count(), 6);
@@ -116,9 +126,11 @@ TEST(PyroCliFarm, AKilledChunkIsMissingUntilResubmittedAndThenResumes) {
   EXPECT_NE(incomplete.err.find("missing frames 4:5"), std::string::npos) << incomplete.err;
   const auto resubmitted = farm_with_path(bin, {"farm", "resubmit", out.string()});
   ASSERT_EQ(resubmitted.exit_code, 0) << resubmitted.err;
-  EXPECT_NE(resubmitted.out.find("submitted render job array 103 (1 task(s): frames 4:5)"), std::string::npos)
+  EXPECT_NE(resubmitted.out.find("submitted render job array 103 (1 task(s): frames 4:5)"),
+            std::string::npos)
       << resubmitted.out;
-  const std::string task = "SLURM_ARRAY_TASK_ID=0 bash " + test::shell_quote((out / ".farm/render-1.sh").string()) +
+  const std::string task = "SLURM_ARRAY_TASK_ID=0 bash " +
+                           test::shell_quote((out / ".farm/render-1.sh").string()) +
                            " >/dev/null 2>&1";
   ASSERT_EQ(std::system(task.c_str()), 0);
   const auto collected = test::run_pyro({"farm", "collect", out.string()});
@@ -130,25 +142,29 @@ TEST(PyroCliFarm, BadInputIsRefusedAndLeavesNothing) {
   const fs::path dir = test::scratch_dir("bad");
   const auto no_dir = test::run_pyro({"farm", "collect", (dir / "nowhere").string()});
   EXPECT_EQ(no_dir.exit_code, 2);
-  EXPECT_NE(no_dir.err.find((dir / "nowhere").string() + ": an output folder of `pyro farm submit`"),
-            std::string::npos) << no_dir.err;
+  EXPECT_NE(
+      no_dir.err.find((dir / "nowhere").string() + ": an output folder of `pyro farm submit`"),
+      std::string::npos)
+      << no_dir.err;
   fs::create_directories(dir / "empty");
   const auto no_record = test::run_pyro({"farm", "resubmit", (dir / "empty").string()});
   EXPECT_EQ(no_record.exit_code, 2);
   EXPECT_NE(no_record.err.find("farm.json"), std::string::npos) << no_record.err;
 
   const fs::path out = dir / "out";
-  const auto no_sbatch = test::run_pyro_with("env PATH=" + test::shell_quote((dir / "empty").string()),
-                                             farm_submit_args(out));
+  const auto no_sbatch = test::run_pyro_with(
+      "env PATH=" + test::shell_quote((dir / "empty").string()), farm_submit_args(out));
   EXPECT_EQ(no_sbatch.exit_code, 2);
   EXPECT_NE(no_sbatch.err.find("sbatch"), std::string::npos) << no_sbatch.err;
   const fs::path bin = fake_sbatch_folder(dir);
-  const auto bad_chunk = farm_with_path(bin, {"farm", "submit", test::scene_path("fog.json"), "--out",
-                                              out.string(), "--frames", "0:5", "--chunk", "0"});
+  const auto bad_chunk =
+      farm_with_path(bin, {"farm", "submit", test::scene_path("fog.json"), "--out", out.string(),
+                           "--frames", "0:5", "--chunk", "0"});
   EXPECT_EQ(bad_chunk.exit_code, 2);
   EXPECT_NE(bad_chunk.err.find("--chunk"), std::string::npos) << bad_chunk.err;
-  const auto bad_range = farm_with_path(bin, {"farm", "submit", test::scene_path("fog.json"), "--out",
-                                              out.string(), "--frames", "9:2", "--chunk", "2"});
+  const auto bad_range =
+      farm_with_path(bin, {"farm", "submit", test::scene_path("fog.json"), "--out", out.string(),
+                           "--frames", "9:2", "--chunk", "2"});
   EXPECT_EQ(bad_range.exit_code, 2);
   EXPECT_NE(bad_range.err.find("--frames"), std::string::npos) << bad_range.err;
   EXPECT_FALSE(fs::exists(out)) << "a refused submit writes nothing";
