@@ -16,6 +16,7 @@ packages=(
   colord-data  # CIE 1931 colour-matching functions: content/data/cie1931_2deg_xyz.cmf is checked against it
   python3 python3-matplotlib  # tools/plots (run with /usr/bin/python3, not a pyenv python3)
   python3-jsonschema  # the scene schema tests validate with it (tests/tools/validate_json.py)
+  slurm-wlm munge  # pyro farm's test starts a single-node Slurm cluster (tests/farm/slurm_farm_test.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

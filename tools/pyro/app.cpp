@@ -33,6 +33,7 @@ void add_pyro_commands(CLI::App& app) {
   add_chart_command(app);
   add_schema_command(app);
   add_new_command(app);
+  add_farm_command(app);
 }
 
 void stop_after_parsing(CLI::App& app) {

@@ -14,7 +14,6 @@
 // steps make which frames (substeps, the motion-blur prefix, ranges) is the runtime's
 // FrameSequencer.
 #include <chrono>
-#include <limits>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -24,7 +23,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/core/cache_folder.h"
 #include "engine/core/same_file.h"
 #include "engine/core/trace_events.h"
 #include "engine/core/user_error.h"
@@ -40,11 +38,11 @@
 #include "systems/scene/scene_loader.h"
 #include "systems/scene_runtime/frame_range.h"
 #include "systems/scene_runtime/particle_counts.h"
-#include "systems/scene_runtime/resolve_scene.h"
 #include "systems/scene_runtime/run_identity.h"
 #include "systems/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
+#include "tools/pyro/render_identity.h"
 #include "tools/pyro/render_options.h"
 #include "tools/pyro/scene_inputs.h"
 #include "tools/pyro/stdout_text.h"
@@ -96,29 +94,6 @@ nlohmann::json render_summary(const RenderArgs& a, SceneRuntime& runtime, const 
       {"renderer", shared_headless_context().description()}};
   if (!a.trace.empty()) summary["trace"] = a.trace;
   return summary;
-}
-
-// What changes the pixels besides the scene and its assets, as the run resolves them before any
-// quality pick (a pick is recorded with the run instead: OutputFolder::recorded).
-nlohmann::json pixel_settings(const SceneDescription& scene, const RuntimeOptions& o) {
-  RuntimeOptions requested = o;
-  requested.quality.reset();
-  const RenderSettings rs =
-      resolve_scene(scene, requested, std::numeric_limits<int>::max()).settings;
-  nlohmann::json s = {{"width", rs.width},
-                      {"height", rs.height},
-                      {"stereo", name_of(rs.stereo_mode)},
-                      {"billboards", name_of(rs.alignment)},
-                      {"particles", name_of(rs.particles)},
-                      {"layer_scale", rs.layer_scale},
-                      {"frame_scale", o.frame_scale}};
-  if (o.shading) s["shading"] = name_of(*o.shading);
-  if (o.shadows_off) s["shadows"] = "off";
-  else if (o.shadow_method) s["shadows"] = name_of(*o.shadow_method);
-  if (o.interocular) s["interocular"] = *o.interocular;
-  if (o.zero_parallax_distance) s["zero_parallax"] = *o.zero_parallax_distance;
-  if (o.swap_eyes) s["swap_eyes"] = *o.swap_eyes;
-  return s;
 }
 
 std::string describe_difference(const std::string& before, const std::string& now) {
@@ -218,15 +193,6 @@ std::optional<QualityPick> recorded_quality(const SceneDescription& scene,
   }
 }
 
-nlohmann::json render_identity_json(const SceneDescription& scene, const RuntimeOptions& options,
-                                    const RenderArgs& a) {
-  DigestCache digests(cache_folder());
-  nlohmann::json settings = pixel_settings(scene, options);
-  if (a.depth) settings["exr_depth"] = true;  // the same file names, other contents
-  const RunIdentity id = run_identity(scene, settings, PYRO_VERSION, digests, print_note);
-  return {{"digest", id.digest}, {"parts", id.parts}, {"scene_file", a.scene}};
-}
-
 void print_render_result(const RenderArgs& a, const SceneDescription& scene, const FrameRange& range,
                          const DrawnFrames& drawn, const nlohmann::json& summary, double seconds) {
   if (a.json) {
@@ -268,7 +234,7 @@ void run_render(const RenderArgs& a) {
   options.height_override = a.height;
   options.profile = !a.trace.empty();
   const auto t0 = std::chrono::steady_clock::now();
-  OutputFolder folder(a.out, render_identity_json(scene, options, a).dump(), describe_difference, a.folder);
+  OutputFolder folder(a.out, render_identity_json(scene, options, a.scene, a.depth).dump(), describe_difference, a.folder);
   // A quality target (scene key quality.max_rmse) picks the layer scale, footprint size and time
   // step once for the run, recorded with it before anything is drawn.
   OpenSceneOptions open;

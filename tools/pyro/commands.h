@@ -18,6 +18,8 @@ void add_view_command(CLI::App& app);  // command_view.cpp: the interactive view
 void add_chart_command(CLI::App& app);  // command_chart.cpp
 void add_schema_command(CLI::App& app);  // command_schema.cpp: the scene files' JSON Schema
 void add_new_command(CLI::App& app);     // command_new.cpp: a starting scene from a template
+// `pyro farm submit|collect|resubmit` (command_farm.cpp): a sequence on a Slurm cluster.
+void add_farm_command(CLI::App& app);
 // Registered under `pyro analyze` by add_analyze_commands.
 void add_billboard_mode_analysis(CLI::App& analyze);
 // `pyro bench vdb`, `pyro bench schedule` (bench_schedule.cpp) and `pyro bench import-scale`, registered by
