@@ -9,25 +9,23 @@
 #include <string>
 #include <string_view>
 
+#include "engine/io/replacing_file.h"
+
 namespace pyro {
 
 class DurableFile {
  public:
-  explicit DurableFile(std::string path);  // creates the temporary file
-  ~DurableFile();                          // removes it unless committed
-  DurableFile(const DurableFile&) = delete;
-  DurableFile& operator=(const DurableFile&) = delete;
+  // Removes the temporaries of `path` that dead processes left, then creates its own; the
+  // destructor removes it unless committed (replacing_file.h).
+  explicit DurableFile(const std::string& path);
 
   void write(const void* data, size_t size);
   void write(std::string_view bytes) { write(bytes.data(), bytes.size()); }
   // fsync, close, rename over `path`, fsync of the folder.
-  void commit();
+  void commit() { file_.commit(); }
 
  private:
-  [[noreturn]] void fail(const std::string& action, int os_error);
-  std::string path_, temp_;
-  int fd_ = -1;
-  bool committed_ = false;
+  ReplacingFile file_;
 };
 
 // Removes the temporary files (`NAME.partial-PID`) of `path` that killed processes left (no

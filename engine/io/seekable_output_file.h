@@ -10,16 +10,15 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/io/replacing_file.h"
+
 namespace pyro {
 
 class SeekableOutputFile {
  public:
   // Removes the temporaries of `path` that dead processes left, then creates its own. Throws
   // UserError when the folder does not exist, IoError when the file cannot be created.
-  explicit SeekableOutputFile(std::string path);
-  ~SeekableOutputFile();
-  SeekableOutputFile(const SeekableOutputFile&) = delete;
-  SeekableOutputFile& operator=(const SeekableOutputFile&) = delete;
+  explicit SeekableOutputFile(const std::string& path);
 
   // Writes all `size` bytes at the current position: 0, or the errno of the failure.
   int write(const void* data, size_t size) noexcept;
@@ -32,15 +31,12 @@ class SeekableOutputFile {
   // earlier failed write or seek) and then leaves nothing behind.
   void commit();
 
-  const std::string& path() const { return path_; }
-  const std::string& temporary() const { return temp_; }
+  const std::string& path() const { return file_.path(); }
+  const std::string& temporary() const { return file_.temporary(); }
 
  private:
-  [[noreturn]] void fail(const std::string& action, int os_error);
-  std::string path_, temp_;
-  int fd_ = -1;
+  ReplacingFile file_;
   int first_error_ = 0;
-  bool done_ = false;
 };
 
 // The hidden temporary name of `path` for this process: `FOLDER/.NAME.partial-PID`.

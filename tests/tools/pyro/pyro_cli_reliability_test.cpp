@@ -62,7 +62,7 @@ TEST_P(PyroCliRefusal, ExitTwoNamingTheFileAndNothingWritten) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Issue8, PyroCliRefusal,
+    BadSceneFiles, PyroCliRefusal,
     ::testing::Values(
         Refusal{"binary_garbage", binary_garbage(), "line 1"},
         Refusal{"truncated", R"({"name": "t", "clouds": [{"count": 10, "radius": 0.)", "line 1"},
