@@ -1,4 +1,4 @@
-#include "systems/six_way_lighting/six_way_basis.h"
+#include "systems/flipbook_fire/six_way_basis.h"
 
 #include <glm/geometric.hpp>
 

@@ -1,4 +1,4 @@
-#include "systems/six_way_lighting/six_way_error.h"
+#include "tools/analyze/six_way_error.h"
 
 #include <chrono>
 #include <cmath>
@@ -6,10 +6,10 @@
 
 #include "components/shadow_settings.h"
 #include "components/view.h"
-#include "systems/reference/lit_particle_reference.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene_runtime/scene_runtime.h"
-#include "systems/six_way_lighting/six_way_bake.h"
+#include "systems/runtime/reference/lit_particle_reference.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
+#include "tools/bake/six_way_bake.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/authoring/scene_document.h"
+#include "tools/authoring/scene_document.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,7 +8,7 @@
 #include "engine/io/durable_file.h"
 #include "engine/io/json_document.h"
 #include "engine/io/json_text_edit.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 
 namespace pyro {
 

@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

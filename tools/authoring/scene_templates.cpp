@@ -1,4 +1,4 @@
-#include "tools/pyro/scene_templates.h"
+#include "tools/authoring/scene_templates.h"
 
 #include <algorithm>
 #include <cstddef>

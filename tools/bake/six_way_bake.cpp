@@ -1,4 +1,4 @@
-#include "systems/six_way_lighting/six_way_bake.h"
+#include "tools/bake/six_way_bake.h"
 
 #include <chrono>
 #include <cstdio>
@@ -13,8 +13,8 @@
 #include "engine/io/folder_replacement.h"
 #include "engine/io/png_file.h"
 #include "engine/io/text_file.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "systems/reference/rgb_image.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/runtime_options.h"
-#include "systems/six_way_lighting/six_way_frame.h"
-#include "systems/six_way_lighting/six_way_passes.h"
+#include "systems/runtime/reference/rgb_image.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
+#include "tools/bake/six_way_frame.h"
+#include "tools/bake/six_way_passes.h"
 
 namespace pyro {
 

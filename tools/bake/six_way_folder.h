@@ -3,7 +3,7 @@
 // DIR/six_way_a/frame_NNNN.png and DIR/six_way_b/frame_NNNN.png.
 #include <string>
 
-#include "systems/six_way_lighting/six_way_frame.h"
+#include "tools/bake/six_way_frame.h"
 
 namespace pyro {
 

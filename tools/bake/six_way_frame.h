@@ -11,8 +11,8 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-#include "systems/reference/rgb_image.h"
-#include "systems/six_way_lighting/six_way_basis.h"
+#include "systems/runtime/reference/rgb_image.h"
+#include "systems/flipbook_fire/six_way_basis.h"
 
 namespace pyro {
 

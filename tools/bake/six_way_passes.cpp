@@ -1,4 +1,4 @@
-#include "systems/six_way_lighting/six_way_passes.h"
+#include "tools/bake/six_way_passes.h"
 
 namespace pyro {
 

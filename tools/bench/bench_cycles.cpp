@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_cycles.h"
+#include "tools/bench/bench_cycles.h"
 
 #include <unistd.h>
 
@@ -17,10 +17,10 @@
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "engine/io/vdb_reader.h"
-#include "systems/benchmarks/sun_directions.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/grid_framing.h"
-#include "systems/reference/path_traced_volume.h"
+#include "tools/bench/sun_directions.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
+#include "systems/runtime/reference/path_traced_volume.h"
 
 namespace pyro {
 

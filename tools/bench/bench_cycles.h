@@ -1,10 +1,10 @@
 #pragma once
-// pyro bench cycles FILE...: the path-traced truth (systems/reference/path_traced_volume.h)
+// pyro bench cycles FILE...: the path-traced truth (systems/runtime/reference/path_traced_volume.h)
 // against an independent path tracer, Blender's Cycles, run headless through
 // content/cycles/render_volume.py (the conventions it converts, and how they were checked, are in
 // its header). Each grid is written again with its density in leaf voxels (Cycles shows nothing
 // of density kept in OpenVDB's active tiles), lit by the sun from `directions` directions
-// (systems/benchmarks/sun_directions.h), seen from its framing camera, with a black sky.
+// (tools/bench/sun_directions.h), seen from its framing camera, with a black sky.
 // Without the blender program nothing runs (UserError); a Cycles run that fails is a note, and
 // its direction has no score.
 #include <functional>

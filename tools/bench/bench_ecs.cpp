@@ -1,4 +1,4 @@
-#include "tools/pyro/bench_ecs.h"
+#include "tools/bench/bench_ecs.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,7 +8,6 @@
 #include "engine/ecs/schedule.h"
 #include "engine/ecs/world.h"
 #include "engine/particles/particle_pool.h"
-#include "tools/pyro/progress.h"
 
 namespace pyro {
 
@@ -171,9 +170,19 @@ nlohmann::json checked_access_costs(std::size_t n, int repeats, float dt) {
   };
 }
 
+// n particles with the same starting values as the ECS world's entities and the plain arrays.
+void fill_pool(ParticlePool& pool, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    ParticleInit p;
+    p.position = {init_value(i, 0), init_value(i, 1), init_value(i, 2)};
+    p.velocity = {init_value(i, 3), init_value(i, 4), init_value(i, 5)};
+    pool.spawn(p);
+  }
+}
+
 }  // namespace
 
-nlohmann::json bench_ecs(std::size_t n, int repeats) {
+nlohmann::json bench_ecs(std::size_t n, int repeats, ProgressSink* progress_sink) {
   if (n == 0 || repeats < 1)
     throw std::invalid_argument("bench_ecs: need at least one item and one repeat");
   const float dt = 1.0f / 60.0f;
@@ -185,12 +194,7 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
   // plain arrays, so the ratio isolates the container; per-emitter pools of 65536 would only
   // add a short outer loop over pools.
   ParticlePool pool(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    ParticleInit p;
-    p.position = {init_value(i, 0), init_value(i, 1), init_value(i, 2)};
-    p.velocity = {init_value(i, 3), init_value(i, 4), init_value(i, 5)};
-    pool.spawn(p);
-  }
+  fill_pool(pool, n);
 
   // (3) Plain arrays.
   PlainArrays plain(n);
@@ -223,7 +227,7 @@ nlohmann::json bench_ecs(std::size_t n, int repeats) {
   // three see the same machine noise.
   run_ecs(), run_pool(), run_plain();
   std::vector<double> t_ecs, t_pool, t_plain;
-  cli::Progress progress("bench ecs", size_t(repeats));
+  ProgressTask progress(progress_sink, "bench ecs", size_t(repeats));
   for (int r = 0; r < repeats; ++r) {
     t_ecs.push_back(time_ns(run_ecs));
     t_pool.push_back(time_ns(run_pool));

@@ -6,12 +6,15 @@
 #include <cstddef>
 #include <nlohmann/json.hpp>
 
+#include "engine/core/progress_sink.h"
+
 namespace pyro {
 
 // Returns {"entities", "repeats", "ns_per_entity", "ns_per_particle_pool", "ns_plain_arrays",
 // "ecs_ratio", "pool_ratio", "ecs_checked_ratio", "checked_over_unchecked_each",
 // "checked_over_unchecked_lookup", ...}: median nanoseconds per item for each method and the
-// ratios against plain arrays, and checked against unchecked.
-nlohmann::json bench_ecs(std::size_t n, int repeats);
+// ratios against plain arrays, and checked against unchecked. The repeats report to `progress_sink`
+// (null: nowhere).
+nlohmann::json bench_ecs(std::size_t n, int repeats, ProgressSink* progress_sink);
 
 }  // namespace pyro

@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_explosion_shadows.h"
+#include "tools/bench/bench_explosion_shadows.h"
 
 #include <epoxy/gl.h>
 
@@ -12,8 +12,8 @@
 #include "components/render_settings.h"
 #include "engine/core/user_error.h"
 #include "engine/math/image_error.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_johnson.h"
+#include "tools/bench/bench_johnson.h"
 
 #include <epoxy/gl.h>
 
@@ -8,9 +8,9 @@
 
 #include "components/camera.h"
 #include "engine/math/image_error.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "engine/core/content_path.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "engine/core/progress_sink.h"
 
 namespace pyro {

@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_layers.h"
+#include "tools/bench/bench_layers.h"
 
 #include "engine/math/depth_edge_error.h"
 #include "engine/math/image_error.h"
@@ -18,11 +18,11 @@
 #include "components/view.h"
 #include "components/render_settings.h"
 #include "engine/ecs/world.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "systems/composite/compositor.h"
 #include "systems/composite/opaque_view_readback.h"
-#include "systems/scene_runtime/particle_counts.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/particle_counts.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "engine/core/progress_sink.h"
 
 namespace pyro {

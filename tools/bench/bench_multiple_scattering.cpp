@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_multiple_scattering.h"
+#include "tools/bench/bench_multiple_scattering.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,13 +9,13 @@
 #include "engine/core/user_error.h"
 #include "engine/io/png_file.h"
 #include "engine/io/vdb_reader.h"
-#include "systems/benchmarks/relit_particles.h"
-#include "systems/benchmarks/sun_directions.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/grid_framing.h"
-#include "systems/reference/path_traced_volume.h"
-#include "systems/reference/volume_reference.h"
-#include "systems/reference/world_snapshot.h"
+#include "tools/bench/relit_particles.h"
+#include "tools/bench/sun_directions.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
+#include "systems/runtime/reference/path_traced_volume.h"
+#include "systems/runtime/reference/volume_reference.h"
+#include "systems/runtime/reference/world_snapshot.h"
 
 namespace pyro {
 

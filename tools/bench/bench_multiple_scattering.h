@@ -1,9 +1,9 @@
 #pragma once
 // pyro bench multiple-scattering FILE: how far single scattering and the octave approximation of
 // multiple scattering (engine/math/scattering_octaves.h) fall from the path-traced truth
-// (systems/reference/path_traced_volume.h), for an OpenVDB grid lit by the sun from `directions`
-// directions (systems/benchmarks/sun_directions.h) and seen from its framing camera.
-// Both approximations are the ray-marched grid (systems/reference/volume_reference.h) with exact
+// (systems/runtime/reference/path_traced_volume.h), for an OpenVDB grid lit by the sun from `directions`
+// directions (tools/bench/sun_directions.h) and seen from its framing camera.
+// Both approximations are the ray-marched grid (systems/runtime/reference/volume_reference.h) with exact
 // shadow depths, so what differs from the truth is the light scattered more than once and
 // nothing else. The sky is black (ambient 0): the sun is the only light.
 // The engine's own frames are scored too: the grid imported once as particles that keep their

@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_relight.h"
+#include "tools/bench/bench_relight.h"
 
 #include <epoxy/gl.h>
 
@@ -9,14 +9,14 @@
 
 #include "engine/core/user_error.h"
 #include "engine/io/vdb_reader.h"
-#include "systems/benchmarks/fitted_import.h"
-#include "systems/benchmarks/relit_particles.h"
-#include "systems/benchmarks/sun_directions.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/grid_framing.h"
-#include "systems/reference/volume_reference.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "tools/bench/fitted_import.h"
+#include "tools/bench/relit_particles.h"
+#include "tools/bench/sun_directions.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
+#include "systems/runtime/reference/volume_reference.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 

@@ -4,7 +4,7 @@
 // Gaussians `pyro import-vdb` fits (relit from the albedo a particle file records), then relit by the light phase
 // (docs/lighting.md) from `directions` sun directions without importing again. Each direction's
 // frame is scored against the CPU volume reference lit from that direction (the grid itself,
-// ray marched with exact shadows: systems/reference/volume_reference.h), and the relit frames are
+// ray marched with exact shadows: systems/runtime/reference/volume_reference.h), and the relit frames are
 // timed against the same particles drawn without per-frame lighting, in the same run, in
 // alternating blocks of frames.
 #include <string>
@@ -13,7 +13,7 @@
 
 #include "components/shadow_settings.h"
 #include "engine/core/progress_sink.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_render.h"
+#include "tools/bench/bench_render.h"
 
 #include <epoxy/gl.h>
 
@@ -9,9 +9,9 @@
 #include "components/draw_list.h"
 #include "components/gpu_frame.h"
 #include "components/view.h"
-#include "systems/open_scene/open_scene.h"
+#include "systems/runtime/open_scene/open_scene.h"
 #include "systems/billboard_render/billboard_renderer.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "engine/core/progress_sink.h"
 
 namespace pyro {

@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_scale.h"
+#include "tools/bench/bench_scale.h"
 
 #include <epoxy/gl.h>
 
@@ -17,9 +17,9 @@
 #include "engine/core/user_error.h"
 #include "engine/particles/particle_pool.h"
 #include "systems/billboard_render/billboard_renderer.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/particle_counts.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/particle_counts.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "systems/sorting/depth_sort.h"
 
 namespace pyro {

@@ -13,7 +13,7 @@
 
 #include "engine/core/progress_sink.h"
 #include "components/render_modes.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

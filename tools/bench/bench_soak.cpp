@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_soak.h"
+#include "tools/bench/bench_soak.h"
 
 #include <unistd.h>
 
@@ -9,8 +9,8 @@
 
 #include "components/emitter.h"
 #include "components/particle_set.h"
-#include "systems/open_scene/open_scene.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/open_scene/open_scene.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 #include "engine/core/progress_sink.h"
 

@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_sort.h"
+#include "tools/bench/bench_sort.h"
 
 #include <tbb/parallel_sort.h>
 

@@ -1,4 +1,4 @@
-#include "systems/benchmarks/bench_vdb.h"
+#include "tools/bench/bench_vdb.h"
 
 #include <unistd.h>
 
@@ -12,13 +12,13 @@
 #include <glm/trigonometric.hpp>
 
 #include "engine/core/user_error.h"
-#include "systems/benchmarks/fitted_import.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/gaussian_lighting.h"
-#include "systems/cloud_import/grid_framing.h"
-#include "systems/reference/rgb_image.h"
-#include "systems/reference/volume_reference.h"
-#include "systems/scene_runtime/anisotropic_snapshot.h"
+#include "tools/bench/fitted_import.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/gaussian_lighting.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
+#include "systems/runtime/reference/rgb_image.h"
+#include "systems/runtime/reference/volume_reference.h"
+#include "systems/runtime/scene_runtime/anisotropic_snapshot.h"
 
 namespace pyro {
 

@@ -1,6 +1,6 @@
 #pragma once
 // One view of one grid, rendered three ways in one run: the splatting pipeline (the grid imported
-// as import-vdb imports it, fitted anisotropic Gaussians, drawn by the GL splats; best of 3 frames), the CPU reference (systems/reference),
+// as import-vdb imports it, fitted anisotropic Gaussians, drawn by the GL splats; best of 3 frames), the CPU reference (systems/runtime/reference),
 // and OpenVDB's vdb_render (Debian's libopenvdb-tools) as a separate process with the same camera
 // (position, look-at, up, horizontal field of view), resolution, light direction and colour, and
 // absorption / scattering per voxel (vdb_render integrates in voxel units: sigma per voxel =
@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/progress_sink.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 

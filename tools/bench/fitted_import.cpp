@@ -1,4 +1,4 @@
-#include "systems/benchmarks/fitted_import.h"
+#include "tools/bench/fitted_import.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,11 +8,11 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "systems/cloud_import/gaussian_fit.h"
-#include "systems/cloud_import/grid_framing.h"
-#include "systems/cloud_import/gaussian_lighting.h"
-#include "systems/cloud_import/gaussian_temperature.h"
-#include "systems/scene_runtime/anisotropic_snapshot.h"
+#include "systems/runtime/cloud_import/gaussian_fit.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
+#include "systems/runtime/cloud_import/gaussian_lighting.h"
+#include "systems/runtime/cloud_import/gaussian_temperature.h"
+#include "systems/runtime/scene_runtime/anisotropic_snapshot.h"
 
 namespace pyro {
 

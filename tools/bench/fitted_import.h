@@ -1,6 +1,6 @@
 #pragma once
 // The import that meets an image error target from every side: the octree's isotropic particles
-// (systems/cloud_import/cloud_import.h) start it, their means, shapes and densities are fitted to
+// (systems/runtime/cloud_import/cloud_import.h) start it, their means, shapes and densities are fitted to
 // the grid as anisotropic Gaussians (gaussian_fit.h), and while the largest error over the views
 // around the grid (vdb_import_evaluation.h, measured with the anisotropic splats against the CPU
 // reference of the grid) is above the target, the Gaussians that carry the most residual are
@@ -15,9 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/volume/sparse_grid.h"
-#include "systems/benchmarks/sparse_import_error.h"
+#include "tools/bench/sparse_import_error.h"
 
-#include "systems/benchmarks/vdb_import_evaluation.h"
+#include "tools/bench/vdb_import_evaluation.h"
 
 namespace pyro {
 

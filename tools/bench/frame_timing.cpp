@@ -1,4 +1,4 @@
-#include "systems/benchmarks/frame_timing.h"
+#include "tools/bench/frame_timing.h"
 
 #include <epoxy/gl.h>
 

@@ -1,8 +1,8 @@
 #pragma once
 // The median wall time of a scene's frames (GPU work finished every frame), without readback:
 // `pyro analyze billboard-modes` and `pyro chart billboard-modes` time their modes with it.
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 

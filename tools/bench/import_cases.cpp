@@ -1,12 +1,12 @@
-#include "systems/benchmarks/import_cases.h"
+#include "tools/bench/import_cases.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 
-#include "systems/benchmarks/fitted_import.h"
-#include "systems/benchmarks/vdb_import_evaluation.h"
+#include "tools/bench/fitted_import.h"
+#include "tools/bench/vdb_import_evaluation.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/benchmarks/import_scale.h"
+#include "tools/bench/import_scale.h"
 
 #include <chrono>
 #include <cmath>
@@ -16,9 +16,9 @@
 #include "engine/io/vdb_reader.h"
 #include "engine/io/vdb_resampled_volume.h"
 #include "engine/volume/procedural_cloud.h"
-#include "systems/benchmarks/sparse_import_error.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/grid_framing.h"
+#include "tools/bench/sparse_import_error.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
 
 namespace pyro {
 

@@ -3,7 +3,7 @@
 // (a small cloud resampled finer, engine/io/vdb_resampled_volume.h: the Disney cloud when
 // ../shared/data/vdb is beside the checkout, else the project's procedural cloud), read sparse
 // (engine/io/vdb_reader.h, read_vdb_grid_sparse) and imported as Gaussian particles
-// (systems/cloud_import/cloud_import.h), read and import timed apart, with the peak resident
+// (systems/runtime/cloud_import/cloud_import.h), read and import timed apart, with the peak resident
 // memory of the engine's process and of the child process that reads the file.
 #include <cstdint>
 #include <string>
@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/progress_sink.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 
@@ -26,7 +26,7 @@ struct ImportScaleOptions {
   double error = 0.03;  // the import's error target (tau_tolerance_for_error), as import-vdb's default
   // The import's error, measured: the particles drawn by the GL splats from the grid's framing
   // camera at this size, against the single-scattering path-traced truth of the sparse grid
-  // (systems/reference/path_traced_volume.h) with this many paths per pixel. 0: not measured.
+  // (systems/runtime/reference/path_traced_volume.h) with this many paths per pixel. 0: not measured.
   int error_size = 256;
   int error_samples = 256;
   int threads = 0;      // the import's threads (0: one per core)

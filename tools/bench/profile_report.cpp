@@ -1,4 +1,4 @@
-#include "systems/profiling/profile_report.h"
+#include "tools/bench/profile_report.h"
 
 #include <map>
 #include <string>
@@ -7,7 +7,7 @@
 #include "engine/core/sample_statistics.h"
 #include "engine/core/trace_events.h"
 #include "engine/particles/particle_pool.h"
-#include "systems/scene_runtime/particle_counts.h"
+#include "systems/runtime/scene_runtime/particle_counts.h"
 
 namespace pyro {
 

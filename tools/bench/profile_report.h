@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 

@@ -1,13 +1,13 @@
-#include "systems/benchmarks/relit_particles.h"
+#include "tools/bench/relit_particles.h"
 
 #include <limits>
 #include <utility>
 
 #include "components/directional_light.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/scene_volume.h"
-#include "systems/scene_runtime/resolve_scene.h"
-#include "systems/scene_runtime/scene_assets.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/scene_volume.h"
+#include "systems/runtime/scene_runtime/resolve_scene.h"
+#include "systems/runtime/scene_runtime/scene_assets.h"
 
 namespace pyro {
 

@@ -12,8 +12,8 @@
 #include "engine/io/vdb_reader.h"
 #include "engine/particles/anisotropic_gaussian.h"
 #include "engine/particles/gaussian_particle.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 
@@ -29,7 +29,7 @@ SceneRuntime relit_particles_runtime(const std::vector<GaussianParticle>& partic
 SceneRuntime relit_particles_runtime(const std::vector<AnisotropicGaussian>& particles, const VolumeMedium& medium,
                                      const RelitView& view, const std::optional<ShadowSettings>& shadows);
 
-// The grid imported as a lit scene imports its volumes (systems/cloud_import/scene_volume.cpp):
+// The grid imported as a lit scene imports its volumes (systems/runtime/cloud_import/scene_volume.cpp):
 // the particles keep their albedo (no sun, ambient 1), to within the import's `error` target.
 std::vector<GaussianParticle> import_keeping_albedo(const DenseGrid& grid, double extinction, double albedo,
                                                     double error);

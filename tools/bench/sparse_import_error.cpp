@@ -1,13 +1,13 @@
-#include "systems/benchmarks/sparse_import_error.h"
+#include "tools/bench/sparse_import_error.h"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
-#include "systems/benchmarks/relit_particles.h"
-#include "systems/cloud_import/grid_framing.h"
-#include "systems/reference/path_traced_volume.h"
-#include "systems/reference/world_snapshot.h"
+#include "tools/bench/relit_particles.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
+#include "systems/runtime/reference/path_traced_volume.h"
+#include "systems/runtime/reference/world_snapshot.h"
 
 namespace pyro {
 

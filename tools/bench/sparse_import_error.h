@@ -1,7 +1,7 @@
 #pragma once
 // The image error of particles imported from a grid too large for a dense box: the particles
 // drawn by the GL splats against single scattering path traced through the grid's sparse bricks
-// (systems/reference/path_traced_volume.h), seen from one camera through the import's medium.
+// (systems/runtime/reference/path_traced_volume.h), seen from one camera through the import's medium.
 // The truth is a Monte Carlo estimate: its noise is reported beside the RMSE, and taken out in
 // quadrature (the two are independent, so RMSE² = error² + noise² over the pixels).
 #include <vector>
@@ -9,7 +9,7 @@
 #include "components/volume_medium.h"
 #include "engine/particles/gaussian_particle.h"
 #include "engine/volume/sparse_grid.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

@@ -1,13 +1,13 @@
-#include "systems/benchmarks/vdb_import_evaluation.h"
+#include "tools/bench/vdb_import_evaluation.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <utility>
 
-#include "systems/reference/volume_reference.h"
-#include "systems/scene_runtime/particle_snapshot.h"
-#include "systems/cloud_import/grid_framing.h"
+#include "systems/runtime/reference/volume_reference.h"
+#include "systems/runtime/scene_runtime/particle_snapshot.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
 
 namespace pyro {
 

@@ -1,7 +1,7 @@
 #pragma once
 // What `pyro import-vdb` and `pyro chart particle-budget` share: a grid imported as Gaussian
 // particles for an image error target, and the image RMSE of the splatted particles (the real GL
-// pipeline, offscreen) against the CPU reference render of the grid (systems/reference) from
+// pipeline, offscreen) against the CPU reference render of the grid (systems/runtime/reference) from
 // the camera framing the grid. The reference is rendered once per grid and reused across targets.
 #include <functional>
 #include <limits>
@@ -12,12 +12,12 @@
 #include "engine/particles/anisotropic_gaussian.h"
 #include "engine/particles/gaussian_particle.h"
 #include "components/volume_medium.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 #include "engine/io/vdb_reader.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/grid_gaussian.h"
-#include "systems/reference/rgb_image.h"
-#include "systems/reference/volume_emission.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/grid_gaussian.h"
+#include "systems/runtime/reference/rgb_image.h"
+#include "systems/runtime/reference/volume_emission.h"
 
 namespace pyro {
 
@@ -40,7 +40,7 @@ struct VdbImportReference {
   RgbImage inside_image;
   // A fire's temperature and its emission (off when empty): the reference emits L_e(T), and the
   // fitted particles are given their temperatures and emission before every measurement
-  // (systems/cloud_import/gaussian_temperature.h), so the error target covers the fire's light.
+  // (systems/runtime/cloud_import/gaussian_temperature.h), so the error target covers the fire's light.
   VolumeEmission emission;
 };
 

@@ -1,4 +1,4 @@
-#include "systems/benchmarks/vdb_sequence_bench.h"
+#include "tools/bench/vdb_sequence_bench.h"
 
 #include <algorithm>
 #include <chrono>
@@ -11,7 +11,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/isolated_call.h"
 #include "engine/volume/puff_sequence.h"
-#include "systems/cloud_import/vdb_sequence_import.h"
+#include "systems/runtime/cloud_import/vdb_sequence_import.h"
 
 namespace pyro {
 

@@ -2,7 +2,7 @@
 // The animated VDB import's speed and memory against the sequence's length: for each length L,
 // the synthetic puff's whole motion (engine/volume/puff_sequence.h) is written in L frames, so
 // every length holds the same range of frame sizes, and imported
-// (systems/cloud_import/vdb_sequence_import.h) in a child process of its own, so that each
+// (systems/runtime/cloud_import/vdb_sequence_import.h) in a child process of its own, so that each
 // import's peak resident memory is its own, not the largest so far. A streaming import's peak
 // does not grow with L.
 #include <string>
@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/progress_sink.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/charts/alignment_figures.h"
+#include "tools/charts/alignment_figures.h"
 
 #include <cstdio>
 #include <functional>

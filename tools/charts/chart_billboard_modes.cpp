@@ -9,12 +9,12 @@
 #include "components/render_settings.h"
 #include "components/view.h"
 #include "engine/core/content_path.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/reference/particle_reference.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene_runtime/scene_runtime.h"
-#include "systems/charts/charts.h"
-#include "systems/benchmarks/frame_timing.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/reference/particle_reference.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
+#include "tools/charts/charts.h"
+#include "tools/bench/frame_timing.h"
 
 namespace pyro {
 
@@ -49,7 +49,7 @@ ChartTable chart_billboard_modes(const BillboardModesChartOptions& o) {
   t.x_label = "ms per frame (mono)";
   t.y_label = "RMSE (linear RGB) against the CPU particle reference";
   t.ground_truth =
-      "the CPU reference of the same particles at the same frame (systems/reference/"
+      "the CPU reference of the same particles at the same frame (systems/runtime/reference/"
       "particle_reference.h: the exact sum of clamped Gaussians, erf integrals along each ray)";
   t.notes = {"the scenes' meshes are left out and every particle is drawn with its own colour "
              "(shading: color), so the reference models exactly what is drawn; the explosion's "

@@ -16,11 +16,11 @@
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "engine/math/color.h"
-#include "systems/charts/charts.h"
+#include "tools/charts/charts.h"
 #include "systems/flipbook_fire/flipbook_atlas_folder.h"
 #include "systems/flipbook_fire/flipbook_motion_blend.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/flipbook_bake.h"
 
 namespace pyro {
 

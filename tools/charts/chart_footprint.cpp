@@ -8,7 +8,7 @@
 #include <string>
 
 #include "engine/math/footprint.h"
-#include "systems/charts/charts.h"
+#include "tools/charts/charts.h"
 
 namespace pyro {
 

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "systems/animation/particle_integrator.h"
-#include "systems/charts/charts.h"
+#include "tools/charts/charts.h"
 
 namespace pyro {
 
@@ -79,7 +79,7 @@ ChartTable chart_integrators(const IntegratorChartOptions& o) {
   t.y_label = "position error at the end (m)";
   t.ground_truth =
       "the exact solution of the ODEs (drag, buoyancy from Newtonian cooling), closed form in "
-      "systems/charts/chart_integrators.cpp; not the CPU reference renderer";
+      "tools/charts/chart_integrators.cpp; not the CPU reference renderer";
   t.notes = {"problem: x0 = 0, v0 = (2, 8, 0) m/s, T0 = 1800 K, T_amb = 293 K, gravity 9.81, "
              "wind (1, 0, 0), buoyancy 0.01 m/s^2/K, cooling 1.5/s; buoyancy is held over each "
              "step, as in the particle animation system",

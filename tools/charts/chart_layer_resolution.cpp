@@ -1,14 +1,14 @@
 // pyro chart layer-resolution: explosion media layers at 1, 1/2, 1/4, 1/8 of the view, with each
 // upsampling method of the compositor (Umenhoffer et al. 2006, section 4), measured by
-// `pyro bench layers` (systems/benchmarks/bench_layers.cpp) itself, on the paper's view of the
+// `pyro bench layers` (tools/bench/bench_layers.cpp) itself, on the paper's view of the
 // explosion and on one with the water tower in front of it.
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "engine/core/content_path.h"
-#include "systems/benchmarks/bench_layers.h"
-#include "systems/charts/charts.h"
+#include "tools/bench/bench_layers.h"
+#include "tools/charts/charts.h"
 
 namespace pyro {
 

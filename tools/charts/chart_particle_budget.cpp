@@ -1,14 +1,14 @@
 // pyro chart particle-budget: VDB import error targets -> particle count, render time and image
 // error, through the same import and measurement as `pyro import-vdb`
-// (systems/benchmarks/vdb_import_evaluation.h).
+// (tools/bench/vdb_import_evaluation.h).
 #include <filesystem>
 #include <sstream>
 #include <string>
 
 #include "engine/core/content_path.h"
 #include "engine/io/vdb_reader.h"
-#include "systems/charts/charts.h"
-#include "systems/benchmarks/vdb_import_evaluation.h"
+#include "tools/charts/charts.h"
+#include "tools/bench/vdb_import_evaluation.h"
 
 namespace pyro {
 
@@ -37,7 +37,7 @@ ChartTable chart_particle_budget(const ParticleBudgetChartOptions& o) {
   t.x_label = "ms per splat frame (sort + draw + readback)";
   t.y_label = "image RMSE (linear RGB) against the CPU volume reference";
   t.ground_truth =
-      "the CPU reference render of the grid (systems/reference/volume_reference.h: ray marching "
+      "the CPU reference render of the grid (systems/runtime/reference/volume_reference.h: ray marching "
       "with single-scattered light), as `pyro import-vdb` measures it";
   t.notes = {"same numbers as: pyro import-vdb FILE --error E --width " + std::to_string(o.width) +
              " --height " + std::to_string(o.height) + " --out F.pyrop --json (rmse, particles)"};

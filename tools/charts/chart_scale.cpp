@@ -1,13 +1,13 @@
 // pyro chart scale: ms per frame against particles, log-log, for a scene's clouds scaled from
-// 10^4 to 2*10^6 particles (`pyro bench scale`, systems/benchmarks/bench_scale.h), the CPU work
+// 10^4 to 2*10^6 particles (`pyro bench scale`, tools/bench/bench_scale.h), the CPU work
 // and the whole frame, with the least-squares slopes from 10^5 to 2*10^6.
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include "engine/core/content_path.h"
-#include "systems/benchmarks/bench_scale.h"
-#include "systems/charts/charts.h"
+#include "tools/bench/bench_scale.h"
+#include "tools/charts/charts.h"
 
 namespace pyro {
 

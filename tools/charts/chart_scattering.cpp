@@ -1,5 +1,5 @@
 // pyro chart scattering: the splats' octaves of multiple scattering, each count drawn and timed
-// by the engine, against the path-traced truth (systems/benchmarks/bench_multiple_scattering.h
+// by the engine, against the path-traced truth (tools/bench/bench_multiple_scattering.h
 // measures the same frames from three suns).
 #include <algorithm>
 #include <chrono>
@@ -8,13 +8,13 @@
 #include "components/volume_medium.h"
 #include "engine/core/content_path.h"
 #include "engine/io/vdb_reader.h"
-#include "systems/benchmarks/relit_particles.h"
-#include "systems/benchmarks/sun_directions.h"
-#include "systems/charts/charts.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/grid_framing.h"
-#include "systems/reference/path_traced_volume.h"
-#include "systems/reference/world_snapshot.h"
+#include "tools/bench/relit_particles.h"
+#include "tools/bench/sun_directions.h"
+#include "tools/charts/charts.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
+#include "systems/runtime/reference/path_traced_volume.h"
+#include "systems/runtime/reference/world_snapshot.h"
 
 namespace pyro {
 

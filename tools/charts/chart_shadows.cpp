@@ -1,17 +1,17 @@
 // pyro chart shadows: the light phase's shadow methods (systems/shadowing) on lit scenes, each
-// frame against the CPU reference with exact shadows (systems/reference/lit_particle_reference.h).
+// frame against the CPU reference with exact shadows (systems/runtime/reference/lit_particle_reference.h).
 #include <filesystem>
 #include <string>
 
 #include "components/anisotropic_cloud.h"
 #include "components/frame_image.h"
 #include "engine/core/content_path.h"
-#include "systems/benchmarks/frame_timing.h"
-#include "systems/charts/charts.h"
-#include "systems/quality_picker/quality_measurement.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "tools/bench/frame_timing.h"
+#include "tools/charts/charts.h"
+#include "systems/runtime/quality_picker/quality_measurement.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 
@@ -73,7 +73,7 @@ ChartTable chart_shadows(const ShadowsChartOptions& o) {
   t.y_label = "RMSE (linear RGB) against the CPU reference with exact shadows";
   t.ground_truth =
       "single scattering of the sun with its transmittance exact at every point of every ray "
-      "(systems/reference/lit_particle_reference.h), over the GL opaque scene whose sunlight keeps "
+      "(systems/runtime/reference/lit_particle_reference.h), over the GL opaque scene whose sunlight keeps "
       "exp(-tau) of the exact optical depth";
   t.notes = {"none: lit by the sun without shadows; rays: exact transmittance at each particle "
              "(engine/math/shadow_ray_index.h); map SxK: opacity shadow map of S texels across and K "

@@ -1,4 +1,4 @@
-#include "systems/charts/chart_table.h"
+#include "tools/charts/chart_table.h"
 
 #include <cmath>
 #include <cstdio>

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/progress_sink.h"
-#include "systems/charts/chart_table.h"
+#include "tools/charts/chart_table.h"
 
 namespace pyro {
 
@@ -58,7 +58,7 @@ ChartTable chart_shadows(const ShadowsChartOptions& options);
 // The octave approximation of multiple scattering (engine/math/scattering_octaves.h) with each
 // count of octaves, drawn by the engine's lit splats (a grid imported once, relit by the light
 // phase) and timed, against the path-traced truth of the grid
-// (systems/reference/path_traced_volume.h), lit by the sun alone.
+// (systems/runtime/reference/path_traced_volume.h), lit by the sun alone.
 struct ScatteringChartOptions {
   std::string file;  // empty: content/volumes/sample_cloud.vdb
   std::vector<int> octaves{1, 2, 3, 4, 6, 8};
@@ -89,7 +89,7 @@ struct ParticleBudgetChartOptions {
 };
 ChartTable chart_particle_budget(const ParticleBudgetChartOptions& options);
 
-// Flipbook in-between frames (systems/charts/chart_flipbook_blend.cpp): for each count of frames
+// Flipbook in-between frames (tools/charts/chart_flipbook_blend.cpp): for each count of frames
 // per loop, the fire scene baked as an atlas with motion vectors at twice the frames; linear and
 // motion-vector blends of neighbouring even frames at t = 0.5 against the odd frame between them.
 // "time" is the frame count, "error" the RMSE.

@@ -1,5 +1,5 @@
 #pragma once
-// A helper program the command line runs (the plotting script) is missing or failed: not the
+// A helper program the command line runs (a plotting script) is missing or failed: not the
 // user's argument, not a bug in pyro. main() prints what() and exits with status 1.
 #include <stdexcept>
 #include <string>

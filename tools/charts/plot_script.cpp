@@ -1,4 +1,4 @@
-#include "tools/pyro/plot_script.h"
+#include "tools/charts/plot_script.h"
 
 #include <sys/wait.h>
 
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "tools/pyro/external_tool_error.h"
+#include "tools/charts/external_tool_error.h"
 
 namespace pyro::cli {
 

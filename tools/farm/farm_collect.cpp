@@ -1,4 +1,4 @@
-#include "systems/farm/farm_collect.h"
+#include "tools/farm/farm_collect.h"
 
 #include <algorithm>
 #include <fstream>
@@ -11,8 +11,8 @@
 #include "engine/io/output_folder.h"
 #include "engine/io/staging_folder.h"
 #include "engine/io/text_file.h"
-#include "systems/farm/frame_chunks.h"
-#include "systems/scene_runtime/run_identity.h"
+#include "tools/farm/frame_chunks.h"
+#include "systems/runtime/scene_runtime/run_identity.h"
 
 namespace pyro {
 

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "systems/farm/farm_record.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "tools/farm/farm_record.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 

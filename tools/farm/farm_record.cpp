@@ -1,4 +1,4 @@
-#include "systems/farm/farm_record.h"
+#include "tools/farm/farm_record.h"
 
 #include <fstream>
 #include <iterator>

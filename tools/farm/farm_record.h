@@ -2,7 +2,7 @@
 // What `pyro farm submit` writes into the output folder so that `pyro farm collect` and
 // `pyro farm resubmit` (run later, by hand or as a Slurm job, on any node) know the job:
 // DIR/.farm/farm.json holds the scene, the frames, the chunk size, the run's identity (what
-// `pyro render` keys output folders on: systems/scene_runtime/run_identity.h), the absolute path
+// `pyro render` keys output folders on: systems/runtime/scene_runtime/run_identity.h), the absolute path
 // of the pyro binary every task runs and the render options passed on to each task, plus the
 // Slurm jobs submitted so far. Beside it: the batch scripts and the tasks' logs, and chunks/A-B,
 // the output folder of the task rendering frames A..B.
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "systems/scene_runtime/frame_range.h"
+#include "systems/runtime/scene_runtime/frame_range.h"
 
 namespace pyro {
 

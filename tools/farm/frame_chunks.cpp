@@ -1,4 +1,4 @@
-#include "systems/farm/frame_chunks.h"
+#include "tools/farm/frame_chunks.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "systems/scene_runtime/frame_range.h"
+#include "systems/runtime/scene_runtime/frame_range.h"
 
 namespace pyro {
 

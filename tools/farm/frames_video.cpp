@@ -1,4 +1,4 @@
-#include "systems/farm/frames_video.h"
+#include "tools/farm/frames_video.h"
 
 #include <filesystem>
 #include <memory>
@@ -7,7 +7,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/png_file.h"
 #include "engine/io/video_file.h"
-#include "systems/farm/farm_collect.h"
+#include "tools/farm/farm_collect.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/farm/sbatch.h"
+#include "tools/farm/sbatch.h"
 
 #include <spawn.h>
 #include <sys/wait.h>

@@ -1,6 +1,6 @@
-#include "systems/farm/slurm_script.h"
+#include "tools/farm/slurm_script.h"
 
-#include "systems/farm/frame_chunks.h"
+#include "tools/farm/frame_chunks.h"
 
 namespace pyro {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "systems/farm/farm_record.h"
+#include "tools/farm/farm_record.h"
 
 namespace pyro {
 

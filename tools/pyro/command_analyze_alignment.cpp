@@ -17,11 +17,11 @@
 #include "engine/core/user_error.h"
 #include "engine/io/text_file.h"
 #include "engine/math/billboard_alignment.h"
-#include "systems/charts/alignment_figures.h"
+#include "tools/charts/alignment_figures.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
-#include "tools/pyro/external_tool_error.h"
-#include "tools/pyro/plot_script.h"
+#include "tools/charts/external_tool_error.h"
+#include "tools/charts/plot_script.h"
 #include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {

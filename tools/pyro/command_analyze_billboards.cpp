@@ -9,13 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include "components/frame_image.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "engine/math/image_error.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"
-#include "systems/benchmarks/frame_timing.h"
+#include "tools/bench/frame_timing.h"
 
 namespace pyro::cli {
 

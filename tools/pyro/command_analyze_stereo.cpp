@@ -33,7 +33,7 @@ struct StereoArgs {
   float fov_y_deg = 45.0f;
   float near = 0.1f;
   float far = 200.0f;
-  // The scenes' default camera (systems/scene/scene_description.h).
+  // The scenes' default camera (systems/runtime/scene/scene_description.h).
   std::vector<float> eye{0.0f, 1.5f, 8.0f};
   std::vector<float> target{0.0f, 1.5f, 0.0f};
   int samples = 21;

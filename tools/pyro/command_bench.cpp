@@ -1,7 +1,7 @@
 // pyro bench ecs | sort | scale | import-cases | render | johnson | layers | table1 | soak | vdb | relight | multiple-scattering | cycles | schedule ... [--json]
 //
-// Each subcommand parses its options, runs the benchmark (systems/benchmarks; bench ecs:
-// tools/pyro/bench_ecs.h) and prints its result.
+// Each subcommand parses its options, runs the benchmark (tools/bench; bench ecs:
+// tools/bench/bench_ecs.h) and prints its result.
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -9,14 +9,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tools/pyro/bench_ecs.h"
-#include "systems/benchmarks/bench_johnson.h"
-#include "systems/benchmarks/bench_layers.h"
-#include "systems/benchmarks/import_cases.h"
-#include "systems/benchmarks/bench_render.h"
-#include "systems/benchmarks/bench_scale.h"
-#include "systems/benchmarks/bench_soak.h"
-#include "systems/benchmarks/bench_sort.h"
+#include "tools/bench/bench_ecs.h"
+#include "tools/bench/bench_johnson.h"
+#include "tools/bench/bench_layers.h"
+#include "tools/bench/import_cases.h"
+#include "tools/bench/bench_render.h"
+#include "tools/bench/bench_scale.h"
+#include "tools/bench/bench_soak.h"
+#include "tools/bench/bench_sort.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/render_options.h"
@@ -43,7 +43,7 @@ void add_bench_ecs(CLI::App* bench) {
   ecs_cmd->add_option("--repeats", ecs->repeats, "Interleaved repeats (medians reported)")
       ->check(CLI::Range(1, 1000));
   ecs_cmd->add_flag("--json", ecs->json, "Print one JSON object");
-  ecs_cmd->callback([ecs] { print(bench_ecs(ecs->entities, ecs->repeats), ecs->json); });
+  ecs_cmd->callback([ecs] { print(bench_ecs(ecs->entities, ecs->repeats, terminal_progress()), ecs->json); });
 }
 
 void add_bench_sort(CLI::App* bench) {

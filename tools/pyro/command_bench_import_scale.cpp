@@ -1,6 +1,6 @@
 // pyro bench import-scale [--voxels N] [--keep FILE] [--source FILE] [--error E] [--error-size N]
 //                         [--error-samples N] [--threads T] [--json]
-// The VDB import at production sizes (systems/benchmarks/import_scale.h): a synthetic file of at
+// The VDB import at production sizes (tools/bench/import_scale.h): a synthetic file of at
 // least N active voxels read sparse and imported, voxels per second and peak resident memory.
 #include <unistd.h>
 
@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "systems/benchmarks/import_scale.h"
+#include "tools/bench/import_scale.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"

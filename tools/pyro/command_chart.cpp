@@ -1,7 +1,7 @@
 // pyro chart NAME --out DIR [--width W] [--height H] [--frames N] [--csv-only] [--json]
 // One chart per command: time (x) against error (y), one point per setting, the Pareto front
 // marked (the scale chart: ms against particles, log-log). The data come from
-// systems/charts/chart_<name>.cpp (charts.h); DIR/NAME.csv is written
+// tools/charts/chart_<name>.cpp (charts.h); DIR/NAME.csv is written
 // atomically, then tools/plots/plot_pareto.py draws DIR/NAME.png from it.
 #include <unistd.h>
 
@@ -16,9 +16,9 @@
 #include "engine/core/user_error.h"
 #include "engine/io/io_error.h"
 #include "engine/io/text_file.h"
-#include "systems/charts/charts.h"
+#include "tools/charts/charts.h"
 #include "tools/pyro/commands.h"
-#include "tools/pyro/plot_script.h"
+#include "tools/charts/plot_script.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"
 

@@ -16,9 +16,9 @@
 
 #include "engine/core/same_file.h"
 #include "engine/core/user_error.h"
-#include "systems/open_scene/open_scene.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/open_scene/open_scene.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/flipbook_bake.h"
 #include "systems/flipbook_fire/flipbook_atlas.h"
 #include "systems/flipbook_fire/flipbook_layout.h"
 #include "systems/flipbook_fire/flipbook_pattern.h"

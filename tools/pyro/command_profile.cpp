@@ -2,7 +2,7 @@
 //                    [--trace FILE] [render options]
 //
 // A profiling run (SceneRuntime with RuntimeOptions::profile) of the scene opened as every
-// command opens it (systems/open_scene/open_scene.h: a quality target's pick applied, and
+// command opens it (systems/runtime/open_scene/open_scene.h: a quality target's pick applied, and
 // reported under "quality" in the JSON summary): K warm-up frames (shader
 // compilation, first allocations; not counted), then N frames, every system timed on the CPU
 // and every GL pass on the GPU (timer queries). Prints per system the mean, median, 95th
@@ -18,10 +18,10 @@
 
 #include "engine/core/trace_events.h"
 #include "engine/io/text_file.h"
-#include "systems/open_scene/open_scene.h"
-#include "systems/profiling/profile_report.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/open_scene/open_scene.h"
+#include "tools/bench/profile_report.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/print_note.h"
 #include "tools/pyro/render_options.h"

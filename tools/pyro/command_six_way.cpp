@@ -1,7 +1,7 @@
 // pyro bake-flipbook SCENE --out DIR --six-way [--frames N] [--width W] [--height H] [--loop-blend
 // K] pyro analyze six-way [--scene SCENE] [--frame F] [--width W] [--height H] [--image PNG]
 // [--json] pyro analyze six-way-relight DIR --image PNG [--frame F] [--light X Y Z] Six-way
-// lightmaps (systems/six_way_lighting): baked from a lit smoke scene as Unity VFX Graph's two
+// lightmaps (tools/bake): baked from a lit smoke scene as Unity VFX Graph's two
 // textures per frame, and their relighting measured against the CPU reference for the 8 lights
 // between the axes.
 #include <chrono>
@@ -15,12 +15,12 @@
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "engine/io/png_file.h"
-#include "systems/open_scene/open_scene.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
-#include "systems/six_way_lighting/six_way_bake.h"
-#include "systems/six_way_lighting/six_way_error.h"
-#include "systems/six_way_lighting/six_way_folder.h"
+#include "systems/runtime/open_scene/open_scene.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
+#include "tools/bake/six_way_bake.h"
+#include "tools/analyze/six_way_error.h"
+#include "tools/bake/six_way_folder.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/print_note.h"
 #include "tools/pyro/six_way_bake_command.h"

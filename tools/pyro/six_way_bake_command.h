@@ -1,10 +1,10 @@
 #pragma once
 // `pyro bake-flipbook --six-way` (command_six_way.cpp): the flame bake's options, six-way
-// lightmaps instead of flame frames (systems/six_way_lighting/six_way_bake.h).
+// lightmaps instead of flame frames (tools/bake/six_way_bake.h).
 #include <string>
 
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/flipbook_bake.h"
 
 namespace pyro::cli {
 

@@ -1,4 +1,4 @@
-#include "systems/viewer/frame_time_history.h"
+#include "tools/viewer/frame_time_history.h"
 
 #include <algorithm>
 

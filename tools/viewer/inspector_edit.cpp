@@ -1,4 +1,4 @@
-#include "systems/viewer/inspector_edit.h"
+#include "tools/viewer/inspector_edit.h"
 
 #include <algorithm>
 #include <utility>

@@ -1,5 +1,5 @@
 #pragma once
-// An edit the inspector asks of the scene document (systems/authoring/scene_document.h): the
+// An edit the inspector asks of the scene document (tools/authoring/scene_document.h): the
 // value at a JSON pointer. A key whose object is not written in the file yet (a default shown in
 // the inspector) is set by writing the nearest missing object around it.
 #include <string>

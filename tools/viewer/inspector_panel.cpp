@@ -1,4 +1,4 @@
-#include "systems/viewer/inspector_panel.h"
+#include "tools/viewer/inspector_panel.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>

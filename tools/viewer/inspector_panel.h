@@ -1,7 +1,7 @@
 #pragma once
 // The inspector (Dear ImGui): the scene's entities (camera, lights, clouds, volumes, emitters,
 // fires, meshes, and the scene-wide objects) and every key of each, each with a widget chosen
-// from its key table (systems/scene/scene_keys.h): sliders within the loader's ranges, colour
+// from its key table (systems/runtime/scene/scene_keys.h): sliders within the loader's ranges, colour
 // pickers, vectors, choices, nested objects, and a plot with a JSON field for the life curves.
 // Keys the file does not write show their default, greyed; editing one writes it. The panel only
 // asks for changes: the viewer applies them through the scene document, which refuses what the
@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/parameter_table.h"
-#include "systems/viewer/inspector_edit.h"
+#include "tools/viewer/inspector_edit.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/viewer/profiler_panel.h"
+#include "tools/viewer/profiler_panel.h"
 
 #include <imgui.h>
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "systems/scene_runtime/particle_counts.h"
-#include "systems/viewer/frame_time_history.h"
+#include "systems/runtime/scene_runtime/particle_counts.h"
+#include "tools/viewer/frame_time_history.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/viewer/scene_reloader.h"
+#include "tools/viewer/scene_reloader.h"
 
 #include <sys/stat.h>
 

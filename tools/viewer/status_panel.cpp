@@ -1,4 +1,4 @@
-#include "systems/viewer/status_panel.h"
+#include "tools/viewer/status_panel.h"
 
 #include <imgui.h>
 

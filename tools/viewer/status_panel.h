@@ -4,7 +4,7 @@
 // when help is on), at the bottom left of the window.
 #include <vector>
 
-#include "systems/viewer/viewer_overlay.h"
+#include "tools/viewer/viewer_overlay.h"
 
 namespace pyro {
 

@@ -1,11 +1,11 @@
-#include "systems/viewer/stereo_panel.h"
+#include "tools/viewer/stereo_panel.h"
 
 #include <imgui.h>
 
 #include <string>
 
 #include "engine/core/enum_names.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "components/render_settings.h"
-#include "systems/viewer/inspector_panel.h"
+#include "tools/viewer/inspector_panel.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/viewer/viewer.h"
+#include "tools/viewer/viewer.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -20,23 +20,23 @@
 #include "engine/gpu/window_context.h"
 #include "engine/io/png_file.h"
 #include "engine/math/view_controller.h"
-#include "systems/authoring/scene_document.h"
-#include "systems/open_scene/open_scene.h"
-#include "systems/scene/scene_keys.h"
-#include "systems/scene_runtime/particle_counts.h"
-#include "systems/scene_runtime/scene_asset_cache.h"
-#include "systems/scene_runtime/scene_runtime.h"
-#include "systems/viewer/frame_time_history.h"
-#include "systems/viewer/inspector_panel.h"
-#include "systems/viewer/profiler_panel.h"
-#include "systems/viewer/scene_reloader.h"
-#include "systems/viewer/status_panel.h"
-#include "systems/viewer/stereo_panel.h"
-#include "systems/viewer/viewer_gui.h"
-#include "systems/viewer/viewer_keys.h"
-#include "systems/viewer/viewer_overlay.h"
-#include "systems/viewer/viewer_settings.h"
-#include "systems/viewer/window_image.h"
+#include "tools/authoring/scene_document.h"
+#include "systems/runtime/open_scene/open_scene.h"
+#include "systems/runtime/scene/scene_keys.h"
+#include "systems/runtime/scene_runtime/particle_counts.h"
+#include "systems/runtime/scene_runtime/scene_asset_cache.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
+#include "tools/viewer/frame_time_history.h"
+#include "tools/viewer/inspector_panel.h"
+#include "tools/viewer/profiler_panel.h"
+#include "tools/viewer/scene_reloader.h"
+#include "tools/viewer/status_panel.h"
+#include "tools/viewer/stereo_panel.h"
+#include "tools/viewer/viewer_gui.h"
+#include "tools/viewer/viewer_keys.h"
+#include "tools/viewer/viewer_overlay.h"
+#include "tools/viewer/viewer_settings.h"
+#include "tools/viewer/window_image.h"
 
 namespace pyro {
 
@@ -208,7 +208,7 @@ class Viewer {
     return j;
   }
 
-  // The scene through the engine's front door (systems/open_scene/open_scene.h) with the
+  // The scene through the engine's front door (systems/runtime/open_scene/open_scene.h) with the
   // viewer's settings: `scene` as held (none: the file read again), `pick` the quality pick
   // already made for it (none: the cache's, or measured now, for a scene with a target).
   OpenedScene open(std::optional<SceneDescription> scene, std::optional<QualityPick> pick,

@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 
@@ -67,7 +67,7 @@ struct ViewerOptions {
 // milliseconds per frame (runtime and window parts), the settings at the end, the reloads, the
 // edits applied, what the assets cost (files read or reused, flipbooks baked), and the quality
 // pick it runs with (a scene with quality.max_rmse, opened as every command opens it:
-// systems/open_scene/open_scene.h).
+// systems/runtime/open_scene/open_scene.h).
 nlohmann::json run_viewer(const ViewerOptions& options, SceneDescription scene);
 
 }  // namespace pyro

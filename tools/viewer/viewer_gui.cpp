@@ -1,4 +1,4 @@
-#include "systems/viewer/viewer_gui.h"
+#include "tools/viewer/viewer_gui.h"
 
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>

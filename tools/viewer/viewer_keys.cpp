@@ -1,4 +1,4 @@
-#include "systems/viewer/viewer_keys.h"
+#include "tools/viewer/viewer_keys.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

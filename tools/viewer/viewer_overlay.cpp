@@ -1,9 +1,9 @@
-#include "systems/viewer/viewer_overlay.h"
+#include "tools/viewer/viewer_overlay.h"
 
 #include <algorithm>
 #include <cstdio>
 
-#include "systems/viewer/viewer_keys.h"
+#include "tools/viewer/viewer_keys.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/viewer/viewer_settings.h"
+#include "tools/viewer/viewer_settings.h"
 
 namespace pyro {
 

@@ -5,8 +5,8 @@
 #include <string_view>
 
 #include "components/render_settings.h"
-#include "systems/scene/scene_description.h"
-#include "systems/viewer/viewer_keys.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "tools/viewer/viewer_keys.h"
 
 namespace pyro {
 

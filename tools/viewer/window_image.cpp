@@ -1,4 +1,4 @@
-#include "systems/viewer/window_image.h"
+#include "tools/viewer/window_image.h"
 
 #include <epoxy/gl.h>
 

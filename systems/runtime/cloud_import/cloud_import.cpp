@@ -1,4 +1,4 @@
-#include "systems/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
 
 #include <algorithm>
 #include <chrono>
@@ -10,8 +10,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "systems/cloud_import/light_sweep.h"
-#include "systems/reference/parallel_rows.h"
+#include "systems/runtime/cloud_import/light_sweep.h"
+#include "systems/runtime/reference/parallel_rows.h"
 
 namespace pyro {
 

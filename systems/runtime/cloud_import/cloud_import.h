@@ -7,7 +7,7 @@
 // integral equals the block's mass: k = sigma_t_mean * V_block / ((2 pi)^(3/2) s^3), with
 // s = kappa * b * voxel length. Its optical depth through the centre (clamped kernel, see
 // engine/math/footprint.h) is tau0 = k s sqrt(2 pi) erf(3 / sqrt 2), and the splat's density is
-// rho = 1 - exp(-tau0), so the opacity at the centre is exact (systems/reference/particle_reference.h
+// rho = 1 - exp(-tau0), so the opacity at the centre is exact (systems/runtime/reference/particle_reference.h
 // uses the same relation).
 //
 // Merging (an octree over a mip pyramid). Top blocks are 2^max_level voxels on a side. A block is

@@ -1,7 +1,7 @@
 #pragma once
 // The sum of grid Gaussians (grid_gaussian.h) as a field over a grid's voxels: what the fit
 // (gaussian_fit.h) and the lighting of fitted Gaussians (gaussian_lighting.h) visit. Internal to
-// systems/cloud_import.
+// systems/runtime/cloud_import.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -11,8 +11,8 @@
 #include <glm/matrix.hpp>
 
 #include "engine/io/vdb_reader.h"
-#include "systems/cloud_import/grid_gaussian.h"
-#include "systems/reference/parallel_rows.h"
+#include "systems/runtime/cloud_import/grid_gaussian.h"
+#include "systems/runtime/reference/parallel_rows.h"
 
 namespace pyro::gaussian_field {
 

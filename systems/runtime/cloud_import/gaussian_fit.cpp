@@ -1,4 +1,4 @@
-#include "systems/cloud_import/gaussian_fit.h"
+#include "systems/runtime/cloud_import/gaussian_fit.h"
 
 #include <algorithm>
 #include <array>
@@ -11,8 +11,8 @@
 #include <glm/matrix.hpp>
 
 #include "engine/math/symmetric_eigen.h"
-#include "systems/cloud_import/gaussian_field.h"
-#include "systems/reference/parallel_rows.h"
+#include "systems/runtime/cloud_import/gaussian_field.h"
+#include "systems/runtime/reference/parallel_rows.h"
 
 namespace pyro {
 

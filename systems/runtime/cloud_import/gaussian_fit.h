@@ -25,7 +25,7 @@
 #include "components/volume_medium.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/particles/anisotropic_gaussian.h"
-#include "systems/cloud_import/grid_gaussian.h"
+#include "systems/runtime/cloud_import/grid_gaussian.h"
 
 namespace pyro {
 

@@ -1,9 +1,9 @@
-#include "systems/cloud_import/gaussian_lighting.h"
+#include "systems/runtime/cloud_import/gaussian_lighting.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "systems/cloud_import/gaussian_field.h"
+#include "systems/runtime/cloud_import/gaussian_field.h"
 
 namespace pyro {
 

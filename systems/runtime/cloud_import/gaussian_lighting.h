@@ -17,13 +17,13 @@
 #include "components/volume_medium.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/particles/anisotropic_gaussian.h"
-#include "systems/cloud_import/grid_gaussian.h"
+#include "systems/runtime/cloud_import/grid_gaussian.h"
 
 namespace pyro {
 
 // T(x) = exp(-tau_light(x)) at every voxel of the grid with density (1 elsewhere), from the
 // optical depths to the light in the layout of grid.values (light_sweep.h, or the reference's
-// marched ones, systems/reference/volume_reference.h).
+// marched ones, systems/runtime/reference/volume_reference.h).
 std::vector<float> light_transmittance_field(const DenseGrid& grid, std::vector<float> light_depth);
 
 // Sets every Gaussian's `lit`: the density-weighted mean of T over it, then `iterations` SIRT

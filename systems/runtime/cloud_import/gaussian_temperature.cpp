@@ -1,11 +1,11 @@
-#include "systems/cloud_import/gaussian_temperature.h"
+#include "systems/runtime/cloud_import/gaussian_temperature.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <glm/matrix.hpp>
 
-#include "systems/reference/parallel_rows.h"
+#include "systems/runtime/reference/parallel_rows.h"
 
 namespace pyro {
 

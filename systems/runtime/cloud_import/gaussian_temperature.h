@@ -16,7 +16,7 @@
 #include "engine/math/temperature_emission.h"
 #include "engine/particles/anisotropic_gaussian.h"
 #include "engine/volume/dense_grid.h"
-#include "systems/cloud_import/grid_gaussian.h"
+#include "systems/runtime/cloud_import/grid_gaussian.h"
 
 namespace pyro {
 

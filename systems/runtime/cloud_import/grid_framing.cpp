@@ -1,4 +1,4 @@
-#include "systems/cloud_import/grid_framing.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "systems/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
 
 namespace pyro {
 

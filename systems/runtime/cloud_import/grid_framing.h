@@ -8,7 +8,7 @@
 #include "components/volume_medium.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/math/camera_math.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/cloud_import/grid_gaussian.h"
+#include "systems/runtime/cloud_import/grid_gaussian.h"
 
 #include <cmath>
 #include <numbers>
@@ -7,7 +7,7 @@
 #include <glm/matrix.hpp>
 
 #include "engine/math/symmetric_eigen.h"
-#include "systems/reference/volume_reference.h"
+#include "systems/runtime/reference/volume_reference.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/cloud_import/light_sweep.h"
+#include "systems/runtime/cloud_import/light_sweep.h"
 
 #include <algorithm>
 #include <barrier>
@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
-#include "systems/reference/volume_reference.h"
+#include "systems/runtime/reference/volume_reference.h"
 
 namespace pyro {
 

@@ -6,7 +6,7 @@
 // index space) is largest and visited from the light's side. A voxel's depth is the depth at the
 // point one slice towards the light (bilinear in that slice) plus the trapezoid rule over the step
 // between them. O(voxels of the box), one bilinear lookup each; its error against the marched
-// reference (systems/reference/volume_reference.h, light_optical_depth) is measured in the tests.
+// reference (systems/runtime/reference/volume_reference.h, light_optical_depth) is measured in the tests.
 //
 // Memory: the sweep itself keeps two slices of the box's cross-section (depth and density), so
 // it needs no array over the whole box; the dense form returns one, the sparse form returns the

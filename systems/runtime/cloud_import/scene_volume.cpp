@@ -1,4 +1,4 @@
-#include "systems/cloud_import/scene_volume.h"
+#include "systems/runtime/cloud_import/scene_volume.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,10 +11,10 @@
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/io/vdb_temperature_grid.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/gaussian_temperature.h"
-#include "systems/cloud_import/grid_gaussian.h"
-#include "systems/cloud_import/volume_fire.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/gaussian_temperature.h"
+#include "systems/runtime/cloud_import/grid_gaussian.h"
+#include "systems/runtime/cloud_import/volume_fire.h"
 #include "systems/lighting/lighting_system.h"
 
 namespace pyro {

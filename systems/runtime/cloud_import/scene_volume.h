@@ -2,7 +2,7 @@
 // A scene's `volumes[]` entry made into Gaussian particles: a particle file is read as it is
 // (isotropic particles from a version 1 file, anisotropic ones from a version 2 file), an
 // OpenVDB grid is imported (cloud_import.h) with the scene's light, then the placement
-// (position, scale or size, anchor; systems/scene/scene_description.h) is applied.
+// (position, scale or size, anchor; systems/runtime/scene/scene_description.h) is applied.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,7 +11,7 @@
 
 #include "engine/particles/anisotropic_gaussian.h"
 #include "engine/particles/gaussian_particle.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

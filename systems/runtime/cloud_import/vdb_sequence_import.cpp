@@ -1,4 +1,4 @@
-#include "systems/cloud_import/vdb_sequence_import.h"
+#include "systems/runtime/cloud_import/vdb_sequence_import.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_file_check.h"
-#include "systems/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
 
 namespace pyro {
 

@@ -16,7 +16,7 @@
 #include "engine/core/progress_sink.h"
 #include "engine/io/particle_sequence.h"
 #include "engine/io/vdb_reader.h"
-#include "systems/cloud_import/vdb_sequence_members.h"
+#include "systems/runtime/cloud_import/vdb_sequence_members.h"
 
 namespace pyro {
 

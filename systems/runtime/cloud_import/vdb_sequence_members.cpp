@@ -1,4 +1,4 @@
-#include "systems/cloud_import/vdb_sequence_members.h"
+#include "systems/runtime/cloud_import/vdb_sequence_members.h"
 
 #include <fnmatch.h>
 

@@ -1,4 +1,4 @@
-#include "systems/cloud_import/volume_fire.h"
+#include "systems/runtime/cloud_import/volume_fire.h"
 
 #include <cstdio>
 

@@ -10,7 +10,7 @@
 #include "engine/math/temperature_emission.h"
 #include "engine/particles/anisotropic_gaussian.h"
 #include "engine/particles/gaussian_particle.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

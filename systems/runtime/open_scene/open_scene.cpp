@@ -1,8 +1,8 @@
-#include "systems/open_scene/open_scene.h"
+#include "systems/runtime/open_scene/open_scene.h"
 
 #include <utility>
 
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 
 namespace pyro {
 

@@ -12,10 +12,10 @@
 #include <optional>
 #include <string>
 
-#include "systems/quality_picker/quality_picker.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/runtime_options.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/quality_picker/quality_picker.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 

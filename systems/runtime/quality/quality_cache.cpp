@@ -1,4 +1,4 @@
-#include "systems/quality/quality_cache.h"
+#include "systems/runtime/quality/quality_cache.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include "systems/quality/quality_settings.h"
+#include "systems/runtime/quality/quality_settings.h"
 
 #include <stdexcept>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// The settings a quality target chooses (systems/quality_picker/quality_picker.h): the particle layer's
+// The settings a quality target chooses (systems/runtime/quality_picker/quality_picker.h): the particle layer's
 // resolution, the footprint table's size, the simulation's time step (as substeps per frame) and,
 // in a scene with lit media, how the sun's shadows are found (docs/lighting.md).
 #include <optional>
@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "components/shadow_settings.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/quality_picker/quality_measurement.h"
+#include "systems/runtime/quality_picker/quality_measurement.h"
 
 #include <epoxy/gl.h>
 
@@ -18,11 +18,11 @@
 #include "engine/core/sample_statistics.h"
 #include "engine/core/user_error.h"
 #include "engine/ecs/world.h"
-#include "systems/reference/anisotropic_reference.h"
-#include "systems/reference/lit_particle_reference.h"
-#include "systems/reference/particle_reference.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/reference/anisotropic_reference.h"
+#include "systems/runtime/reference/lit_particle_reference.h"
+#include "systems/runtime/reference/particle_reference.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 

@@ -3,7 +3,7 @@
 // truth and its time per frame.
 //
 // Ground truth:
-//  * Gaussian particle scenes (clouds, volumes): the CPU reference (systems/reference), the
+//  * Gaussian particle scenes (clouds, volumes): the CPU reference (systems/runtime/reference), the
 //    exact sum of Gaussians integrated in closed form, over the GL render of the opaque scene
 //    (meshes and background, which both renderers share) and cut at its depth; lit media with
 //    exact shadows on both (lit_particle_reference.h).
@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "systems/scene/scene_description.h"
-#include "systems/quality/quality_settings.h"
-#include "systems/reference/rgb_image.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/quality/quality_settings.h"
+#include "systems/runtime/reference/rgb_image.h"
 
 namespace pyro {
 
@@ -39,7 +39,7 @@ class QualityGroundTruth {
 
 // The CPU reference images of `frames` (ascending) of a Gaussian particle scene (mono, width x
 // height): the exact particles over the GL-rendered opaque scene, lit with exact shadows when the
-// scene's media are lit (systems/reference/lit_particle_reference.h; fitted anisotropic particles:
+// scene's media are lit (systems/runtime/reference/lit_particle_reference.h; fitted anisotropic particles:
 // anisotropic_reference.h). A scene holding both kinds of Gaussian throws UserError naming it.
 std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, int width, int height,
                                                 const std::vector<int>& frames);

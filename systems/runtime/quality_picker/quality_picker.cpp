@@ -1,4 +1,4 @@
-#include "systems/quality_picker/quality_picker.h"
+#include "systems/runtime/quality_picker/quality_picker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <optional>
 
 #include "engine/core/user_error.h"
-#include "systems/quality/quality_cache.h"
-#include "systems/quality_picker/quality_measurement.h"
+#include "systems/runtime/quality/quality_cache.h"
+#include "systems/runtime/quality_picker/quality_measurement.h"
 
 namespace pyro {
 

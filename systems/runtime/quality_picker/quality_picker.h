@@ -14,9 +14,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "systems/scene/scene_description.h"
-#include "systems/quality/quality_settings.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/quality/quality_settings.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/reference/anisotropic_reference.h"
+#include "systems/runtime/reference/anisotropic_reference.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,9 +12,9 @@
 #include "engine/math/anisotropic_optical_depth.h"
 #include "engine/math/projected_ellipsoid.h"
 #include "engine/math/shadow_ray_index.h"
-#include "systems/reference/parallel_rows.h"
-#include "systems/reference/pixel_ray.h"
-#include "systems/reference/ray_pieces.h"
+#include "systems/runtime/reference/parallel_rows.h"
+#include "systems/runtime/reference/pixel_ray.h"
+#include "systems/runtime/reference/ray_pieces.h"
 
 namespace pyro {
 

@@ -13,8 +13,8 @@
 
 #include "engine/math/camera_math.h"
 #include "engine/particles/anisotropic_gaussian.h"
-#include "systems/reference/lit_particle_reference.h"  // ReferenceSun
-#include "systems/reference/rgb_image.h"
+#include "systems/runtime/reference/lit_particle_reference.h"  // ReferenceSun
+#include "systems/runtime/reference/rgb_image.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/reference/lit_particle_reference.h"
+#include "systems/runtime/reference/lit_particle_reference.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -8,10 +8,10 @@
 
 #include "engine/math/phase_function.h"
 #include "engine/math/shadow_ray_index.h"
-#include "systems/reference/parallel_rows.h"
-#include "systems/reference/particle_reference.h"
-#include "systems/reference/pixel_ray.h"
-#include "systems/reference/ray_pieces.h"
+#include "systems/runtime/reference/parallel_rows.h"
+#include "systems/runtime/reference/particle_reference.h"
+#include "systems/runtime/reference/pixel_ray.h"
+#include "systems/runtime/reference/ray_pieces.h"
 
 namespace pyro {
 

@@ -21,7 +21,7 @@
 #include "engine/math/scattering_octaves.h"
 #include "engine/math/shadow_caster.h"
 #include "engine/particles/particle_pool.h"
-#include "systems/reference/rgb_image.h"
+#include "systems/runtime/reference/rgb_image.h"
 
 namespace pyro {
 

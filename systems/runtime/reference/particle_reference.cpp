@@ -1,4 +1,4 @@
-#include "systems/reference/particle_reference.h"
+#include "systems/runtime/reference/particle_reference.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include <glm/geometric.hpp>
 
 #include "engine/math/gaussian_line_integral.h"
-#include "systems/reference/parallel_rows.h"
-#include "systems/reference/pixel_ray.h"
-#include "systems/reference/ray_pieces.h"
+#include "systems/runtime/reference/parallel_rows.h"
+#include "systems/runtime/reference/pixel_ray.h"
+#include "systems/runtime/reference/ray_pieces.h"
 
 namespace pyro {
 

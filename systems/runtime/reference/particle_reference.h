@@ -14,8 +14,8 @@
 #include "engine/math/camera_math.h"
 #include "engine/math/gaussian_line_integral.h"
 #include "engine/particles/particle_pool.h"
-#include "systems/reference/ray_pieces.h"
-#include "systems/reference/rgb_image.h"
+#include "systems/runtime/reference/ray_pieces.h"
+#include "systems/runtime/reference/rgb_image.h"
 
 namespace pyro {
 

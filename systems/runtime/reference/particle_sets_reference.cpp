@@ -1,4 +1,4 @@
-#include "systems/reference/particle_sets_reference.h"
+#include "systems/runtime/reference/particle_sets_reference.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,9 +8,9 @@
 
 #include "engine/math/gaussian_line_integral.h"
 #include "engine/math/sphere_line_integral.h"
-#include "systems/reference/parallel_rows.h"
-#include "systems/reference/pixel_ray.h"
-#include "systems/reference/ray_pieces.h"
+#include "systems/runtime/reference/parallel_rows.h"
+#include "systems/runtime/reference/pixel_ray.h"
+#include "systems/runtime/reference/ray_pieces.h"
 
 namespace pyro {
 

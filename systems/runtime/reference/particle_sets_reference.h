@@ -15,7 +15,7 @@
 #include "components/render_modes.h"
 #include "engine/math/camera_math.h"
 #include "engine/particles/particle_pool.h"
-#include "systems/reference/rgb_image.h"
+#include "systems/runtime/reference/rgb_image.h"
 
 namespace pyro {
 

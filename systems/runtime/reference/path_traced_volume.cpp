@@ -1,4 +1,4 @@
-#include "systems/reference/path_traced_volume.h"
+#include "systems/runtime/reference/path_traced_volume.h"
 
 #include <chrono>
 #include <cmath>
@@ -9,10 +9,10 @@
 
 #include "engine/core/rng.h"
 #include "engine/math/phase_function.h"
-#include "systems/reference/grid_sampling.h"
-#include "systems/reference/parallel_rows.h"
-#include "systems/reference/pixel_ray.h"
-#include "systems/reference/volume_reference.h"
+#include "systems/runtime/reference/grid_sampling.h"
+#include "systems/runtime/reference/parallel_rows.h"
+#include "systems/runtime/reference/pixel_ray.h"
+#include "systems/runtime/reference/volume_reference.h"
 
 namespace pyro {
 

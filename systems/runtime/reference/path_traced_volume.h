@@ -2,7 +2,7 @@
 // The multiple-scattering ground truth for a density grid: a Monte Carlo path tracer.
 // The medium is components/volume_medium.h's: extinction * density per world unit, albedo, a sun
 // of irradiance 4π light_color travelling along light_direction (so that single scattering
-// matches systems/reference/volume_reference.h), and a Henyey–Greenstein phase of `anisotropy`.
+// matches systems/runtime/reference/volume_reference.h), and a Henyey–Greenstein phase of `anisotropy`.
 // A path that leaves the grid after scattering sees a uniform sky of radiance `ambient` (the
 // physical counterpart of the ray march's unshadowed ambient term); a camera ray that leaves
 // without scattering sees `background`. With max_scattering 1 (single scattering) the collision
@@ -24,7 +24,7 @@
 #include "engine/io/vdb_reader.h"
 #include "engine/math/camera_math.h"
 #include "engine/volume/sparse_grid.h"
-#include "systems/reference/rgb_image.h"
+#include "systems/runtime/reference/rgb_image.h"
 
 namespace pyro {
 

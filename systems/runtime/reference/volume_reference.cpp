@@ -1,4 +1,4 @@
-#include "systems/reference/volume_reference.h"
+#include "systems/runtime/reference/volume_reference.h"
 
 #include <chrono>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "systems/reference/grid_sampling.h"
-#include "systems/reference/parallel_rows.h"
-#include "systems/reference/pixel_ray.h"
+#include "systems/runtime/reference/grid_sampling.h"
+#include "systems/runtime/reference/parallel_rows.h"
+#include "systems/runtime/reference/pixel_ray.h"
 
 namespace pyro {
 

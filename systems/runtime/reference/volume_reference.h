@@ -20,8 +20,8 @@
 #include "engine/io/vdb_reader.h"
 #include "engine/math/scattering_octaves.h"
 #include "engine/math/camera_math.h"
-#include "systems/reference/rgb_image.h"
-#include "systems/reference/volume_emission.h"
+#include "systems/runtime/reference/rgb_image.h"
+#include "systems/runtime/reference/volume_emission.h"
 
 namespace pyro {
 

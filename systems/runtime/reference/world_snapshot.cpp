@@ -1,4 +1,4 @@
-#include "systems/reference/world_snapshot.h"
+#include "systems/runtime/reference/world_snapshot.h"
 
 #include "components/particle_set.h"
 

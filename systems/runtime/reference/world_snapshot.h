@@ -4,7 +4,7 @@
 #include "components/frame_image.h"
 #include "engine/ecs/world.h"
 #include "engine/particles/particle_pool.h"
-#include "systems/reference/rgb_image.h"
+#include "systems/runtime/reference/rgb_image.h"
 
 namespace pyro {
 

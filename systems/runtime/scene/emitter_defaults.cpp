@@ -1,4 +1,4 @@
-#include "systems/scene/emitter_defaults.h"
+#include "systems/runtime/scene/emitter_defaults.h"
 
 namespace pyro {
 

@@ -1,10 +1,10 @@
-#include "systems/scene/scene_budget.h"
+#include "systems/runtime/scene/scene_budget.h"
 
 #include <algorithm>
 #include <cstdio>
 
 #include "engine/core/user_error.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

@@ -19,7 +19,7 @@
 #include "components/particle_dynamics.h"
 #include "components/shadow_settings.h"
 #include "components/simulation_environment.h"
-#include "systems/scene/scene_budget.h"
+#include "systems/runtime/scene/scene_budget.h"
 
 namespace pyro {
 
@@ -96,7 +96,7 @@ struct MeshDescription {
 };
 
 // A volume read from a file: an OpenVDB grid imported as Gaussian particles when the scene is
-// loaded (systems/cloud_import), or a particle file (.pyrop, docs/particle_format.md) made by
+// loaded (systems/runtime/cloud_import), or a particle file (.pyrop, docs/particle_format.md) made by
 // `pyro import-vdb`. Paths are resolved against the scene file's folder by the loader, which also
 // chooses between `file` and `fallback` (the first that exists).
 // A particle sequence (a `.pyroseq` folder, engine/io/particle_sequence.h) is an animated volume:
@@ -133,7 +133,7 @@ struct VolumeDescription {
   std::string pointer;                       // JSON pointer of the entry, e.g. "/volumes/0"
   // VDB only: which grid (as `pyro import-vdb --grid / --grid-index`), the image error target
   // that sets the particle count, and the extinction per unit density (0: automatic, see
-  // default_extinction in systems/cloud_import/cloud_import.h).
+  // default_extinction in systems/runtime/cloud_import/cloud_import.h).
   std::string grid;                          // empty: "density", else the first float grid
   int grid_index = -1;                       // >= 0: overrides `grid`
   float error = 0.03f;                       // (0, 1]
@@ -158,7 +158,7 @@ struct FootprintDescription {
 
 // "quality": {"max_rmse": E}: instead of explicit settings, the engine picks the layer scale,
 // footprint table size and time step that keep the image's RMSE against the ground truth at
-// most E at the least measured cost (systems/quality).
+// most E at the least measured cost (systems/runtime/quality).
 struct QualityDescription {
   float max_rmse = 0.0f;  // (0, 1]; 0: no target given (the scene's own settings are used)
   bool given() const { return max_rmse > 0.0f; }

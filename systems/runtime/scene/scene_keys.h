@@ -1,5 +1,5 @@
 #pragma once
-// The scene file's keys, one table per concept (systems/scene/keys/, one file each): names,
+// The scene file's keys, one table per concept (systems/runtime/scene/keys/, one file each): names,
 // types, ranges, defaults (read from the description structs' default member initialisers),
 // descriptions, enumeration names and required keys. The loader reads through these tables, and
 // `pyro schema` and the documentation checks are derived from them (docs/scene_format.md).

@@ -2,7 +2,7 @@
 // unknown-key refusal) lives in engine/io (json_document.h, parameter_dictionary.h); what is here
 // is the scene's concepts, each a list of one-line reads plus the few checks that involve
 // several fields.
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -33,8 +33,8 @@
 #include "engine/io/json_document.h"
 #include "engine/io/parameter_dictionary.h"
 #include "engine/mesh/mesh_file_check.h"
-#include "systems/scene/emitter_defaults.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/emitter_defaults.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 namespace {
@@ -207,7 +207,7 @@ bool ends_with_ci(std::string_view s, std::string_view suffix);
 std::string resolve_against(const std::string& scene_file, const std::string& relative);
 
 // A mesh file's path: a .gltf, .glb or .obj file, resolved against the scene file's folder. The
-// file itself is read with the scene's assets (systems/scene_runtime/load_scene_assets.h).
+// file itself is read with the scene's assets (systems/runtime/scene_runtime/load_scene_assets.h).
 void read_mesh_file_path(ObjectReader& r, MeshDescription& m) {
   const std::string expected =
       "expected the path of a mesh file ending in \".gltf\", \".glb\" (glTF 2.0) or \".obj\", relative to "

@@ -9,7 +9,7 @@
 // was found. Nothing is silently clamped or defaulted: a key that is present must be valid.
 #include <string>
 
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

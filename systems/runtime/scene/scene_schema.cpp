@@ -1,5 +1,5 @@
 #include "engine/io/parameter_schema.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

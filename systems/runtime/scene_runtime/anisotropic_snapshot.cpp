@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/anisotropic_snapshot.h"
+#include "systems/runtime/scene_runtime/anisotropic_snapshot.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,7 @@
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
 #include "systems/billboard_render/anisotropic_splat_renderer.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 

@@ -2,14 +2,14 @@
 // Renders a list of anisotropic Gaussian particles offscreen (the process's headless EGL context,
 // systems/billboard_render/anisotropic_splat_renderer.h) over a uniform background and reads the
 // image back: what the engine shows of an anisotropic cloud, for comparison with the CPU
-// reference (systems/reference/anisotropic_reference.h). The target is RGBA32F, so the image
+// reference (systems/runtime/reference/anisotropic_reference.h). The target is RGBA32F, so the image
 // carries no rounding beyond the shader's float arithmetic.
 #include <vector>
 
 #include "engine/particles/anisotropic_gaussian.h"
-#include "systems/reference/rgb_image.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/particle_snapshot.h"  // SnapshotTiming
+#include "systems/runtime/reference/rgb_image.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/particle_snapshot.h"  // SnapshotTiming
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/build_world.h"
+#include "systems/runtime/scene_runtime/build_world.h"
 
 #include <cmath>
 
@@ -23,7 +23,7 @@
 #include "systems/animation/particle_prewarm.h"
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/composite/frame_targets.h"
-#include "systems/scene_runtime/mesh_geometry.h"
+#include "systems/runtime/scene_runtime/mesh_geometry.h"
 
 namespace pyro {
 

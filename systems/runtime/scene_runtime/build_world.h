@@ -5,8 +5,8 @@
 // Reads no file (the assets hold what files gave); needs the OpenGL context the world will
 // render with to be current (targets and textures are made here).
 #include "engine/ecs/world.h"
-#include "systems/scene_runtime/resolved_scene.h"
-#include "systems/scene_runtime/scene_assets.h"
+#include "systems/runtime/scene_runtime/resolved_scene.h"
+#include "systems/runtime/scene_runtime/scene_assets.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/scene_runtime/flipbook_bake.h"
 
 #include <chrono>
 #include <cstdio>
@@ -12,7 +12,7 @@
 #include "engine/core/content_location.h"
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "engine/io/exr_file.h"
 #include "engine/io/png_file.h"
 #include "engine/io/folder_replacement.h"
@@ -21,7 +21,7 @@
 #include "systems/flipbook_fire/flipbook_atlas_sidecar.h"
 #include "systems/flipbook_fire/flipbook_motion.h"
 #include "systems/flipbook_fire/particle_motion_splat.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 

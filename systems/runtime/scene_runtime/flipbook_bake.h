@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "systems/flipbook_fire/flipbook_frame_fade.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 
@@ -58,7 +58,7 @@ RuntimeOptions flipbook_runtime_options(const FlipbookBakeOptions& options);
 
 // Bakes from `runtime`, a scene checked by check_flipbook_bake and opened with
 // flipbook_runtime_options (pyro bake-flipbook opens it through the front door,
-// systems/open_scene/open_scene.h, so that a quality target's pick applies), still at frame 0.
+// systems/runtime/open_scene/open_scene.h, so that a quality target's pick applies), still at frame 0.
 FlipbookBakeResult bake_flipbook(SceneRuntime& runtime, const FlipbookBakeOptions& options,
                                  const std::string& out);
 

@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/frame_range.h"
+#include "systems/runtime/scene_runtime/frame_range.h"
 
 #include <charconv>
 

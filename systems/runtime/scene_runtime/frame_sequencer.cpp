@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/frame_sequencer.h"
+#include "systems/runtime/scene_runtime/frame_sequencer.h"
 
 #include <stdexcept>
 #include <string>

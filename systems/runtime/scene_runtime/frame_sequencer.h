@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "systems/scene_runtime/frame_range.h"
+#include "systems/runtime/scene_runtime/frame_range.h"
 
 namespace pyro {
 

@@ -1,12 +1,12 @@
-#include "systems/scene_runtime/load_scene_assets.h"
+#include "systems/runtime/scene_runtime/load_scene_assets.h"
 
 #include <utility>
 
-#include "systems/cloud_import/scene_volume.h"
-#include "systems/scene_runtime/flipbook_bake.h"
-#include "systems/scene_runtime/mesh_geometry.h"
-#include "systems/scene_runtime/resolve_scene.h"
-#include "systems/scene_runtime/scene_asset_cache.h"
+#include "systems/runtime/cloud_import/scene_volume.h"
+#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/scene_runtime/mesh_geometry.h"
+#include "systems/runtime/scene_runtime/resolve_scene.h"
+#include "systems/runtime/scene_runtime/scene_asset_cache.h"
 #include "systems/volume_sequence/sequence_asset.h"
 
 namespace pyro {

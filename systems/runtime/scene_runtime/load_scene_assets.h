@@ -6,9 +6,9 @@
 // they happen and into SceneAssets::notes. Errors are UserErrors naming the scene, the entry
 // and the file. With a cache (scene_asset_cache.h), volumes and prepared flipbooks whose inputs
 // are unchanged since its last load are taken from it instead of being read again.
-#include "systems/scene_runtime/resolved_scene.h"
-#include "systems/scene_runtime/runtime_options.h"
-#include "systems/scene_runtime/scene_assets.h"
+#include "systems/runtime/scene_runtime/resolved_scene.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene_runtime/scene_assets.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/mesh_geometry.h"
+#include "systems/runtime/scene_runtime/mesh_geometry.h"
 
 #include "engine/core/user_error.h"
 #include "engine/mesh/mesh_file.h"

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "engine/mesh/shared_mesh.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

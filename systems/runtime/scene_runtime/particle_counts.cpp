@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/particle_counts.h"
+#include "systems/runtime/scene_runtime/particle_counts.h"
 
 #include <array>
 

@@ -1,13 +1,13 @@
-#include "systems/scene_runtime/particle_snapshot.h"
+#include "systems/runtime/scene_runtime/particle_snapshot.h"
 
-#include "systems/cloud_import/scene_volume.h"
+#include "systems/runtime/cloud_import/scene_volume.h"
 
 #include <algorithm>
 #include <chrono>
 
 #include "components/frame_image.h"
 #include "components/particle_set.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "engine/particles/gaussian_particle.h"
-#include "systems/scene/scene_description.h"
-#include "systems/reference/rgb_image.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/reference/rgb_image.h"
 
 namespace pyro {
 

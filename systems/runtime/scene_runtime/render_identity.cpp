@@ -1,14 +1,13 @@
-#include "tools/pyro/render_identity.h"
+#include "systems/runtime/scene_runtime/render_identity.h"
 
 #include <limits>
 
 #include "engine/core/cache_folder.h"
 #include "engine/io/content_digest.h"
-#include "systems/scene_runtime/resolve_scene.h"
-#include "systems/scene_runtime/run_identity.h"
-#include "tools/pyro/print_note.h"
+#include "systems/runtime/scene_runtime/resolve_scene.h"
+#include "systems/runtime/scene_runtime/run_identity.h"
 
-namespace pyro::cli {
+namespace pyro {
 
 nlohmann::json pixel_settings(const SceneDescription& scene, const RuntimeOptions& o) {
   RuntimeOptions requested = o;
@@ -34,12 +33,13 @@ nlohmann::json pixel_settings(const SceneDescription& scene, const RuntimeOption
 }
 
 nlohmann::json render_identity_json(const SceneDescription& scene, const RuntimeOptions& options,
-                                    const std::string& scene_file, bool exr_depth) {
+                                    const std::string& scene_file, bool exr_depth,
+                                    const NoteSink& note) {
   DigestCache digests(cache_folder());
   nlohmann::json settings = pixel_settings(scene, options);
   if (exr_depth) settings["exr_depth"] = true;  // the same file names, other contents
-  const RunIdentity id = run_identity(scene, settings, PYRO_VERSION, digests, print_note);
+  const RunIdentity id = run_identity(scene, settings, PYRO_VERSION, digests, note);
   return {{"digest", id.digest}, {"parts", id.parts}, {"scene_file", scene_file}};
 }
 
-}  // namespace pyro::cli
+}  // namespace pyro

@@ -1,6 +1,6 @@
-#include "systems/scene_runtime/resolve_scene.h"
+#include "systems/runtime/scene_runtime/resolve_scene.h"
 
-#include "systems/scene/scene_budget.h"
+#include "systems/runtime/scene/scene_budget.h"
 
 #include <string>
 

@@ -5,9 +5,9 @@
 // Plain inputs and outputs: no GL, no files, no world.
 #include <cstdint>
 
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/resolved_scene.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/resolved_scene.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 

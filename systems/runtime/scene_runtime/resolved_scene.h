@@ -7,8 +7,8 @@
 #include "components/frame_clock.h"
 #include "components/render_settings.h"
 #include "components/stereo_camera.h"
-#include "systems/quality/quality_settings.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/quality/quality_settings.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 
@@ -24,7 +24,7 @@ struct ResolvedScene {
   // runtime's frame f * substeps.
   int substeps = 1;
   std::optional<QualitySettings> quality;
-  // What the budget check measures targets with (systems/scene/scene_budget.h).
+  // What the budget check measures targets with (systems/runtime/scene/scene_budget.h).
   int views = 1;               // 1 mono, 2 stereo
   int output_width = 0;        // the widest target: 2 x width side by side
   int driver_max_texture = 0;  // GL_MAX_TEXTURE_SIZE of the context the scene runs in

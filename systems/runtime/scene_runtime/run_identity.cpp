@@ -1,11 +1,11 @@
-#include "systems/scene_runtime/run_identity.h"
+#include "systems/runtime/scene_runtime/run_identity.h"
 
 #include <vector>
 
 #include "engine/core/build_id.h"
 #include "engine/core/content_path.h"
 #include "engine/core/sha256.h"
-#include "systems/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/scene_runtime/flipbook_bake.h"
 
 namespace pyro {
 

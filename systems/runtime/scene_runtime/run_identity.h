@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/content_digest.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 

@@ -12,7 +12,7 @@
 #include "components/render_settings.h"
 #include "components/shadow_settings.h"
 #include "engine/ecs/schedule.h"
-#include "systems/quality/quality_settings.h"
+#include "systems/runtime/quality/quality_settings.h"
 
 namespace pyro {
 
@@ -40,7 +40,7 @@ struct RuntimeOptions {
   std::optional<float> interocular;
   std::optional<float> zero_parallax_distance;
   std::optional<bool> swap_eyes;  // replaces the scene's eye order
-  // A quality pick (systems/quality_picker): its layer scale, footprint size and substeps are
+  // A quality pick (systems/runtime/quality_picker): its layer scale, footprint size and substeps are
   // applied to the scene before the options above.
   std::optional<QualitySettings> quality;
   // Finish the GPU's work after every system, so each system's timing includes the GPU work it

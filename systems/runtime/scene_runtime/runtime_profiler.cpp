@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/runtime_profiler.h"
+#include "systems/runtime/scene_runtime/runtime_profiler.h"
 
 #include <epoxy/gl.h>
 

@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/scene_asset_cache.h"
+#include "systems/runtime/scene_runtime/scene_asset_cache.h"
 
 #include <algorithm>
 #include <cstring>

@@ -20,9 +20,9 @@
 
 #include "components/flipbook_fire.h"
 #include "systems/flipbook_fire/flipbook_world.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/runtime_options.h"
-#include "systems/scene_runtime/scene_assets.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene_runtime/scene_assets.h"
 
 namespace pyro {
 

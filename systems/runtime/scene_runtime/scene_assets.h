@@ -29,7 +29,7 @@ struct VolumeAsset {
 struct SceneAssets {
   std::vector<VolumeAsset> volumes;  // one per scene.volumes entry, in order
   // One per scene.meshes entry, in order: the file's triangles for a "file" mesh, else null (the
-  // world builds the primitives, systems/scene_runtime/mesh_geometry.h).
+  // world builds the primitives, systems/runtime/scene_runtime/mesh_geometry.h).
   std::vector<std::shared_ptr<const SharedMesh>> meshes;
   // scene.fires with their folders resolved (the default flipbook's where they named none),
   // and the prepared frames they use.

@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 #include <epoxy/gl.h>
 
@@ -8,10 +8,10 @@
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
 #include "systems/output/linear_readback.h"
-#include "systems/scene_runtime/build_world.h"
-#include "systems/scene_runtime/load_scene_assets.h"
-#include "systems/scene_runtime/resolve_scene.h"
-#include "systems/scene_runtime/standard_schedule.h"
+#include "systems/runtime/scene_runtime/build_world.h"
+#include "systems/runtime/scene_runtime/load_scene_assets.h"
+#include "systems/runtime/scene_runtime/resolve_scene.h"
+#include "systems/runtime/scene_runtime/standard_schedule.h"
 
 namespace pyro {
 

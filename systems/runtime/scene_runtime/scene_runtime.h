@@ -22,12 +22,12 @@
 #include "engine/gpu/gl_context.h"
 #include "engine/gpu/render_target.h"
 #include "systems/output/frame_source.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/frame_sequencer.h"
-#include "systems/scene_runtime/resolved_scene.h"
-#include "systems/scene_runtime/runtime_options.h"
-#include "systems/scene_runtime/runtime_profiler.h"
-#include "systems/scene_runtime/scene_assets.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/frame_sequencer.h"
+#include "systems/runtime/scene_runtime/resolved_scene.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene_runtime/runtime_profiler.h"
+#include "systems/runtime/scene_runtime/scene_assets.h"
 
 namespace pyro {
 

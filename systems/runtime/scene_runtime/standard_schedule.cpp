@@ -1,4 +1,4 @@
-#include "systems/scene_runtime/standard_schedule.h"
+#include "systems/runtime/scene_runtime/standard_schedule.h"
 
 #include <epoxy/gl.h>
 

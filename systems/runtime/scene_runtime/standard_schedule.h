@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "engine/ecs/schedule.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 

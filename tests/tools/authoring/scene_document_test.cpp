@@ -1,6 +1,6 @@
 // The scene document: one value changed per set with every other byte kept, the loader's checks
 // on every change, undo and redo byte for byte, coalesced slider drags, durable saves.
-#include "systems/authoring/scene_document.h"
+#include "tools/authoring/scene_document.h"
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -17,7 +17,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/durable_file.h"
 #include "engine/io/json_text_edit.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "tests/support/file_bytes.h"
 #include "tests/support/test_paths.h"
 

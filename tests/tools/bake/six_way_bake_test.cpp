@@ -5,7 +5,7 @@
 // (the lit splat's closed form at its closest point: half its column towards any light,
 // docs/lighting.md) under alpha rho (the lit splat's opacity 1 - exp(-tau0)). The textures are
 // read back from the folder the bake wrote, with its sidecar.
-#include "systems/six_way_lighting/six_way_bake.h"
+#include "tools/bake/six_way_bake.h"
 
 #include <gtest/gtest.h>
 
@@ -17,8 +17,8 @@
 #include "engine/core/user_error.h"
 #include "engine/io/png_file.h"
 #include "systems/flipbook_fire/flipbook_folder.h"
-#include "systems/scene_runtime/scene_runtime.h"
-#include "systems/six_way_lighting/six_way_folder.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
+#include "tools/bake/six_way_folder.h"
 #include "tests/support/one_particle_scene.h"
 #include "tests/support/test_paths.h"
 

@@ -2,13 +2,13 @@
 // Unity VFX Graph (A = right, top, back, alpha; B = left, bottom, front, emissive), the straight
 // (un-premultiplied) faces, the blend's closed form for axis and diagonal lights, and where each
 // face's light is for a camera.
-#include "systems/six_way_lighting/six_way_frame.h"
+#include "tools/bake/six_way_frame.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "systems/six_way_lighting/six_way_passes.h"
+#include "tools/bake/six_way_passes.h"
 
 namespace pyro {
 namespace {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "engine/core/content_path.h"
-#include "systems/benchmarks/bench_explosion_shadows.h"
+#include "tools/bench/bench_explosion_shadows.h"
 
 namespace pyro {
 namespace {

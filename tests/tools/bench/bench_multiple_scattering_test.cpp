@@ -8,7 +8,7 @@
 
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
-#include "systems/benchmarks/bench_multiple_scattering.h"
+#include "tools/bench/bench_multiple_scattering.h"
 
 namespace pyro {
 namespace {

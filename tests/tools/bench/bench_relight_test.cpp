@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "engine/core/content_path.h"
-#include "systems/benchmarks/bench_relight.h"
+#include "tools/bench/bench_relight.h"
 
 namespace pyro {
 namespace {

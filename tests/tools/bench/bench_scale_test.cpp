@@ -1,14 +1,14 @@
 // pyro bench scale: the clouds scaled to each count keep N r^3 (their mean optical depth), each
 // count's report carries the figures and ratios it names, a scene without clouds is refused, and
 // the log-log slope is the exponent of a power law.
-#include "systems/benchmarks/bench_scale.h"
+#include "tools/bench/bench_scale.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "engine/core/user_error.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

@@ -1,5 +1,5 @@
 // pyro bench sort's result: the three sorts agree on the order, and each was timed.
-#include "systems/benchmarks/bench_sort.h"
+#include "tools/bench/bench_sort.h"
 
 #include <gtest/gtest.h>
 

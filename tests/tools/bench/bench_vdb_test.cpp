@@ -3,7 +3,7 @@
 // separate program) agree closely once both see the same scene (no ambient light, black
 // behind), closer still as vdb_render's steps shrink, and the splats are scored against it. Skipped, saying why, where
 // vdb_render is not installed (Debian's libopenvdb-tools; tools/install-deps.sh installs it).
-#include "systems/benchmarks/bench_vdb.h"
+#include "tools/bench/bench_vdb.h"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
 // The import's hard cases: the grids are what they say (voxel counts by closed form), and each
 // import either meets its target on every view or says why not, with the error it reached above
 // the target. Never a silent miss.
-#include "systems/benchmarks/import_cases.h"
+#include "tools/bench/import_cases.h"
 
 #include <gtest/gtest.h>
 
 #include <map>
 
-#include "systems/benchmarks/fitted_import.h"
+#include "tools/bench/fitted_import.h"
 
 namespace pyro {
 namespace {

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "components/particle_set.h"
-#include "systems/profiling/profile_report.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/particle_counts.h"
+#include "tools/bench/profile_report.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/particle_counts.h"
 #include "tests/support/small_runtime.h"
 #include "tests/support/test_paths.h"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "systems/charts/charts.h"
+#include "tools/charts/charts.h"
 
 namespace pyro {
 namespace {

@@ -4,7 +4,7 @@
 // different methods meet it).
 #include <gtest/gtest.h>
 
-#include "systems/charts/charts.h"
+#include "tools/charts/charts.h"
 
 namespace pyro {
 namespace {

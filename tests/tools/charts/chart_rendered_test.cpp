@@ -6,7 +6,7 @@
 #include <map>
 
 #include "engine/core/content_path.h"
-#include "systems/charts/charts.h"
+#include "tools/charts/charts.h"
 
 namespace pyro {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "systems/charts/charts.h"
+#include "tools/charts/charts.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

@@ -1,4 +1,4 @@
-// The Pareto front of a chart (systems/charts/chart_table.h) and its CSV.
+// The Pareto front of a chart (tools/charts/chart_table.h) and its CSV.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "engine/core/rng.h"
-#include "systems/charts/chart_table.h"
+#include "tools/charts/chart_table.h"
 
 namespace pyro {
 namespace {

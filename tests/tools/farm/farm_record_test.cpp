@@ -1,5 +1,5 @@
 // The farm record read back as written, and a damaged one refused with the place named.
-#include "systems/farm/farm_record.h"
+#include "tools/farm/farm_record.h"
 
 #include <gtest/gtest.h>
 

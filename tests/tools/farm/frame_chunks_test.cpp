@@ -1,11 +1,11 @@
 // A farm's frames cut into array tasks, and the missing frames named as ranges.
-#include "systems/farm/frame_chunks.h"
+#include "tools/farm/frame_chunks.h"
 
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
-#include "systems/farm/farm_collect.h"
+#include "tools/farm/farm_collect.h"
 
 namespace pyro {
 namespace {

@@ -1,6 +1,6 @@
 // The farm's batch scripts run by bash: each array task's pyro gets exactly the words it should,
 // whatever the paths hold (spaces, quotes, $, ;), and the sbatch lines keep Slurm's patterns.
-#include "systems/farm/slurm_script.h"
+#include "tools/farm/slurm_script.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -1,5 +1,5 @@
 // The profiler panel's series: samples kept for the last window of seconds, in time order.
-#include "systems/viewer/frame_time_history.h"
+#include "tools/viewer/frame_time_history.h"
 
 #include <gtest/gtest.h>
 

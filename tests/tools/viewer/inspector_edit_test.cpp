@@ -1,7 +1,7 @@
 // The inspector's edits: a key whose object the file does not write yet is set by writing the
 // nearest missing object around it.
 #include "engine/io/json_text_edit.h"
-#include "systems/viewer/inspector_edit.h"
+#include "tools/viewer/inspector_edit.h"
 
 #include <gtest/gtest.h>
 

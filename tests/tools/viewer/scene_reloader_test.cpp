@@ -1,5 +1,5 @@
 // pyro view's hot reload state machine and the file stamps it compares.
-#include "systems/viewer/scene_reloader.h"
+#include "tools/viewer/scene_reloader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // pyro view's keys and what they change, without a window.
-#include "systems/viewer/viewer_keys.h"
+#include "tools/viewer/viewer_keys.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include "systems/viewer/viewer_settings.h"
+#include "tools/viewer/viewer_settings.h"
 
 namespace pyro {
 namespace {

@@ -1,11 +1,11 @@
 // pyro view's overlay text: wrapping and what the lines say.
-#include "systems/viewer/viewer_overlay.h"
+#include "tools/viewer/viewer_overlay.h"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-#include "systems/viewer/viewer_keys.h"
+#include "tools/viewer/viewer_keys.h"
 
 namespace pyro {
 namespace {

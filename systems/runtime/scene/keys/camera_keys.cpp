@@ -1,7 +1,7 @@
 // "camera": the viewpoint and its stereo pair.
 #include "components/stereo_camera.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

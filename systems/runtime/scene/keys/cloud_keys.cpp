@@ -2,8 +2,8 @@
 #include <cstdint>
 #include <limits>
 
-#include "systems/scene/scene_description.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

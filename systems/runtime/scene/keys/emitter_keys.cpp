@@ -5,8 +5,8 @@
 #include "components/emitter.h"
 #include "components/particle_dynamics.h"
 #include "components/render_modes.h"
-#include "systems/scene/keys/value_shapes.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/keys/value_shapes.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 
@@ -46,7 +46,7 @@ const ParameterTable& dynamics_keys() {
   static const ParticleDynamics d{};
   static const ParameterTable table{
       "emitters[].dynamics", "How the particles move, cool and collide.",
-      // gravity_scale, buoyancy and drag: defaults by medium (systems/scene/emitter_defaults.h).
+      // gravity_scale, buoyancy and drag: defaults by medium (systems/runtime/scene/emitter_defaults.h).
       {number_key("gravity_scale", kAnyRange, "Times the environment's gravity; default by medium."),
        number_key("buoyancy", kAnyRange, "Boussinesq buoyancy per kelvin above ambient; default by medium."),
        number_key("drag", kNonNegative, "1/s towards the wind; default by medium."),

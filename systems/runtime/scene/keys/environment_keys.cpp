@@ -1,7 +1,7 @@
 // "environment": what every emitter shares (gravity, wind, colliders, budget, prewarm).
 #include "components/simulation_environment.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

@@ -1,7 +1,7 @@
 // "fires[]": flipbook fires (Rose 2007, chapter 4).
 #include "components/flipbook_fire.h"
-#include "systems/scene/keys/value_shapes.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/keys/value_shapes.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

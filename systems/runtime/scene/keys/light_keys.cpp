@@ -1,7 +1,7 @@
 // "light" (one directional and one ambient light) and "lights" (any number of each, with keys).
 #include "components/ambient_light.h"
 #include "components/directional_light.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

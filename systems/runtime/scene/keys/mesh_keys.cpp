@@ -1,7 +1,7 @@
 // "meshes[]": opaque scenery.
 #include "components/mesh_instance.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

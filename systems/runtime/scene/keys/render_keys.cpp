@@ -1,7 +1,7 @@
 // "render": how the particles are drawn and composited.
 #include "components/render_modes.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

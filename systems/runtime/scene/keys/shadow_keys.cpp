@@ -1,7 +1,7 @@
 // "shadows": lit media, and how the splats scatter the sun.
 #include "components/fire_lights.h"
 #include "components/shadow_settings.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

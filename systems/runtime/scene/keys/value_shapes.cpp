@@ -1,4 +1,4 @@
-#include "systems/scene/keys/value_shapes.h"
+#include "systems/runtime/scene/keys/value_shapes.h"
 
 #include "engine/io/parameter_schema.h"
 

@@ -1,9 +1,9 @@
 // "volumes[]": volumes read from files (OpenVDB grids, particle files, particle sequences).
 #include <string_view>
 
-#include "systems/scene/keys/value_shapes.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/keys/value_shapes.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 

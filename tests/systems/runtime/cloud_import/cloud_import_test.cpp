@@ -6,7 +6,7 @@
 #include <cstring>
 #include <numbers>
 
-#include "systems/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
 
 namespace pyro {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // The importer as it was before it read sparse grids: a light sweep over the whole box and a mip
 // pyramid dense over the whole box, then the same octree walk. Kept here, verbatim, as the
-// specification the sparse importer (systems/cloud_import/cloud_import.h) must reproduce bit for
+// specification the sparse importer (systems/runtime/cloud_import/cloud_import.h) must reproduce bit for
 // bit, particles and order, on every grid.
 #include <algorithm>
 #include <barrier>
@@ -14,9 +14,9 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/reference/parallel_rows.h"
-#include "systems/reference/volume_reference.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/reference/parallel_rows.h"
+#include "systems/runtime/reference/volume_reference.h"
 
 namespace pyro::oracle {
 

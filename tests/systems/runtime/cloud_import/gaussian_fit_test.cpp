@@ -13,8 +13,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/matrix.hpp>
 
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/gaussian_fit.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/gaussian_fit.h"
 
 namespace pyro {
 namespace {

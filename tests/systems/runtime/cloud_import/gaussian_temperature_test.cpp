@@ -1,5 +1,5 @@
 // Each particle's temperature: the temperature grid's mean over the particle, weighted by the
-// particle's profile times the grid's density (systems/cloud_import/gaussian_temperature.h),
+// particle's profile times the grid's density (systems/runtime/cloud_import/gaussian_temperature.h),
 // against closed forms: a uniform temperature is kept, a temperature linear in space gives its
 // value at the centre of a particle whose weight is symmetric about it, a hot voxel with no
 // density beside the particle does not heat it, and the result is the same on any thread count.
@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "systems/cloud_import/gaussian_temperature.h"
+#include "systems/runtime/cloud_import/gaussian_temperature.h"
 
 namespace pyro {
 namespace {

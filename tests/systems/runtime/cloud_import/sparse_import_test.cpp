@@ -11,9 +11,9 @@
 
 #include "engine/io/vdb_reader.h"
 #include "engine/volume/procedural_cloud.h"
-#include "systems/cloud_import/cloud_import.h"
-#include "systems/cloud_import/grid_framing.h"
-#include "tests/systems/cloud_import/dense_import_oracle.h"
+#include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
+#include "tests/systems/runtime/cloud_import/dense_import_oracle.h"
 
 namespace pyro {
 namespace {

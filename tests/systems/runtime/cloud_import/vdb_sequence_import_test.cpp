@@ -1,4 +1,4 @@
-// Animated VDB sequences imported frame by frame (systems/cloud_import/vdb_sequence_import.h):
+// Animated VDB sequences imported frame by frame (systems/runtime/cloud_import/vdb_sequence_import.h):
 // the puff generator's frames differ as the puff moves, every frame is an ordinary particle
 // file of the one medium, an empty frame imports as 0 particles, and a damaged member is refused
 // by name before any frame is imported.
@@ -10,7 +10,7 @@
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/volume/puff_sequence.h"
-#include "systems/cloud_import/vdb_sequence_import.h"
+#include "systems/runtime/cloud_import/vdb_sequence_import.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

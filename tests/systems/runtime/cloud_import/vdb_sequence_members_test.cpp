@@ -1,4 +1,4 @@
-// The members of an animated VDB sequence (systems/cloud_import/vdb_sequence_members.h): found
+// The members of an animated VDB sequence (systems/runtime/cloud_import/vdb_sequence_members.h): found
 // from a printf pattern, a glob or a folder, in natural frame order, with gaps, duplicates and
 // empty matches refused naming the file.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "engine/core/user_error.h"
-#include "systems/cloud_import/vdb_sequence_members.h"
+#include "systems/runtime/cloud_import/vdb_sequence_members.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

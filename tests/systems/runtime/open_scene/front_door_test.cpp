@@ -1,8 +1,8 @@
 // No command, viewer, benchmark or chart builds a SceneRuntime of its own: they open scenes through
-// the front door (systems/open_scene/open_scene.h), so that a scene's quality pick applies to every
+// the front door (systems/runtime/open_scene/open_scene.h), so that a scene's quality pick applies to every
 // one of them. A construction kept on purpose (a benchmark measuring the settings it sets itself)
 // says why with "behind the front door" on its line or the line above. The machinery behind the
-// door (systems/scene_runtime, systems/quality_picker) and the tests are not scanned.
+// door (systems/runtime/scene_runtime, systems/runtime/quality_picker) and the tests are not scanned.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -20,8 +20,8 @@ namespace fs = std::filesystem;
 constexpr const char* kReason = "behind the front door";
 
 // Where code opens scenes for a user: every source file under these folders of the tree.
-const std::vector<std::string> kScannedFolders = {"tools/pyro", "systems/viewer",
-                                                  "systems/benchmarks", "systems/charts"};
+const std::vector<std::string> kScannedFolders = {"tools/pyro", "tools/viewer",
+                                                  "tools/bench", "tools/charts"};
 
 std::string without_comment(const std::string& line) {
   const size_t at = line.find("//");
@@ -104,7 +104,7 @@ TEST(FrontDoor, NoCommandOutsideTheFrontDoorConstructsTheRuntime) {
   for (const std::string& f : found) listing += "\n  " + f;
   EXPECT_TRUE(found.empty())
       << "constructs a SceneRuntime instead of opening the scene with open_scene "
-         "(systems/open_scene/open_scene.h), or says why beside it with \""
+         "(systems/runtime/open_scene/open_scene.h), or says why beside it with \""
       << kReason << "\":" << listing;
 }
 

@@ -1,8 +1,8 @@
-// open_scene (systems/open_scene/open_scene.h) on a small Gaussian scene, with nothing measured:
+// open_scene (systems/runtime/open_scene/open_scene.h) on a small Gaussian scene, with nothing measured:
 // a pick handed in is the one the runtime runs with (layer scale, footprint table, substeps),
 // offered to on_pick before the runtime exists and noted once; a scene without a target opens
 // as written, whatever pick is handed in; a description handed in is not loaded again.
-#include "systems/open_scene/open_scene.h"
+#include "systems/runtime/open_scene/open_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "tests/support/small_runtime.h"
 #include "tests/support/test_paths.h"
 

@@ -12,14 +12,14 @@
 #include "components/gpu_frame.h"
 #include "components/particle_set.h"
 #include "components/view.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/quality_picker/quality_measurement.h"
-#include "systems/quality_picker/quality_picker.h"
-#include "systems/reference/particle_reference.h"
-#include "systems/reference/pixel_ray.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/quality_picker/quality_measurement.h"
+#include "systems/runtime/quality_picker/quality_picker.h"
+#include "systems/runtime/reference/particle_reference.h"
+#include "systems/runtime/reference/pixel_ray.h"
 #include "tests/support/test_paths.h"
-#include "systems/scene_runtime/scene_runtime.h"
-#include "systems/reference/world_snapshot.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
+#include "systems/runtime/reference/world_snapshot.h"
 
 namespace pyro {
 namespace {

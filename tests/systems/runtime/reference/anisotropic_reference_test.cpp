@@ -1,4 +1,4 @@
-// The anisotropic CPU reference (systems/reference/anisotropic_reference.h): one particle's image
+// The anisotropic CPU reference (systems/runtime/reference/anisotropic_reference.h): one particle's image
 // is 1 - exp(-tau) of its closed-form optical depth at every pixel (so the per-particle pixel
 // spans cut nothing), the centre pixel matches the hand-derived depth through the centre, and the
 // image does not depend on the thread count.
@@ -12,8 +12,8 @@
 
 #include "engine/core/rng.h"
 #include "engine/math/anisotropic_optical_depth.h"
-#include "systems/reference/anisotropic_reference.h"
-#include "systems/reference/pixel_ray.h"
+#include "systems/runtime/reference/anisotropic_reference.h"
+#include "systems/runtime/reference/pixel_ray.h"
 #include "tests/support/random_anisotropic.h"
 
 namespace pyro {

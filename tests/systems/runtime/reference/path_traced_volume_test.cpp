@@ -1,4 +1,4 @@
-// The path tracer (systems/reference/path_traced_volume.h) against an invariant (the white
+// The path tracer (systems/runtime/reference/path_traced_volume.h) against an invariant (the white
 // furnace), the independent single-scattering ray march, and the ordering of the orders.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "engine/volume/sparse_grid.h"
-#include "systems/reference/path_traced_volume.h"
-#include "systems/reference/volume_reference.h"
+#include "systems/runtime/reference/path_traced_volume.h"
+#include "systems/runtime/reference/volume_reference.h"
 
 namespace pyro {
 namespace {

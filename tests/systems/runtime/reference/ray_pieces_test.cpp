@@ -1,4 +1,4 @@
-// The ray's piece-by-piece mixing (systems/reference/ray_pieces.h): one uniform element is
+// The ray's piece-by-piece mixing (systems/runtime/reference/ray_pieces.h): one uniform element is
 // Beer-Lambert exactly; for many overlapping elements the sweep gives bit for bit what visiting
 // every element for every piece gives (the same elements, summed in the same order).
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "engine/core/rng.h"
-#include "systems/reference/ray_pieces.h"
+#include "systems/runtime/reference/ray_pieces.h"
 
 namespace pyro {
 namespace {

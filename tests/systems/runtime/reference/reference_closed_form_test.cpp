@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "engine/io/vdb_reader.h"
-#include "systems/cloud_import/light_sweep.h"
-#include "systems/reference/particle_reference.h"
-#include "systems/reference/volume_reference.h"
+#include "systems/runtime/cloud_import/light_sweep.h"
+#include "systems/runtime/reference/particle_reference.h"
+#include "systems/runtime/reference/volume_reference.h"
 
 namespace pyro {
 namespace {

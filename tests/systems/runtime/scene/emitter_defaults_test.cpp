@@ -1,4 +1,4 @@
-// Emitters' medium-dependent defaults (systems/scene/emitter_defaults.h): a smoke emitter written
+// Emitters' medium-dependent defaults (systems/runtime/scene/emitter_defaults.h): a smoke emitter written
 // with no dynamics keys rises (its particles' mean height grows over the first seconds), an
 // explicitly heavy one still sinks, and dust keeps full gravity.
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include "engine/ecs/world.h"
 #include "systems/animation/particle_animation_system.h"
 #include "systems/emitter/emitter_system.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 
 namespace pyro {
 namespace {

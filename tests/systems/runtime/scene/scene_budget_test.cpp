@@ -7,8 +7,8 @@
 #include <string>
 
 #include "engine/core/user_error.h"
-#include "systems/scene/scene_budget.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_budget.h"
+#include "systems/runtime/scene/scene_loader.h"
 
 namespace pyro {
 namespace {

@@ -5,8 +5,8 @@
 #include "components/emitter.h"
 #include "components/particle_set.h"
 #include "engine/core/user_error.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

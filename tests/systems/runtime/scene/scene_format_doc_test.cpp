@@ -1,4 +1,4 @@
-// docs/scene_format.md against the key tables (systems/scene/scene_keys.h): every key of every
+// docs/scene_format.md against the key tables (systems/runtime/scene/scene_keys.h): every key of every
 // table is documented, every key the document's tables name is in a table, and where a row names
 // one key, its default and range are the table's.
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@
 #include "engine/io/parameter_range.h"
 #include "engine/io/parameter_table.h"
 #include "engine/io/parameter_text.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_keys.h"
 
 namespace pyro {
 namespace {

@@ -1,4 +1,4 @@
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 

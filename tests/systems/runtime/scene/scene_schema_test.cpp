@@ -25,8 +25,8 @@
 
 #include "engine/core/user_error.h"
 #include "engine/io/parameter_dictionary.h"
-#include "systems/scene/scene_keys.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "tests/support/file_bytes.h"
 #include "tests/support/schema_validator.h"
 #include "tests/support/test_paths.h"

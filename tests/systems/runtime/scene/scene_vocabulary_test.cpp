@@ -13,7 +13,7 @@
 #include "components/render_settings.h"
 #include "components/stereo_camera.h"
 #include "engine/core/user_error.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

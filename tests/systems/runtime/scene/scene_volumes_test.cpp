@@ -8,7 +8,7 @@
 #include <string>
 
 #include "engine/core/user_error.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

@@ -15,9 +15,9 @@
 #include "engine/core/rng.h"
 #include "engine/io/particle_file.h"
 #include "engine/math/camera_math.h"
-#include "systems/reference/anisotropic_reference.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/reference/anisotropic_reference.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/random_anisotropic.h"
 #include "tests/support/test_paths.h"
 

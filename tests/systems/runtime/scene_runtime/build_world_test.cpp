@@ -17,8 +17,8 @@
 #include "components/render_settings.h"
 #include "components/stereo_camera.h"
 #include "components/volume_source.h"
-#include "systems/scene_runtime/build_world.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/build_world.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

@@ -8,10 +8,10 @@
 
 #include "components/particle_set.h"
 #include "engine/core/rng.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "engine/math/camera_math.h"
-#include "systems/reference/particle_reference.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/reference/particle_reference.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/small_runtime.h"
 #include "tests/support/test_paths.h"
 

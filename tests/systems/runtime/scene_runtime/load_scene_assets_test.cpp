@@ -13,10 +13,10 @@
 #include "engine/io/particle_file.h"
 #include "engine/io/png_file.h"
 #include "systems/flipbook_fire/flipbook_folder.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/flipbook_bake.h"
-#include "systems/scene_runtime/load_scene_assets.h"
-#include "systems/scene_runtime/resolve_scene.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/scene_runtime/load_scene_assets.h"
+#include "systems/runtime/scene_runtime/resolve_scene.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

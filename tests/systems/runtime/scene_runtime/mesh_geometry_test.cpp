@@ -14,10 +14,10 @@
 
 #include "engine/core/user_error.h"
 #include "engine/mesh/mesh_file_check.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/load_scene_assets.h"
-#include "systems/scene_runtime/mesh_geometry.h"
-#include "systems/scene_runtime/resolve_scene.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/load_scene_assets.h"
+#include "systems/runtime/scene_runtime/mesh_geometry.h"
+#include "systems/runtime/scene_runtime/resolve_scene.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

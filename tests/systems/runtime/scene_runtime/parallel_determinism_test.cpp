@@ -18,8 +18,8 @@
 #include "components/view.h"
 #include "engine/ecs/world.h"
 #include "systems/animation/particle_animation_system.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "systems/sorting/depth_sort.h"
 #include "tests/support/test_paths.h"
 

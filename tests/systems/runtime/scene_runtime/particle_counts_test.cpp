@@ -6,7 +6,7 @@
 #include "components/emitter.h"
 #include "components/particle_medium.h"
 #include "components/particle_set.h"
-#include "systems/scene_runtime/particle_counts.h"
+#include "systems/runtime/scene_runtime/particle_counts.h"
 
 namespace pyro {
 namespace {

@@ -1,7 +1,7 @@
 // Assets kept across rebuilds: an edit that touches no volume or flipbook reads neither again
 // (the cache's counters), the world built from kept assets draws the same image as one built from
 // files, and an edit of what a volume's import reads imports it again.
-#include "systems/scene_runtime/scene_asset_cache.h"
+#include "systems/runtime/scene_runtime/scene_asset_cache.h"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 #include "components/frame_image.h"
 #include "components/volume_source.h"
 #include "engine/io/png_file.h"
-#include "systems/open_scene/open_scene.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/open_scene/open_scene.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "tests/support/density_ball.h"
 #include "tests/support/test_paths.h"
 

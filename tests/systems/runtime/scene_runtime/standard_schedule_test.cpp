@@ -8,8 +8,8 @@
 #include <string>
 
 #include "components/camera.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/small_runtime.h"
 #include "tests/support/test_paths.h"
 

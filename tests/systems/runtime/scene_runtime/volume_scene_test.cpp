@@ -12,9 +12,9 @@
 #include "components/particle_set.h"
 #include "components/volume_source.h"
 #include "engine/io/particle_file.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/cloud_import/scene_volume.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/cloud_import/scene_volume.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/density_ball.h"
 #include "tests/support/test_paths.h"
 
