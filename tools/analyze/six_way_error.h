@@ -2,10 +2,10 @@
 // pyro analyze six-way: how well six-way lightmaps relight a smoke frame under lights between
 // their axes. One simulation state of a lit scene (frame `frame`, drawn mono at the given size)
 // is baked both ways, by the engine's GL passes (six_way_bake.h, rounded to the textures' 8 bits)
-// and by the CPU reference (systems/runtime/reference/lit_particle_reference.h: single scattering with
-// the sun's transmittance exact at every point, over black); each is relit by the six-way blend
-// (six_way_frame.h) for the 8 diagonal lights (+-1, +-1, +-1)/sqrt(3) of the camera's frame and
-// compared (RMSE, linear RGB clamped to [0, 1]) with the reference lit from that direction. The
+// and by the CPU reference (systems/runtime/reference/lit_particle_reference.h: single scattering
+// with the sun's transmittance exact at every point, over black); each is relit by the six-way
+// blend (six_way_frame.h) for the 8 diagonal lights (+-1, +-1, +-1)/sqrt(3) of the camera's frame
+// and compared (RMSE, linear RGB clamped to [0, 1]) with the reference lit from that direction. The
 // engine's own render lit from the direction is scored too: what the engine gets without the
 // lightmaps; and the engine's relit bake against it, the blend's own error inside the engine.
 #include <glm/vec3.hpp>
