@@ -10,6 +10,13 @@ foreach(layer engine components systems)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${layer} DESTINATION ${PYRO_INSTALL_INCLUDEDIR}
           FILES_MATCHING PATTERN "*.h")
 endforeach()
+# The applications' modules (tools/viewer, tools/bench, ...; not the command line, tools/pyro):
+# their headers at "tools/<name>/...".
+get_property(PYRO_TOOL_MODULE_FOLDERS GLOBAL PROPERTY PYRO_TOOL_MODULE_FOLDERS)
+foreach(folder IN LISTS PYRO_TOOL_MODULE_FOLDERS)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/ DESTINATION ${PYRO_INSTALL_INCLUDEDIR}/${folder}
+          FILES_MATCHING PATTERN "*.h")
+endforeach()
 # Shaders, data tables, scenes and sample volumes.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/content/ DESTINATION ${PYRO_INSTALL_DATADIR})
 # Baked by the default_flipbook target (built with `all`).

@@ -19,7 +19,8 @@
 #
 #   pyro_finalize_modules(<json>)
 #     Creates the targets, writes the module table <json> that tools/check_includes.py reads,
-#     and stops the configuration when a .cpp under engine/ or systems/ belongs to no module.
+#     and stops the configuration when a .cpp under engine/, systems/ or a tools/ folder that
+#     holds a module belongs to no module (tools/pyro, the command line, is no module).
 
 function(pyro_third_party name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "FIND" "TARGETS;INCLUDE_DIRS;HEADERS")
@@ -187,12 +188,23 @@ endfunction()
 function(_pyro_check_coverage)
   get_property(modules GLOBAL PROPERTY PYRO_MODULES)
   set(owned "")
+  set(tool_folders "")
   foreach(name IN LISTS modules)
     _pyro_module_files(${name} files)
     list(APPEND owned ${files})
+    get_property(folder GLOBAL PROPERTY PYRO_MODULE_${name}_FOLDER)
+    if(folder MATCHES "^tools/")
+      list(APPEND tool_folders ${folder})
+    endif()
   endforeach()
-  file(GLOB_RECURSE all CONFIGURE_DEPENDS RELATIVE "${PROJECT_SOURCE_DIR}"
-       "${PROJECT_SOURCE_DIR}/engine/*.cpp" "${PROJECT_SOURCE_DIR}/systems/*.cpp")
+  list(REMOVE_DUPLICATES tool_folders)
+  set_property(GLOBAL PROPERTY PYRO_TOOL_MODULE_FOLDERS ${tool_folders})
+  # The application folders of tools/ that hold a module are covered like engine/ and systems/.
+  set(globs "${PROJECT_SOURCE_DIR}/engine/*.cpp" "${PROJECT_SOURCE_DIR}/systems/*.cpp")
+  foreach(folder IN LISTS tool_folders)
+    list(APPEND globs "${PROJECT_SOURCE_DIR}/${folder}/*.cpp")
+  endforeach()
+  file(GLOB_RECURSE all CONFIGURE_DEPENDS RELATIVE "${PROJECT_SOURCE_DIR}" ${globs})
   set(orphans "")
   foreach(f IN LISTS all)
     if(NOT f IN_LIST owned)

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Fails when a C++ function under engine/ or systems/ is longer than the limit (80 lines).
+"""Fails when a C++ function under engine/, systems/ or an application folder of tools/ is longer
+than the limit (80 lines).
 
 A function's length is counted from the first line of its declaration (template line included)
 to its closing brace. Comments, string literals (raw ones too) and preprocessor lines are blanked
@@ -8,7 +9,8 @@ function they are written in.
 
   tools/check_function_length.py [--root DIR] [--limit N] [--allow FILE] [PATH ...]
 
-PATHs (files or folders, relative to --root) default to engine and systems. The allow-list names
+PATHs (files or folders, relative to --root) default to engine, systems and the application
+folders of tools/ (every folder there but the command line, tools/pyro, and the scripts'). The allow-list names
 offenders that are known and still to be split, one `path: function` a line (# starts a comment);
 an allowed function that is no longer too long is reported too, so the list only shrinks.
 Exit status: 0 when nothing is over the limit outside the allow-list, 1 otherwise, 2 on bad usage.
@@ -203,13 +205,23 @@ def source_files(root, paths):
             raise FileNotFoundError(f"{full}: no such file or folder")
 
 
+def application_folders(root):
+    """tools/<name> for every folder of tools/ but the command line (tools/pyro)."""
+    tools = pathlib.Path(root) / "tools"
+    if not tools.is_dir():
+        return []
+    return [f"tools/{d.name}" for d in sorted(tools.iterdir()) if d.is_dir() and d.name != "pyro"]
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("paths", nargs="*", default=["engine", "systems"])
+    parser.add_argument("paths", nargs="*")
     parser.add_argument("--root", default=pathlib.Path(__file__).resolve().parent.parent, type=pathlib.Path)
     parser.add_argument("--limit", type=int, default=80)
     parser.add_argument("--allow", help="allow-list file: `path: function` a line")
     args = parser.parse_args(argv)
+    if not args.paths:
+        args.paths = ["engine", "systems"] + application_folders(args.root)
     try:
         allowed = read_allow_list(args.allow)
         files = list(source_files(args.root, args.paths))

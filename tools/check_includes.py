@@ -4,10 +4,14 @@
 The module declarations in CMakeLists.txt (cmake/PyroModules.cmake) are the one source of truth:
 configuring writes them to <build>/pyro_modules.json, which this script reads. The rules:
 
-  * every header and source under engine/, components/ and systems/ belongs to a module;
+  * every header and source under engine/, components/ and systems/ belongs to a module; under
+    tools/, the folders that modules declare (tools/bench, tools/viewer, ...) are checked, while
+    the command line (tools/pyro, not a module) and the scripts are not;
   * engine/ includes nothing from components/, systems/, tools/ or tests/;
   * components/ includes only engine/ and components/;
-  * systems/ includes only engine/, components/ and systems/;
+  * systems/ (the frame: what opening a run or drawing a frame executes) includes only engine/,
+    components/ and systems/, never tools/ (the applications);
+  * a tools/ module includes only engine/, components/, systems/ and tools/;
   * a module includes only its own files and the modules and third-party libraries it declares
     (PUBLIC or PRIVATE); a header includes only PUBLIC ones; a PUBLIC dependency is one that some
     header of the module includes (otherwise it must be PRIVATE); no declared dependency is unused;
@@ -24,13 +28,17 @@ import os
 import re
 import sys
 
-LAYERS = ("engine", "components", "systems")
+LAYERS = ("engine", "components", "systems", "tools")
 # Which top-level folders a file of each layer may include from (quoted project includes).
 ALLOWED_LAYERS = {
     "engine": {"engine"},
     "components": {"engine", "components"},
     "systems": {"engine", "components", "systems"},
+    "tools": {"engine", "components", "systems", "tools"},
 }
+# Layers checked file by file only in the folders that modules declare (the rest of tools/ is
+# the command line and scripts, which belong to no module).
+MODULE_FOLDER_LAYERS = ("tools",)
 INCLUDE_RE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')
 SOURCE_SUFFIXES = (".h", ".hpp", ".cpp", ".cc", ".inl")
 
@@ -72,13 +80,28 @@ class Modules:
         return set(m.get("public", [])), set(m.get("private", []))
 
 
-def layer_files(root):
+def layer_roots(root, modules):
+    """The folders walked for each layer: the whole layer, or its module folders."""
     for layer in LAYERS:
-        for folder, dirs, files in os.walk(os.path.join(root, layer)):
+        if layer not in MODULE_FOLDER_LAYERS:
+            yield os.path.join(root, layer)
+            continue
+        folders = {m["folder"] for m in modules.modules.values()
+                   if m["folder"].split("/", 1)[0] == layer}
+        for folder in sorted(folders):
+            yield os.path.join(root, folder)
+
+
+def layer_files(root, modules):
+    seen = set()
+    for top in layer_roots(root, modules):
+        for folder, dirs, files in os.walk(top):
             dirs.sort()
             for f in sorted(files):
-                if f.endswith(SOURCE_SUFFIXES):
-                    yield os.path.relpath(os.path.join(folder, f), root).replace(os.sep, "/")
+                path = os.path.relpath(os.path.join(folder, f), root).replace(os.sep, "/")
+                if f.endswith(SOURCE_SUFFIXES) and path not in seen:
+                    seen.add(path)
+                    yield path
 
 
 def is_header(path):
@@ -138,6 +161,10 @@ class Checker:
 
     def check_project_include(self, where, layer, target):
         top = target.split("/", 1)[0]
+        if layer == "systems" and top == "tools":
+            self.error(where, f"includes {target}: systems/ never includes tools/ (the frame "
+                       "stands below the applications; move what both need into systems/)")
+            return None
         if top not in ALLOWED_LAYERS[layer]:
             allowed = " and ".join(f"{a}/" for a in sorted(ALLOWED_LAYERS[layer]))
             self.error(where, f"includes {target}: files under {layer}/ may include only "
@@ -199,7 +226,7 @@ class Checker:
         self.error("dependencies", "cycle between modules: " + " -> ".join(cycle))
 
     def run(self):
-        for path in layer_files(self.root):
+        for path in layer_files(self.root, self.modules):
             self.check_file(path)
         self.check_declarations()
         self.check_cycles()

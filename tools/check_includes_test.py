@@ -24,7 +24,8 @@ def module(folder, public=(), private=(), files=()):
 
 
 class TreeTest(unittest.TestCase):
-    """A tree with engine/core, engine/gpu, components and systems/{a,b}, each include legal."""
+    """A tree with engine/core, engine/gpu, components, systems/{a,b}, the application module
+    tools/app and the command line tools/cli (no module), each include legal."""
 
     def setUp(self):
         self.root = tempfile.mkdtemp(prefix="check_includes_")
@@ -40,6 +41,9 @@ class TreeTest(unittest.TestCase):
         self.write("systems/a/a.cpp", '#include "systems/a/a.h"\n#include "engine/gpu/gl.h"\n')
         self.write("systems/b/b.h", '#pragma once\n#include "systems/a/a.h"\n')
         self.write("systems/b/b.cpp", '#include "b.h"\n')
+        self.write("tools/app/app.h", '#pragma once\n#include "systems/b/b.h"\n')
+        self.write("tools/app/app.cpp", '#include "tools/app/app.h"\n')
+        self.write("tools/cli/main.cpp", '#include "tools/app/app.h"\n#include "tests/x.h"\n')
         self.table = {
             "modules": {
                 "engine_core": module("engine/core"),
@@ -47,6 +51,7 @@ class TreeTest(unittest.TestCase):
                 "components": module("components", public=["engine_core", "glm"]),
                 "system_a": module("systems/a", public=["components"], private=["engine_gpu"]),
                 "system_b": module("systems/b", public=["system_a"]),
+                "tool_app": module("tools/app", public=["system_b"]),
             },
             "third_party": {"epoxy": ["epoxy/"], "glm": ["glm/"], "glfw": ["GLFW/"]},
         }
@@ -100,6 +105,27 @@ class TreeTest(unittest.TestCase):
         self.assert_fails("systems/a/a.cpp:3", "module system_a does not depend on system_b")
         self.table["modules"]["system_a"]["private"].append("system_b")
         self.assert_fails("cycle between modules: system_a -> system_b -> system_a")
+
+    def test_system_including_tools_fails(self):
+        self.append("systems/a/a.cpp", '#include "tools/app/app.h"\n')
+        self.assert_fails("systems/a/a.cpp:3", "systems/ never includes tools/")
+
+    def test_tools_module_including_tests_fails(self):
+        self.append("tools/app/app.cpp", '#include "tests/support/world.h"\n')
+        self.assert_fails("tools/app/app.cpp:2", "files under tools/ may include only")
+
+    def test_tools_module_including_undeclared_system_fails(self):
+        self.append("tools/app/app.cpp", '#include "engine/gpu/gl.h"\n')
+        self.assert_fails("tools/app/app.cpp:2", "module tool_app does not depend on engine_gpu")
+
+    def test_tools_outside_module_folders_are_not_checked(self):
+        self.write("tools/app/extra/extra.cpp", "int extra = 0;\n")
+        self.table["modules"]["tool_app"]["folder"] = "tools/app/extra"
+        self.table["modules"]["tool_app"]["public"] = []
+        self.write("tools/app/app.cpp", "int app = 0;\n")
+        self.write("tools/app/app.h", "#pragma once\n")
+        status, lines = self.check()
+        self.assertEqual(status, 0, lines)  # tools/app itself is no module folder now: unchecked
 
     def test_private_dependency_in_a_header_fails(self):
         self.append("systems/a/a.h", '#include "engine/gpu/gl.h"\n')

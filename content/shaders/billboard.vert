@@ -35,7 +35,7 @@ uniform vec3 u_toward_sun;     // unit
 uniform vec4 u_scattering;     // Henyey-Greenstein g first (billboard.frag)
 // The fire's clustered point lights (components/fire_lights.h), world position and radius, and
 // intensity: each scatters I p_HG(mu, g) / max(d^2, r^2) toward the eye (the sun's convention,
-// whose light colour is its irradiance over 4 pi: systems/reference/lit_particle_reference.h).
+// whose light colour is its irradiance over 4 pi: systems/runtime/reference/lit_particle_reference.h).
 uniform int u_fire_light_count;
 uniform vec4 u_fire_lights[8];
 uniform vec3 u_fire_intensity[8];

@@ -11,7 +11,7 @@
 // mixes them by t; m is a frame's motion over one frame in UV (v down, as these UVs), times the
 // frames b lies ahead of a. Without motion vectors, t is 0 and the frame is shown as it is.
 // A six-way flipbook (u_six_way: smoke baked under six lights, Unity VFX Graph's packing, A =
-// right/top/back + alpha, B = left/bottom/front + emissive; systems/six_way_lighting/
+// right/top/back + alpha, B = left/bottom/front + emissive; tools/bake/
 // six_way_basis.h) is relit here by Unity's blend (URP SixWayLighting.hlsl, SixWayLightBlend):
 // with w the unit vector towards the light in the fire's frame (x right, y up, z toward the
 // viewer), lighting = sum over the axes of w_axis^2 times the face on w_axis's side. The smoke's

@@ -3,7 +3,7 @@
 //  * Lock: an advisory flock on the folder itself, held for the object's life. A second run into
 //    the same folder is refused (UserError) or, with `wait`, waits for the first to finish.
 //  * Manifest: `.pyro_manifest.json` in the folder records the run's identity (its digest and
-//    parts: systems/scene_runtime/run_identity.h), what the run chose once for all its ranges
+//    parts: systems/runtime/scene_runtime/run_identity.h), what the run chose once for all its ranges
 //    (a quality pick) and the files the folder holds. A folder holds one identity: a run of
 //    another identity, or into a folder holding frames no manifest accounts for, is refused,
 //    naming what differs, unless `overwrite` (then, once the run has succeeded, the other run's

@@ -13,7 +13,7 @@
 //                    extinction, r, g, b (engine/particles/anisotropic_gaussian.h)
 //   A record one float32 longer (36 bytes in version 1, 60 in version 2) carries the particle's
 //   temperature last: the temperature grid's density-weighted mean over the particle, in the
-//   grid's units (systems/cloud_import/gaussian_temperature.h), which a scene maps to kelvin.
+//   grid's units (systems/runtime/cloud_import/gaussian_temperature.h), which a scene maps to kelvin.
 // The file size must be exactly 28 + M + N times the record size. Written durably
 // (engine/io/durable_file.h), so a reader never sees half a file.
 #include <cstdint>

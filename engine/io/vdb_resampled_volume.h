@@ -2,11 +2,11 @@
 // A large OpenVDB file made from a small grid: the grid resampled `scale` times finer on every
 // axis and written as a float fog volume, leaf by leaf, in a child process
 // (engine/io/isolated_call.h), never through a dense copy of the fine grid. What the import
-// benchmark at production sizes reads (systems/benchmarks/import_scale.h).
+// benchmark at production sizes reads (tools/bench/import_scale.h).
 //
 // The fine grid's voxel I lies at the source's index coordinate S = (I + 1/2) / scale - 1/2 (the
 // fine voxels tile the source's), its value the trilinear reconstruction of the source there,
-// falling to 0 over the one voxel past the source's box (as systems/reference/grid_sampling.h
+// falling to 0 over the one voxel past the source's box (as systems/runtime/reference/grid_sampling.h
 // reconstructs a grid); voxels whose value is not 0 are active. The transform is the source's
 // composed with that map, so the fine grid fills the same region of the world.
 #include <cstdint>

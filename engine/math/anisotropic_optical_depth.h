@@ -17,7 +17,7 @@
 // over [lo, hi] (the chord cut to [a, b]) is
 //   k exp(-m2_min / 2) sqrt(pi / (2 A)) [erf(sqrt(A / 2) (hi - t_c)) - erf(sqrt(A / 2) (lo - t_c))]
 // with erf(x) = 2 / sqrt(pi) * integral_0^x exp(-s^2) ds (Abramowitz & Stegun 7.1.1).
-// The isotropic case (A = 1 / s^2) is systems/reference/particle_reference.h's closed form.
+// The isotropic case (A = 1 / s^2) is systems/runtime/reference/particle_reference.h's closed form.
 //
 // The fragment shader content/shaders/anisotropic_splat.frag evaluates the same steps in float,
 // with erf replaced by Abramowitz & Stegun 7.1.26 (|error| <= 1.5e-7); its coefficients come from

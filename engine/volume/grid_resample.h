@@ -3,7 +3,7 @@
 // space, so that both are indexed alike whatever their transforms and boxes: the value at each
 // voxel centre of `target` is the source's trilinear reconstruction at the same world point.
 // Outside the source's stored box the source holds its background 0, so values fall linearly to 0
-// over the one voxel past its edge (as systems/reference/grid_sampling.h reconstructs a grid).
+// over the one voxel past its edge (as systems/runtime/reference/grid_sampling.h reconstructs a grid).
 // A function that is linear in world space is reproduced exactly wherever the eight source voxels
 // around the point are stored.
 #include "engine/volume/dense_grid.h"

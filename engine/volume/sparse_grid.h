@@ -7,7 +7,7 @@
 //
 // Bricks are aligned to the box's low corner (local coordinate 0), not to OpenVDB's leaves
 // (index coordinates that are multiples of 8): the importer's blocks are aligned to the same
-// corner (systems/cloud_import/cloud_import.h), so a brick is exactly one of its 8^3 blocks and
+// corner (systems/runtime/cloud_import/cloud_import.h), so a brick is exactly one of its 8^3 blocks and
 // the block statistics below it live inside the brick.
 #include <cstdint>
 #include <vector>

@@ -7,7 +7,7 @@
 
 #include "components/draw_list.h"
 #include "components/fire_lights.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 #include "engine/gpu/buffer_range.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"

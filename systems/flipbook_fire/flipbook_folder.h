@@ -25,7 +25,7 @@ struct FlipbookFrames {
   // Per frame, the medium's motion over one frame (an atlas bake's motion.png); empty: none.
   std::vector<MotionField> motion;
   // Per frame, six-way lightmap B (left, bottom, front, emissive; Unity VFX Graph's packing,
-  // systems/six_way_lighting/six_way_basis.h); empty: not a six-way flipbook. When present,
+  // systems/flipbook_fire/six_way_basis.h); empty: not a six-way flipbook. When present,
   // `rgba` holds lightmap A (right, top, back, alpha), and both hold linear values, not sRGB.
   std::vector<std::vector<uint8_t>> six_way_b;
 

@@ -7,7 +7,7 @@
 // (flipbook_motion_blend.h, content/shaders/flipbook.frag); without, each step shows its frame.
 // A six-way flipbook (smoke baked as lightmaps, flipbook_six_way_folder.h) gets its two lightmaps
 // as linear RGBA8 arrays and is relit per fragment by Unity's six-way blend
-// (systems/six_way_lighting/six_way_basis.h) under the light it is given, and drawn over what is
+// (systems/flipbook_fire/six_way_basis.h) under the light it is given, and drawn over what is
 // behind it with premultiplied alpha whatever the fire's blend: it is a medium, not a glow.
 #include <vector>
 

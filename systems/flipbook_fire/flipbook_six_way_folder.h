@@ -1,7 +1,7 @@
 #pragma once
 // A flipbook folder that holds six-way lightmaps (`pyro bake-flipbook --six-way`:
 // six_way.json beside six_way_a/ and six_way_b/, each a folder of numbered RGBA PNG frames in
-// Unity VFX Graph's packing, systems/six_way_lighting/six_way_basis.h) read into FlipbookFrames:
+// Unity VFX Graph's packing, systems/flipbook_fire/six_way_basis.h) read into FlipbookFrames:
 // lightmap A as `rgba`, lightmap B as `six_way_b`, frame i of each the same frame.
 #include <string>
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "components/volume_sequence.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 

@@ -22,8 +22,8 @@
 #include "spin/spin.h"
 #include "spin/spin_system.h"
 #include "systems/output/png_sink.h"
-#include "systems/scene/scene_description.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_description.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace {
 

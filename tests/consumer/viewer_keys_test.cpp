@@ -1,7 +1,7 @@
 // The window component from the installed package: the viewer's key table, with no window
 // opened. Keys 1..7 pick the stereo modes in stereo_modes_by_key()'s order, each by the name
 // --press-at uses, and the named toggles map to their commands.
-#include "systems/viewer/viewer_keys.h"
+#include "tools/viewer/viewer_keys.h"
 
 #include <gtest/gtest.h>
 

@@ -16,7 +16,7 @@
 #include "engine/io/isolated_call.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/png_file.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "engine/io/vdb_file_check.h"
 #include "engine/io/vdb_reader.h"
 #include "tools/pyro/app.h"

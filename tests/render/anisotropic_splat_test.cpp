@@ -1,6 +1,6 @@
 // The GL anisotropic splats (systems/billboard_render/anisotropic_splat_renderer.h, read back by
 // render_anisotropic_snapshot) against the exact CPU reference of the same particles
-// (systems/reference/anisotropic_reference.h).
+// (systems/runtime/reference/anisotropic_reference.h).
 //
 // Bounds. For one particle both evaluate the same closed form, the GL side in float with erf
 // from Abramowitz & Stegun 7.1.26 (|error| <= 1.5e-7) into an RGBA32F target: what differs is
@@ -24,9 +24,9 @@
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
 #include "systems/billboard_render/anisotropic_splat_renderer.h"
-#include "systems/reference/anisotropic_reference.h"
-#include "systems/scene_runtime/anisotropic_snapshot.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/reference/anisotropic_reference.h"
+#include "systems/runtime/scene_runtime/anisotropic_snapshot.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/random_anisotropic.h"
 
 namespace pyro {

@@ -10,7 +10,7 @@
 #include "components/frame_image.h"
 #include "engine/math/billboard_alignment.h"
 #include "engine/math/camera_math.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/one_particle_scene.h"
 
 namespace pyro {

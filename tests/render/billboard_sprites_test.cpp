@@ -15,9 +15,9 @@
 #include "components/frame_image.h"
 #include "components/render_settings.h"
 #include "components/view.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "systems/billboard_render/sphere_billboard_programs.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

@@ -13,8 +13,8 @@
 #include "components/frame_image.h"
 #include "components/render_settings.h"
 #include "engine/core/content_path.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

@@ -12,7 +12,7 @@
 #include "components/explosion_shading.h"
 #include "components/frame_image.h"
 #include "engine/math/phase_function.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/one_particle_scene.h"
 
 namespace pyro {

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "components/frame_image.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

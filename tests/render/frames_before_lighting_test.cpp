@@ -13,14 +13,10 @@
 // out: their pick depends on timings.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
-#include "engine/io/png_file.h"
-#include "tests/support/file_bytes.h"
+#include "tests/support/frame_difference.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -42,23 +38,10 @@ TEST_P(FramesBeforeLighting, ShadowsOffRendersTheFrameOfBeforeLighting) {
                                  "--height", "72", "--shadows", "off", "--out", dir.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const fs::path now = dir / "frame_0012.png", before = kFrames / (name + ".png");
-  const PngImage a = read_png(now.string()), b = read_png(before.string());
-  ASSERT_EQ(a.width, b.width);
-  ASSERT_EQ(a.height, b.height);
-  ASSERT_EQ(a.pixels.size(), b.pixels.size());
-  int largest = 0;
-  size_t differing = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    const int d = std::abs(int(a.pixels[i]) - int(b.pixels[i]));
-    largest = std::max(largest, d);
-    differing += d > 0 ? 1 : 0;
-  }
-  const double share = double(differing) / double(a.pixels.size());
-  const bool same_bytes = test::read_bytes(now) == test::read_bytes(before);
-  std::printf("%s: %s, largest difference %d of 255, %.3f%% of the values differ\n", name.c_str(),
-              same_bytes ? "the same bytes" : "different bytes", largest, 100.0 * share);
-  EXPECT_LE(largest, 2);
-  EXPECT_LE(share, 0.005);
+  test::FrameDifference diff;
+  ASSERT_NO_FATAL_FAILURE(test::compare_frames(name, now, before, diff));
+  EXPECT_LE(diff.largest, 2);
+  EXPECT_LE(diff.share, 0.005);
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, FramesBeforeLighting,

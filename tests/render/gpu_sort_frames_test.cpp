@@ -14,8 +14,8 @@
 #include "components/render_settings.h"
 #include "components/sort_device_choice.h"
 #include "engine/core/content_path.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/splat_drawing.h"
 #include "tests/support/test_paths.h"
 

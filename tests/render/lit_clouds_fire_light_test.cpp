@@ -1,15 +1,15 @@
 // Fire lights the Gaussian splats: a low cloud over campfire.json's fires at night, lit, against
-// the CPU reference with the same clustered fire lights (systems/reference/lit_particle_reference.h,
+// the CPU reference with the same clustered fire lights (systems/runtime/reference/lit_particle_reference.h,
 // point_lights): within the lit clouds' bar, and the frame without fire light is not.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
 #include "components/fire_lights.h"
-#include "systems/quality_picker/quality_measurement.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/quality_picker/quality_measurement.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/rendered_frame.h"
 #include "tests/support/test_paths.h"
 

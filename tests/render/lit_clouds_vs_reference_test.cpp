@@ -1,5 +1,5 @@
 // clouds.json lit by its sun, against the CPU reference with exact shadows
-// (systems/reference/lit_particle_reference.h): single scattering with the sun's transmittance
+// (systems/runtime/reference/lit_particle_reference.h): single scattering with the sun's transmittance
 // exact at every point of every ray, over the opaque scene whose ground keeps exp(-tau) of its
 // sunlight. Both shadow methods must come within the bar (whole-frame RMSE 0.02); lit without
 // shadows, the same frame must not.
@@ -8,10 +8,10 @@
 #include <cstdio>
 
 #include "components/frame_image.h"
-#include "systems/quality_picker/quality_measurement.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/quality_picker/quality_measurement.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/rendered_frame.h"
 #include "tests/support/test_paths.h"
 

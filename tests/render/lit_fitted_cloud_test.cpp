@@ -15,10 +15,10 @@
 #include "components/directional_light.h"
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
-#include "systems/quality_picker/quality_measurement.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/quality_picker/quality_measurement.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

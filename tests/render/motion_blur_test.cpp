@@ -15,9 +15,9 @@
 
 #include "engine/io/png_file.h"
 #include "systems/output/png_sink.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "engine/math/color.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/small_runtime.h"
 #include "tests/support/test_paths.h"
 

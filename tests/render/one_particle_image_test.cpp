@@ -7,7 +7,7 @@
 
 #include "components/draw_list.h"
 #include "components/frame_image.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/one_particle_scene.h"
 
 namespace pyro {

@@ -7,7 +7,7 @@
 
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/shader_program.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

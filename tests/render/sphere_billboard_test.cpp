@@ -10,7 +10,7 @@
 #include "components/camera.h"
 #include "components/frame_image.h"
 #include "engine/math/camera_math.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

@@ -1,19 +1,19 @@
 // The GL splat image of a small particle set against the exact particle reference
-// (systems/reference/particle_reference.h: closed-form erf integrals of the same Gaussians): the
+// (systems/runtime/reference/particle_reference.h: closed-form erf integrals of the same Gaussians): the
 // image RMSE, linear colour in [0, 1], must stay within the project's accuracy bar (0.03).
 // Differences come from compositing whole splats in depth order where overlapping Gaussians
 // really mix, and from the 8-bit-free but bilinearly sampled footprint table.
 #include <gtest/gtest.h>
 
-#include "systems/cloud_import/scene_volume.h"
+#include "systems/runtime/cloud_import/scene_volume.h"
 
 #include <cmath>
 #include <vector>
 
 #include "engine/core/rng.h"
 #include "engine/math/camera_math.h"
-#include "systems/reference/particle_reference.h"
-#include "systems/scene_runtime/particle_snapshot.h"
+#include "systems/runtime/reference/particle_reference.h"
+#include "systems/runtime/scene_runtime/particle_snapshot.h"
 
 namespace pyro {
 namespace {

@@ -14,7 +14,7 @@
 #include "components/gpu_frame.h"
 #include "engine/math/color.h"
 #include "systems/composite/compositor.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

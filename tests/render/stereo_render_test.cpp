@@ -7,11 +7,11 @@
 
 #include "components/gpu_frame.h"
 #include "components/particle_set.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "engine/math/anaglyph.h"
 #include "engine/math/color.h"
 #include "engine/math/stereo_projection.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 #include "tests/support/one_particle_scene.h"
 

@@ -1,5 +1,5 @@
 // Fire from a volume's temperature, drawn by the GL splats against the CPU reference of the same
-// particles (systems/reference/anisotropic_reference.h), unlit and lit with shadows: each
+// particles (systems/runtime/reference/anisotropic_reference.h), unlit and lit with shadows: each
 // particle emits L_e weighted like its own opacity in both. One emitting particle against its
 // closed form L_e (1 - exp(-tau)); the light a fire of overlapping particles emits (the frame minus
 // the same frame at intensity 0), seen through its own smoke, within RMSE 0.03 of the reference's.
@@ -16,13 +16,13 @@
 #include "engine/io/particle_file.h"
 #include "engine/math/anisotropic_optical_depth.h"
 #include "engine/math/temperature_emission.h"
-#include "systems/quality_picker/quality_measurement.h"
-#include "systems/reference/anisotropic_reference.h"
-#include "systems/reference/pixel_ray.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/anisotropic_snapshot.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/quality_picker/quality_measurement.h"
+#include "systems/runtime/reference/anisotropic_reference.h"
+#include "systems/runtime/reference/pixel_ray.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/anisotropic_snapshot.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

@@ -1,6 +1,6 @@
 // Stability: densities tending to 0 and to their largest value (a splat opaque at its centre,
 // rho -> 1, i.e. optical depth -> infinity), through the engine's own code: the CPU ground truth
-// (systems/reference/particle_reference.h: tau0 = -ln(1 - rho), opacity 1 - exp(-dtau)) and the
+// (systems/runtime/reference/particle_reference.h: tau0 = -ln(1 - rho), opacity 1 - exp(-dtau)) and the
 // footprint table the GL splats multiply density by (engine/math/footprint.h).
 // The ground truth evaluates them as -log1p(-rho) (rho clamped below 1) and -expm1(-dtau): finite,
 // monotone, and accurate as rho -> 0. Written as -log(1 - rho) and 1 - exp(-tau), they would lose
@@ -16,8 +16,8 @@
 
 #include "engine/math/camera_math.h"
 #include "engine/math/footprint.h"
-#include "systems/reference/particle_reference.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/reference/particle_reference.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro {
 namespace {

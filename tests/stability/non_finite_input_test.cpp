@@ -14,7 +14,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/math/camera_math.h"
-#include "systems/reference/particle_reference.h"
+#include "systems/runtime/reference/particle_reference.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

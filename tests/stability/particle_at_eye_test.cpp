@@ -12,7 +12,7 @@
 
 #include "engine/math/billboard_alignment.h"
 #include "engine/math/camera_math.h"
-#include "systems/reference/particle_reference.h"
+#include "systems/runtime/reference/particle_reference.h"
 
 namespace pyro {
 namespace {

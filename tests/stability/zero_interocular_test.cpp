@@ -18,7 +18,7 @@
 #include "engine/math/camera_math.h"
 #include "engine/math/stereo_projection.h"
 #include "systems/camera/camera_system.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

@@ -4,7 +4,7 @@
 // -z. Callers change what their test needs (stereo, lighting, shading).
 #include <glm/vec3.hpp>
 
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro::test {
 

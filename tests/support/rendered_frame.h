@@ -1,8 +1,8 @@
 #pragma once
 // One frame of a scene as linear RGB at width x height (mono), for tests that score the engine's
 // image against a reference.
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro::test {
 

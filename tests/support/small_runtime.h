@@ -1,7 +1,7 @@
 #pragma once
 // Runtime options for tests that step a scene on the GPU but look at its state, not its image:
 // a 48x48 view and no readback, so that a run of frames stays cheap.
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro::test {
 

@@ -12,7 +12,7 @@
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
 #include "systems/billboard_render/billboard_renderer.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 
 namespace pyro::test {
 

@@ -1,6 +1,6 @@
 """What every plotting script under tools/plots starts with: an error exit that names the script,
 and matplotlib (Debian's python3-matplotlib) loaded for drawing to files, or exit status 3 with
-how to install it. pyro's plot runner (tools/pyro/plot_script.cpp) reads status 3 as "no
+how to install it. pyro's plot runner (tools/charts/plot_script.cpp) reads status 3 as "no
 matplotlib" and says so. Also what the chart scripts share: reading a chart CSV with its comment
 lines, saving a figure atomically, and reporting any failure with exit status 1."""
 import csv

@@ -1,22 +1,21 @@
 // pyro bench ecs | sort | scale | import-cases | render | johnson | layers | table1 | soak | vdb | relight | multiple-scattering | cycles | schedule ... [--json]
 //
-// Each subcommand parses its options, runs the benchmark (systems/benchmarks; bench ecs:
-// tools/pyro/bench_ecs.h) and prints its result.
-#include <cmath>
-#include <cstdio>
+// Each subcommand parses its options, runs the benchmark (tools/bench; bench ecs:
+// tools/bench/bench_ecs.h) and prints its result.
 #include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-#include "tools/pyro/bench_ecs.h"
-#include "systems/benchmarks/bench_johnson.h"
-#include "systems/benchmarks/bench_layers.h"
-#include "systems/benchmarks/import_cases.h"
-#include "systems/benchmarks/bench_render.h"
-#include "systems/benchmarks/bench_scale.h"
-#include "systems/benchmarks/bench_soak.h"
-#include "systems/benchmarks/bench_sort.h"
+#include "tools/bench/bench_ecs.h"
+#include "tools/bench/bench_johnson.h"
+#include "tools/bench/bench_layers.h"
+#include "tools/bench/import_cases.h"
+#include "tools/bench/bench_render.h"
+#include "tools/bench/bench_scale.h"
+#include "tools/bench/bench_soak.h"
+#include "tools/bench/bench_sort.h"
+#include "tools/bench/bench_text.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/render_options.h"
@@ -27,11 +26,7 @@ namespace pyro::cli {
 namespace {
 
 void print(const nlohmann::json& result, bool json) {
-  if (json) {
-    write_stdout(result.dump() + "\n");
-  } else {
-    for (const auto& [key, value] : result.items()) std::printf("  %-30s %s\n", key.c_str(), value.dump().c_str());
-  }
+  write_result(result, bench_fields_text(result), json);
 }
 
 void add_bench_ecs(CLI::App* bench) {
@@ -43,7 +38,7 @@ void add_bench_ecs(CLI::App* bench) {
   ecs_cmd->add_option("--repeats", ecs->repeats, "Interleaved repeats (medians reported)")
       ->check(CLI::Range(1, 1000));
   ecs_cmd->add_flag("--json", ecs->json, "Print one JSON object");
-  ecs_cmd->callback([ecs] { print(bench_ecs(ecs->entities, ecs->repeats), ecs->json); });
+  ecs_cmd->callback([ecs] { print(bench_ecs(ecs->entities, ecs->repeats, terminal_progress()), ecs->json); });
 }
 
 void add_bench_sort(CLI::App* bench) {
@@ -59,22 +54,6 @@ void add_bench_sort(CLI::App* bench) {
 }
 
 // One line per count, then the slopes.
-void print_scale(const nlohmann::json& r) {
-  std::printf("%s at %dx%d, %d frames per count\n", r["scene"].get<std::string>().c_str(),
-              r["width"].get<int>(), r["height"].get<int>(), r["frames"].get<int>());
-  std::printf("%12s %12s %12s %14s %18s %8s\n", "particles", "ms/frame", "cpu ms", "sort/std::sort",
-              "instances/memcpy", "order");
-  const auto number = [](const nlohmann::json& v) { return v.is_null() ? NAN : v.get<double>(); };
-  for (const nlohmann::json& c : r["counts"])
-    std::printf("%12llu %12.1f %12.2f %14.3f %18.2f %8s\n", c["particles"].get<unsigned long long>(),
-                c["ms_per_frame"].get<double>(), c["cpu_ms_per_frame"].get<double>(),
-                number(c["sort_over_std_sort"]), c["instances_over_memcpy"].get<double>(),
-                c["ordered_on"].get<std::string>().c_str());
-  for (const char* slope : {"cpu_slope", "frame_slope"})
-    std::printf("%s (log-log, 1e5 to 2e6): %s\n", slope,
-                r[slope].is_null() ? "none (fewer than two counts there)" : r[slope].dump().c_str());
-}
-
 void add_bench_scale(CLI::App* bench) {
   struct ScaleArgs { ScaleBenchOptions options; bool json = false; };
   auto scale = std::make_shared<ScaleArgs>();
@@ -99,10 +78,7 @@ void add_bench_scale(CLI::App* bench) {
   cmd->callback([scale] {
     scale->options.progress = terminal_progress();
     const nlohmann::json r = bench_scale(scale->options);
-    if (scale->json)
-      write_stdout(r.dump() + "\n");
-    else
-      print_scale(r);
+    write_result(r, scale_bench_text(r), scale->json);
   });
 }
 

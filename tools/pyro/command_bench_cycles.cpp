@@ -1,13 +1,13 @@
 // pyro bench cycles FILE... [--directions N] [--samples N] [--cycles-samples N] [--bounces N]
 //     [--width W] [--height H] [--albedo A] [--anisotropy G] [--grid NAME] [--blender PATH] [--json]
-// The engine's path-traced truth against Blender's Cycles (systems/benchmarks/bench_cycles.h).
+// The engine's path-traced truth against Blender's Cycles (tools/bench/bench_cycles.h).
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-#include "systems/benchmarks/bench_cycles.h"
+#include "tools/bench/bench_cycles.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"

@@ -1,14 +1,14 @@
 // pyro bench explosion-shadows [SCENE] [--width W] [--height H] [--layer-scale S] [--frames N]
 //                                      [--error-frames N] [--json]
 // The explosion's media shadowed by each shadow setting, timed against shadows off and scored
-// against exact per-fragment shadows (systems/benchmarks/bench_explosion_shadows.h).
+// against exact per-fragment shadows (tools/bench/bench_explosion_shadows.h).
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-#include "systems/benchmarks/bench_explosion_shadows.h"
+#include "tools/bench/bench_explosion_shadows.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"

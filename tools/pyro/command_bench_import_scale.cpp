@@ -1,6 +1,6 @@
 // pyro bench import-scale [--voxels N] [--keep FILE] [--source FILE] [--error E] [--error-size N]
 //                         [--error-samples N] [--threads T] [--json]
-// The VDB import at production sizes (systems/benchmarks/import_scale.h): a synthetic file of at
+// The VDB import at production sizes (tools/bench/import_scale.h): a synthetic file of at
 // least N active voxels read sparse and imported, voxels per second and peak resident memory.
 #include <unistd.h>
 
@@ -10,7 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "systems/benchmarks/import_scale.h"
+#include "tools/bench/bench_text.h"
+#include "tools/bench/import_scale.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"
@@ -20,27 +21,6 @@ namespace pyro::cli {
 namespace {
 
 void print_note(const std::string& line) { std::fprintf(stderr, "pyro bench import-scale: %s\n", line.c_str()); }
-
-void print_import_scale(const nlohmann::json& j) {
-  const double gib = double(uint64_t{1} << 30);
-  std::printf("%llu active voxels (%llu bricks of 8^3, box %llu voxels), file %.2f GiB%s\n",
-              j["active_voxels"].get<unsigned long long>(), j["bricks"].get<unsigned long long>(),
-              j["box_voxels"].get<unsigned long long>(), j["file_bytes"].get<double>() / gib,
-              j["generated"].get<bool>() ? " (written for this run)" : "");
-  std::printf("read %.2f s, import %.2f s (light %.2f s, pyramid and octree %.2f s): %.2f M active voxels/s, "
-              "%llu particles\n",
-              j["read_seconds"].get<double>(), j["import_seconds"].get<double>(), j["light_seconds"].get<double>(),
-              j["fit_seconds"].get<double>(), j["voxels_per_second"].get<double>() / 1e6,
-              j["particles"].get<unsigned long long>());
-  if (j["measured"].get<bool>())
-    std::printf("import error: RMSE %.4f against the path-traced truth of the sparse grid (%dx%d, %d paths per "
-                "pixel, its own Monte Carlo error %.4f, %.1f s)\n",
-                j["rmse_vs_reference"].get<double>(), j["error_size"].get<int>(), j["error_size"].get<int>(),
-                j["error_samples"].get<int>(), j["reference_monte_carlo_error"].get<double>(),
-                j["reference_seconds"].get<double>());
-  std::printf("peak resident memory: engine %.2f GiB, reading child %.2f GiB\n",
-              j["parent_peak_rss_bytes"].get<double>() / gib, j["child_peak_rss_bytes"].get<double>() / gib);
-}
 
 }  // namespace
 
@@ -72,10 +52,7 @@ void add_bench_import_scale_command(CLI::App& bench) {
     args->options.on_note = print_note;
     args->options.progress_fd = STDERR_FILENO;
     const nlohmann::json j = bench_import_scale(args->options);
-    if (args->json)
-      write_stdout(j.dump() + "\n");
-    else
-      print_import_scale(j);
+    write_result(j, import_scale_text(j), args->json);
   });
 }
 

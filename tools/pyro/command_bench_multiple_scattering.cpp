@@ -2,7 +2,7 @@
 //     [--extinction K] [--albedo A] [--anisotropy G] [--octaves N] [--attenuation A]
 //     [--contribution B] [--eccentricity C] [--images DIR] [--json]
 // Single scattering and the octave approximation against the path-traced truth
-// (systems/benchmarks/bench_multiple_scattering.h).
+// (tools/bench/bench_multiple_scattering.h).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/user_error.h"
-#include "systems/benchmarks/bench_multiple_scattering.h"
+#include "tools/bench/bench_multiple_scattering.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"

@@ -1,14 +1,14 @@
 // pyro bench relight FILE [--fitted] [--directions N] [--error E] [--grid NAME] [--width W] [--height H]
 //                         [--frames N] [--shadows map|rays|none] [--json]
 // An OpenVDB grid imported once and relit from N sun directions by the light phase
-// (systems/benchmarks/bench_relight.h).
+// (tools/bench/bench_relight.h).
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-#include "systems/benchmarks/bench_relight.h"
+#include "tools/bench/bench_relight.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/render_options.h"

@@ -1,12 +1,12 @@
 // pyro bench vdb FILE [--grid NAME] [--error E] [--width W] [--height H] [--json]
-// Splats, the CPU reference and OpenVDB's vdb_render on one view (systems/benchmarks/bench_vdb.h).
+// Splats, the CPU reference and OpenVDB's vdb_render on one view (tools/bench/bench_vdb.h).
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-#include "systems/benchmarks/bench_vdb.h"
+#include "tools/bench/bench_vdb.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"

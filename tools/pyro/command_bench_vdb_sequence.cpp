@@ -1,5 +1,5 @@
 // pyro bench vdb-sequence [--frames 25,100] [--side N] [--error E] [--keep DIR] [--json]
-// The animated VDB import (systems/benchmarks/vdb_sequence_bench.h): frames per second and peak
+// The animated VDB import (tools/bench/vdb_sequence_bench.h): frames per second and peak
 // resident memory for sequences of several lengths, each imported in a process of its own.
 #include <cstdio>
 #include <memory>
@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "systems/benchmarks/vdb_sequence_bench.h"
+#include "tools/bench/vdb_sequence_bench.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"

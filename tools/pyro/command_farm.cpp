@@ -7,7 +7,7 @@
 // task a `pyro render --frames a:b` into its own folder (frames are the same bytes whichever
 // range draws them), then a collect job that moves them into DIR, checks them and writes their
 // checksums; resubmit sends again only the frames still missing. The Slurm side is
-// systems/farm/slurm_script.h, the collection systems/farm/farm_collect.h; docs/farm.md.
+// tools/farm/slurm_script.h, the collection tools/farm/farm_collect.h; docs/farm.md.
 #include <unistd.h>
 
 #include <filesystem>
@@ -21,17 +21,17 @@
 #include "engine/io/staging_folder.h"
 #include "engine/io/text_file.h"
 #include "engine/io/video_file.h"
-#include "systems/farm/farm_collect.h"
-#include "systems/farm/farm_record.h"
-#include "systems/farm/frame_chunks.h"
-#include "systems/farm/frames_video.h"
-#include "systems/farm/sbatch.h"
-#include "systems/farm/slurm_script.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/frame_range.h"
+#include "tools/farm/farm_collect.h"
+#include "tools/farm/farm_record.h"
+#include "tools/farm/frame_chunks.h"
+#include "tools/farm/frames_video.h"
+#include "tools/farm/sbatch.h"
+#include "tools/farm/slurm_script.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/frame_range.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/print_note.h"
-#include "tools/pyro/render_identity.h"
+#include "systems/runtime/scene_runtime/render_identity.h"
 #include "tools/pyro/render_options.h"
 #include "tools/pyro/stdout_text.h"
 
@@ -158,7 +158,7 @@ FarmRecord new_record(const SubmitArgs& a, const CLI::App& cmd, const std::strin
   options.readback = false;
   options.width_override = a.width;
   options.height_override = a.height;
-  record.identity = render_identity_json(scene, options, record.scene, a.depth);
+  record.identity = render_identity_json(scene, options, record.scene, a.depth, print_note);
   refuse_other_run(dir, record.digest());
   record.frames = parse_frame_range(a.frames, "--frames");
   record.chunk = a.chunk;

@@ -1,7 +1,7 @@
 // pyro import-vdb FILE [--grid NAME | --grid-index I] [--temperature-grid NAME|none] [--error E]
 //                 --out FILE [--json] [--width W] [--height H] [--samples N]
 // Reads one float grid, imports it as anisotropic Gaussian particles fitted to the grid until the
-// image error from every side meets the target (systems/benchmarks/fitted_import.h: the splats
+// image error from every side meets the target (tools/bench/fitted_import.h: the splats
 // drawn by the real GL renderer, offscreen, against the CPU reference render of the grid from
 // seven views around it), and only then writes the particle file (engine/io/particle_file.h: checked as the loader checks it, then
 // written durably).
@@ -26,12 +26,12 @@
 #include "engine/io/vdb_temperature_grid.h"
 #include "engine/math/temperature_emission.h"
 #include "engine/volume/sparse_grid.h"
-#include "systems/cloud_import/vdb_sequence_members.h"
+#include "systems/runtime/cloud_import/vdb_sequence_members.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/import_sequence.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"
-#include "systems/benchmarks/fitted_import.h"
+#include "tools/bench/fitted_import.h"
 
 namespace pyro::cli {
 

@@ -15,7 +15,7 @@
 #include "engine/core/same_file.h"
 #include "engine/core/user_error.h"
 #include "engine/io/folder_replacement.h"
-#include "systems/cloud_import/vdb_sequence_import.h"
+#include "systems/runtime/cloud_import/vdb_sequence_import.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"
 

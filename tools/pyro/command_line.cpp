@@ -14,7 +14,7 @@
 #include "engine/core/user_error.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/io/io_error.h"
-#include "tools/pyro/external_tool_error.h"
+#include "tools/charts/external_tool_error.h"
 #include "tools/pyro/interrupt.h"
 #include "tools/pyro/stdout_text.h"
 

@@ -1,6 +1,6 @@
 // pyro new FILE --template NAME [--force] | pyro new --list
 //
-// Writes a starting scene (content/templates/NAME.json, tools/pyro/scene_templates.h) to FILE,
+// Writes a starting scene (content/templates/NAME.json, tools/authoring/scene_templates.h) to FILE,
 // atomically, with "$schema" and its asset paths rewritten to resolve from FILE's folder, so
 // that it renders as it is and editors find the schema.
 #include <filesystem>
@@ -11,7 +11,7 @@
 #include "engine/io/durable_file.h"
 #include "engine/io/parameter_text.h"
 #include "tools/pyro/commands.h"
-#include "tools/pyro/scene_templates.h"
+#include "tools/authoring/scene_templates.h"
 #include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {

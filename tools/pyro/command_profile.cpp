@@ -2,7 +2,7 @@
 //                    [--trace FILE] [render options]
 //
 // A profiling run (SceneRuntime with RuntimeOptions::profile) of the scene opened as every
-// command opens it (systems/open_scene/open_scene.h: a quality target's pick applied, and
+// command opens it (systems/runtime/open_scene/open_scene.h: a quality target's pick applied, and
 // reported under "quality" in the JSON summary): K warm-up frames (shader
 // compilation, first allocations; not counted), then N frames, every system timed on the CPU
 // and every GL pass on the GPU (timer queries). Prints per system the mean, median, 95th
@@ -18,10 +18,11 @@
 
 #include "engine/core/trace_events.h"
 #include "engine/io/text_file.h"
-#include "systems/open_scene/open_scene.h"
-#include "systems/profiling/profile_report.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/open_scene/open_scene.h"
+#include "tools/bench/bench_text.h"
+#include "tools/bench/profile_report.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/print_note.h"
 #include "tools/pyro/render_options.h"
@@ -44,37 +45,6 @@ struct ProfileArgs {
 };
 
 // The report as tables: systems, GPU passes, particles.
-void print_report(const nlohmann::json& r) {
-  std::printf("%-20s %-10s %9s %9s %9s %9s %9s\n", "system", "phase", "mean ms", "p95 ms",
-              "max ms", "GPU mean", "GPU p95");
-  for (const auto& row : r["systems"]) {
-    std::printf("%-20s %-10s %9.3f %9.3f %9.3f", row["name"].get<std::string>().c_str(),
-                row["phase"].get<std::string>().c_str(), row["mean_ms"].get<double>(),
-                row["p95_ms"].get<double>(), row["max_ms"].get<double>());
-    if (row.contains("gpu_mean_ms"))
-      std::printf(" %9.3f %9.3f\n", row["gpu_mean_ms"].get<double>(), row["gpu_p95_ms"].get<double>());
-    else
-      std::printf(" %9s %9s\n", "-", "-");
-  }
-  std::printf("%-32s %9s %9s %14s\n", "GPU pass", "mean ms", "p95 ms", "fragments");
-  for (const auto& row : r["gpu_passes"]) {
-    std::printf("%-32s %9.3f %9.3f", row["name"].get<std::string>().c_str(),
-                row["mean_ms"].get<double>(), row["p95_ms"].get<double>());
-    if (row.contains("fragments_mean"))
-      std::printf(" %14.0f\n", row["fragments_mean"].get<double>());
-    else
-      std::printf(" %14s\n", "-");
-  }
-  const nlohmann::json& p = r["particles"];
-  std::printf("particles: %llu live of %llu slots; %zu bytes per slot, %.1f bytes of pool per live particle\n",
-              p["live"].get<unsigned long long>(), p["capacity"].get<unsigned long long>(),
-              r["memory"]["bytes_per_particle_slot"].get<size_t>(),
-              r["memory"]["pool_bytes_per_live_particle"].get<double>());
-  for (const auto& s : p["sources"])
-    std::printf("  %-18s %llu live of %llu\n", s["name"].get<std::string>().c_str(),
-                s["live"].get<unsigned long long>(), s["capacity"].get<unsigned long long>());
-}
-
 void run_profile(const ProfileArgs& a) {
   if (!a.trace.empty()) check_trace_path(a.trace, "--trace");
   const SceneDescription scene = load_scene(a.scene);
@@ -105,7 +75,7 @@ void run_profile(const ProfileArgs& a) {
     write_text_file(a.trace, chrome_trace_json(runtime.trace(), "pyro profile " + scene.file));
     summary["trace"] = a.trace;
   }
-  print_report(summary);
+  write_stdout(profile_tables_text(summary));
   if (a.json) write_stdout(summary.dump() + "\n");
 }
 

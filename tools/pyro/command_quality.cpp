@@ -1,7 +1,7 @@
 // pyro quality SCENE [--max-rmse E] [--width W] [--height H] [--no-cache] [--no-verify] [--json]
 //
 // Shows a quality target end to end: picks the cheapest settings meeting the
-// target (systems/quality_picker/quality_picker.h; from the cache when this scene was measured on this
+// target (systems/runtime/quality_picker/quality_picker.h; from the cache when this scene was measured on this
 // machine), then checks the pick on frames the search never saw: its RMSE against the ground
 // truth beside the full-resolution defaults' RMSE, and the time per frame of both, measured in
 // this run, alternating, best of two runs each.
@@ -13,10 +13,10 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/user_error.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/quality_picker/quality_measurement.h"
-#include "systems/quality_picker/quality_picker.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/quality_picker/quality_measurement.h"
+#include "systems/runtime/quality_picker/quality_picker.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/print_note.h"
 #include "tools/pyro/stdout_text.h"

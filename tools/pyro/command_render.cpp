@@ -5,7 +5,7 @@
 // Each frame drawn is read back once and handed to the output sinks the options ask for
 // (systems/output/frame_output.h): PNG or EXR frames in DIR, and a video.
 // DIR has one writer at a time and a manifest keyed on the run's identity (its content:
-// systems/scene_runtime/run_identity.h; engine/io/output_folder.h). Frames are rendered into a
+// systems/runtime/scene_runtime/run_identity.h; engine/io/output_folder.h). Frames are rendered into a
 // temporary folder inside DIR and moved into place only when every frame has been written: a
 // failure (or a refusal) leaves DIR as it was. With --resume, the frames a killed run of the same
 // identity finished, and those DIR already holds, are kept and only the others drawn (still
@@ -29,20 +29,20 @@
 #include "engine/io/output_folder.h"
 #include "engine/io/text_file.h"
 #include "engine/io/video_file.h"
-#include "systems/open_scene/open_scene.h"
+#include "systems/runtime/open_scene/open_scene.h"
 #include "systems/output/frame_output.h"
 #include "systems/output/exr_sink.h"
 #include "systems/output/png_sink.h"
 #include "systems/output/video_sink.h"
-#include "systems/quality_picker/quality_picker.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/frame_range.h"
-#include "systems/scene_runtime/particle_counts.h"
-#include "systems/scene_runtime/run_identity.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/quality_picker/quality_picker.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/frame_range.h"
+#include "systems/runtime/scene_runtime/particle_counts.h"
+#include "systems/runtime/scene_runtime/run_identity.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
-#include "tools/pyro/render_identity.h"
+#include "systems/runtime/scene_runtime/render_identity.h"
 #include "tools/pyro/render_options.h"
 #include "tools/pyro/scene_inputs.h"
 #include "tools/pyro/stdout_text.h"
@@ -234,7 +234,7 @@ void run_render(const RenderArgs& a) {
   options.height_override = a.height;
   options.profile = !a.trace.empty();
   const auto t0 = std::chrono::steady_clock::now();
-  OutputFolder folder(a.out, render_identity_json(scene, options, a.scene, a.depth).dump(), describe_difference, a.folder);
+  OutputFolder folder(a.out, render_identity_json(scene, options, a.scene, a.depth, print_note).dump(), describe_difference, a.folder);
   // A quality target (scene key quality.max_rmse) picks the layer scale, footprint size and time
   // step once for the run, recorded with it before anything is drawn.
   OpenSceneOptions open;

@@ -1,13 +1,13 @@
 // pyro schema [--out FILE]
 //
 // Prints the JSON Schema (draft 2020-12) of scene files, derived from the scene's key tables
-// (systems/scene/scene_keys.h): what editors use for completion and checking when a scene names
+// (systems/runtime/scene/scene_keys.h): what editors use for completion and checking when a scene names
 // it with "$schema" (content/scene.schema.json is this output, checked by a test).
 #include <memory>
 #include <string>
 
 #include "engine/io/text_file.h"
-#include "systems/scene/scene_keys.h"
+#include "systems/runtime/scene/scene_keys.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/stdout_text.h"
 

@@ -5,7 +5,7 @@
 //                 [render options]
 //
 // Parses the options and the scripted edits and presses, then runs the viewer
-// (systems/viewer/viewer.h) and prints its summary.
+// (tools/viewer/viewer.h) and prints its summary.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -17,9 +17,9 @@
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "engine/io/text_file.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/viewer/viewer.h"
-#include "systems/viewer/viewer_keys.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "tools/viewer/viewer.h"
+#include "tools/viewer/viewer_keys.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/render_options.h"
 #include "tools/pyro/stdout_text.h"

@@ -22,7 +22,7 @@ void add_new_command(CLI::App& app);     // command_new.cpp: a starting scene fr
 void add_farm_command(CLI::App& app);
 // Registered under `pyro analyze` by add_analyze_commands.
 void add_billboard_mode_analysis(CLI::App& analyze);
-// `pyro bench vdb`, `pyro bench schedule` (bench_schedule.cpp) and `pyro bench import-scale`, registered by
+// `pyro bench vdb`, `pyro bench schedule` (command_bench_schedule.cpp) and `pyro bench import-scale`, registered by
 // add_bench_commands.
 void add_bench_vdb_command(CLI::App& bench);
 void add_bench_schedule_command(CLI::App& bench);

@@ -1,6 +1,6 @@
 #pragma once
 // pyro import-vdb PATTERN|GLOB|FOLDER --out NAME.pyroseq: an animated OpenVDB sequence imported
-// into one particle sequence (systems/cloud_import/vdb_sequence_import.h), staged beside the
+// into one particle sequence (systems/runtime/cloud_import/vdb_sequence_import.h), staged beside the
 // output and put in its place only when every frame is written (engine/io/folder_replacement.h).
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The runtime's notes (systems/scene_runtime/runtime_options.h: NoteSink) on stderr, one line
+// The runtime's notes (systems/runtime/scene_runtime/runtime_options.h: NoteSink) on stderr, one line
 // each after the program's name.
 #include <cstdio>
 #include <string>

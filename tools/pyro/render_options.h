@@ -12,7 +12,7 @@
 #include "components/render_settings.h"
 #include "components/stereo_camera.h"
 #include "engine/core/enum_names.h"
-#include "systems/scene_runtime/runtime_options.h"
+#include "systems/runtime/scene_runtime/runtime_options.h"
 #include "tools/pyro/print_note.h"
 
 namespace pyro::cli {

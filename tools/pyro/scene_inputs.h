@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "engine/core/same_file.h"
-#include "systems/scene/scene_description.h"
+#include "systems/runtime/scene/scene_description.h"
 
 namespace pyro::cli {
 

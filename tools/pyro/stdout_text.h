@@ -5,6 +5,7 @@
 // what CLI11 prints itself (--help, --version).
 #include <cerrno>
 #include <cstdio>
+#include <string>
 #include <string_view>
 
 #include "engine/io/io_error.h"
@@ -16,6 +17,18 @@ inline void write_stdout(std::string_view text) {
   const size_t written = std::fwrite(text.data(), 1, text.size(), stdout);
   if (written != text.size() || std::fflush(stdout) != 0)
     throw IoError("standard output", "write the result", errno != 0 ? errno : EIO);
+}
+
+// A result as one JSON line (--json) or as its text for people.
+template <class Json>
+void write_result(const Json& json_result, const std::string& text, bool json) {
+  write_stdout(json ? json_result.dump() + "\n" : text);
+}
+
+// A report of the tools (a `json` object and its `text`), as above.
+template <class Report>
+void write_result(const Report& report, bool json) {
+  write_result(report.json, report.text, json);
 }
 
 }  // namespace pyro::cli

@@ -1,7 +1,7 @@
 // The vocabulary: every enum <-> name table round-trips (each value has exactly one name and
 // each name one value), and the helpers list the names in the table's order. The tables
 // themselves live beside their enums; the scene loader and the command line read them
-// (tests/systems/scene/scene_vocabulary_test.cpp checks the messages a bad name gets).
+// (tests/systems/runtime/scene/scene_vocabulary_test.cpp checks the messages a bad name gets).
 #include <gtest/gtest.h>
 
 #include <set>

@@ -8,7 +8,7 @@
 #include "engine/gpu/gpu_pass_timer.h"
 #include "engine/gpu/render_target.h"
 #include "engine/gpu/shader_program.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

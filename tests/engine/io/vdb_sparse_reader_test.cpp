@@ -11,7 +11,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/io/vdb_resampled_volume.h"
-#include "systems/reference/grid_sampling.h"
+#include "systems/runtime/reference/grid_sampling.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

@@ -1,7 +1,7 @@
 // Particle sets of different kinds in one scene (components/particle_kind.h): a Gaussian cloud
 // and a spherical one interleaved in depth, drawn in one back-to-front order, against the CPU
 // reference that integrates both kinds exactly along each ray
-// (systems/reference/particle_sets_reference.h); and a set's own kind overriding the scene-wide
+// (systems/runtime/reference/particle_sets_reference.h); and a set's own kind overriding the scene-wide
 // one, which leaves every other set's pixels as they were.
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 #include "components/particle_kind.h"
 #include "components/particle_set.h"
 #include "engine/math/camera_math.h"
-#include "systems/reference/particle_sets_reference.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/reference/particle_sets_reference.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

@@ -12,8 +12,8 @@
 #include "components/draw_list.h"
 #include "components/view.h"
 #include "systems/billboard_render/billboard_renderer.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/splat_drawing.h"
 #include "tests/support/test_paths.h"
 

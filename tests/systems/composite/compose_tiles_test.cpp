@@ -16,10 +16,10 @@
 #include "components/explosion_shading.h"
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "systems/composite/compose_tiles.h"
 #include "systems/composite/compositor.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

@@ -25,8 +25,8 @@
 #include "engine/math/image_error.h"
 #include "systems/composite/compositor.h"
 #include "systems/composite/opaque_view_readback.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

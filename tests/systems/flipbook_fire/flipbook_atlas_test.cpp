@@ -21,10 +21,10 @@
 #include "systems/flipbook_fire/flipbook_folder.h"
 #include "systems/flipbook_fire/flipbook_motion_blend.h"
 #include "systems/flipbook_fire/particle_motion_splat.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "components/gpu_frame.h"
-#include "systems/scene_runtime/flipbook_bake.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

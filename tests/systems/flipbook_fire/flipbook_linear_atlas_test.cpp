@@ -16,8 +16,8 @@
 #include "systems/flipbook_fire/flipbook_atlas_sidecar.h"
 #include "systems/flipbook_fire/flipbook_frame_fade.h"
 #include "systems/flipbook_fire/flipbook_motion.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/flipbook_bake.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

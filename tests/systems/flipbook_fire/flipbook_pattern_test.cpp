@@ -7,7 +7,7 @@
 
 #include "systems/flipbook_fire/flipbook_layout.h"
 #include "systems/flipbook_fire/flipbook_pattern.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

@@ -15,11 +15,11 @@
 #include "components/gpu_frame.h"
 #include "components/view.h"
 #include "engine/io/png_file.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "engine/math/color.h"
 #include "engine/math/stereo_projection.h"
 #include "systems/flipbook_fire/flipbook_geometry.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

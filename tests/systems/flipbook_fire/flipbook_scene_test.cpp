@@ -8,7 +8,7 @@
 
 #include "engine/core/user_error.h"
 #include "systems/flipbook_fire/flipbook_folder.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 #include "engine/math/color.h"
 #include "tests/support/json_output.h"
 #include "tests/support/test_paths.h"

@@ -1,6 +1,6 @@
 // Six-way flipbooks drawn by the engine: a bake folder (six_way.json, six_way_a/, six_way_b/)
 // read as lightmaps, faded in alpha alone, and relit on the GPU under the scene's light, checked
-// against the CPU blend (systems/six_way_lighting/six_way_basis.h) and the premultiplied over
+// against the CPU blend (systems/flipbook_fire/six_way_basis.h) and the premultiplied over
 // blend, for the six axes and the eight directions between them.
 #include <gtest/gtest.h>
 
@@ -15,9 +15,9 @@
 #include "engine/io/png_file.h"
 #include "systems/flipbook_fire/flipbook_emission.h"
 #include "systems/flipbook_fire/flipbook_folder.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
-#include "systems/six_way_lighting/six_way_basis.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
+#include "systems/flipbook_fire/six_way_basis.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

@@ -14,7 +14,7 @@
 
 #include "engine/math/camera_math.h"
 #include "engine/math/view_frustum.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "systems/sorting/depth_sort.h"
 
 namespace pyro {

@@ -15,8 +15,8 @@
 #include "engine/core/content_path.h"
 #include "engine/math/sphere_line_integral.h"
 #include "systems/lighting/fire_lights.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

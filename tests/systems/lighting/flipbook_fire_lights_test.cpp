@@ -16,8 +16,8 @@
 #include "systems/flipbook_fire/flipbook_emission.h"
 #include "systems/flipbook_fire/flipbook_layout.h"
 #include "systems/lighting/flipbook_fire_lights.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

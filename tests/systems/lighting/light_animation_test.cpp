@@ -11,7 +11,7 @@
 #include "components/frame_clock.h"
 #include "engine/ecs/world.h"
 #include "systems/lighting/light_animation.h"
-#include "systems/scene/scene_loader.h"
+#include "systems/runtime/scene/scene_loader.h"
 
 namespace pyro {
 namespace {

@@ -9,7 +9,7 @@
 #include "components/frame_image.h"
 #include "components/mesh_instance.h"
 #include "systems/mesh_render/mesh_renderer.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

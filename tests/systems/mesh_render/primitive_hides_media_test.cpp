@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "components/frame_image.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
 namespace {

@@ -6,8 +6,8 @@
 #include <limits>
 
 #include "engine/core/user_error.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/resolve_scene.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/resolve_scene.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

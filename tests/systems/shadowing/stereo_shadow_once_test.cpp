@@ -9,8 +9,8 @@
 #include "components/particle_light.h"
 #include "components/shadow_volume.h"
 #include "components/view.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

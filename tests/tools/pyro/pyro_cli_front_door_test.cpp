@@ -1,4 +1,4 @@
-// Every command opens a scene through the one front door (systems/open_scene/open_scene.h): a
+// Every command opens a scene through the one front door (systems/runtime/open_scene/open_scene.h): a
 // scene with a quality target (content/scenes/fog_quality.json, small) runs under `pyro profile`
 // and `pyro view` (its first load and a hot reload) with the settings `pyro render` picked. The
 // pick is measured once, by the render, into a scratch cache; the others read it from there.

@@ -1,4 +1,4 @@
-// A render's output folder is keyed on the run's content (systems/scene_runtime/run_identity.h):
+// A render's output folder is keyed on the run's content (systems/runtime/scene_runtime/run_identity.h):
 // an edited scene or asset is drawn again on --resume and counted, a folder holding another run
 // is refused naming what differs, --overwrite removes only that run's files, a reformatted scene
 // is the same run, and scenes read from pipes get the identity of what they say.

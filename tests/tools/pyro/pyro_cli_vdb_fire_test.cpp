@@ -21,9 +21,9 @@
 #include "engine/math/blackbody.h"
 #include "engine/math/temperature_emission.h"
 #include "engine/volume/procedural_fire.h"
-#include "systems/reference/world_snapshot.h"
-#include "systems/scene/scene_loader.h"
-#include "systems/scene_runtime/scene_runtime.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/json_output.h"
 #include "tests/support/test_paths.h"
 

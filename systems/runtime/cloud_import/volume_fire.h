@@ -1,0 +1,34 @@
+#pragma once
+// A scene volume's fire: its particles' temperatures (gaussian_temperature.h) made into emitted
+// radiance with the entry's `emission` (docs/scene_format.md, volumes[].emission): the map from
+// grid values to kelvin (the scene's, else the one the import recorded, else the automatic one,
+// engine/math/temperature_emission.h) and the intensity of the hottest.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/math/temperature_emission.h"
+#include "engine/particles/anisotropic_gaussian.h"
+#include "engine/particles/gaussian_particle.h"
+#include "systems/runtime/scene/scene_description.h"
+
+namespace pyro {
+
+// `recorded`: the particle file's map (engine/io/particle_file.h, recorded_temperature), if any;
+// `hottest_value`: the largest temperature value of the grid the particles came from.
+TemperatureEmission volume_temperature_emission(const VolumeEmissionDescription& description,
+                                                const std::optional<TemperatureMapping>& recorded,
+                                                double hottest_value);
+
+// One line for the run's notes: the grid, how values become kelvin (and who decided), the
+// hottest temperature and the intensity.
+std::string describe_volume_emission(const std::string& grid, const VolumeEmissionDescription& description,
+                                     bool recorded, const TemperatureEmission& emission);
+
+// Each isotropic particle's colour gains its emission (an unlit splat's premultiplied colour is
+// (colour + L_e) rho f: emission weighted like the particle's own opacity). Returns whether any
+// particle emits.
+bool add_emission_to_colours(std::vector<GaussianParticle>& particles, const std::vector<float>& temperatures,
+                             const TemperatureEmission& emission);
+
+}  // namespace pyro

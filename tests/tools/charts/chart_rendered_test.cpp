@@ -1,0 +1,115 @@
+// The charts that render (layer-resolution, billboard-modes, particle-budget), at tiny sizes:
+// invariants of their data, not their values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "engine/core/content_path.h"
+#include "tools/charts/charts.h"
+
+namespace pyro {
+namespace {
+
+TEST(ChartLayerResolution, ErrorIsZeroAtFullResolutionAndGrowsAsLayersShrink) {
+  LayerResolutionChartOptions o;
+  o.width = o.height = 64;
+  o.frames = 4;
+  o.error_frames = 2;
+  const ChartTable t = chart_layer_resolution(o);
+  ASSERT_EQ(t.rows.size(), 16u);  // 2 views x 2 methods x 4 scales
+  for (size_t m = 0; m < 4; ++m) {
+    const auto* rows = &t.rows[4 * m];
+    EXPECT_EQ(rows[0].extra[0], 1.0);
+    EXPECT_EQ(rows[0].error, 0.0) << rows[0].label;  // its own ground truth
+    EXPECT_GT(rows[1].error, 0.0) << rows[1].label;
+    EXPECT_GT(rows[3].error, rows[1].error) << rows[3].label;  // 1/8 worse than 1/2
+    for (int s = 0; s < 4; ++s) EXPECT_GT(rows[s].time, 0.0);
+    // edge_error and halo (extra columns 3 and 4): none against its own ground truth.
+    EXPECT_EQ(rows[0].extra[3], 0.0) << rows[0].label;
+    EXPECT_EQ(rows[0].extra[4], 0.0) << rows[0].label;
+    EXPECT_GT(rows[3].extra[3], 0.0) << rows[3].label;
+  }
+  EXPECT_EQ(t.rows[0].group, "depth-aware (explosion)");
+  EXPECT_EQ(t.rows[4].group, "bilinear (explosion)");
+  EXPECT_EQ(t.rows[8].group, "depth-aware (explosion_behind_tower)");
+  // One Pareto front per view.
+  EXPECT_EQ(t.rows[0].front, "explosion");
+  EXPECT_EQ(t.rows[15].front, "explosion_behind_tower");
+}
+
+TEST(ChartBillboardModes, ThreeModesPerSceneWithinTheAccuracyBar) {
+  BillboardModesChartOptions o;
+  o.scenes = {content_path("scenes/fog.json")};
+  o.width = 64;
+  o.height = 48;
+  o.frames = 1;
+  const ChartTable t = chart_billboard_modes(o);
+  ASSERT_EQ(t.rows.size(), 3u);
+  EXPECT_EQ(t.rows[0].group, "viewplane");
+  EXPECT_EQ(t.rows[1].group, "viewpoint");
+  EXPECT_EQ(t.rows[2].group, "spherical");
+  for (const auto& r : t.rows) {
+    EXPECT_GT(r.extra[0], 100.0) << r.label;  // the fog's particles reached the reference
+    EXPECT_GT(r.error, 0.0) << r.label;
+    EXPECT_LT(r.error, 0.03) << r.label;  // the project's image accuracy bar
+  }
+}
+
+TEST(ChartShadows, EverySettingAgainstTheReferenceWithShadowsHelp) {
+  ShadowsChartOptions o;
+  o.scenes = {content_path("scenes/clouds.json")};
+  o.map_sizes = {8, 64};
+  o.width = 64;
+  o.height = 48;
+  o.frames = 1;
+  const ChartTable t = chart_shadows(o);
+  ASSERT_EQ(t.rows.size(), 4u);  // none, rays, two maps
+  EXPECT_EQ(t.rows[0].group, "none");
+  EXPECT_EQ(t.rows[1].group, "rays");
+  EXPECT_EQ(t.rows[3].label, "clouds map 64x32");
+  for (const auto& r : t.rows) {
+    EXPECT_EQ(r.extra[1], 1500.0) << r.label;  // the clouds' particles
+    EXPECT_GT(r.time, 0.0) << r.label;
+  }
+  // Shadows bring the frame closer to the reference; the finer map closer than the coarse one.
+  EXPECT_LT(t.rows[1].error, t.rows[0].error);
+  EXPECT_LT(t.rows[3].error, t.rows[2].error);
+  EXPECT_LT(t.rows[3].error, 0.03);  // the project's image accuracy bar
+  EXPECT_GT(t.rows[1].extra[0], t.rows[0].extra[0]);  // rays cost the light phase more than none
+}
+
+TEST(ChartScattering, OctavesComeCloserToThePathTracedTruthThanOne) {
+  ScatteringChartOptions o;
+  o.octaves = {1, 4};
+  o.width = 48;
+  o.height = 48;
+  o.samples = 128;
+  o.frames = 1;
+  const ChartTable t = chart_scattering(o);
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[0].group, "single scattering");
+  EXPECT_EQ(t.rows[1].label, "4 octaves");
+  const double noise = t.summary["monte_carlo_error"].get<double>();
+  EXPECT_LT(t.rows[1].error + 2.0 * noise, t.rows[0].error);
+  for (const auto& r : t.rows) EXPECT_GT(r.time, 0.0) << r.label;
+  EXPECT_TRUE(t.rows[1].pareto);
+}
+
+TEST(ChartParticleBudget, LooserTargetsKeepFewerParticlesAndCostError) {
+  ParticleBudgetChartOptions o;
+  o.files = {content_path("volumes/sample_cloud.vdb")};
+  o.error_targets = {0.02, 0.12};
+  o.width = o.height = 48;
+  o.repeats = 1;
+  const ChartTable t = chart_particle_budget(o);
+  ASSERT_EQ(t.rows.size(), 2u);
+  // Columns: error_target, particles, active_voxels, import_ms.
+  EXPECT_GT(t.rows[0].extra[1], 2.0 * t.rows[1].extra[1]);
+  EXPECT_LT(t.rows[0].extra[1], t.rows[0].extra[2]);  // fewer particles than voxels
+  EXPECT_LT(t.rows[0].error, t.rows[1].error);
+  EXPECT_LT(t.rows[0].error, 0.03);
+}
+
+}  // namespace
+}  // namespace pyro

@@ -1,0 +1,114 @@
+// pyro chart shadows: the light phase's shadow methods (systems/shadowing) on lit scenes, each
+// frame against the CPU reference with exact shadows (systems/runtime/reference/lit_particle_reference.h).
+#include <filesystem>
+#include <string>
+
+#include "components/anisotropic_cloud.h"
+#include "components/frame_image.h"
+#include "engine/core/content_path.h"
+#include "tools/bench/frame_timing.h"
+#include "tools/charts/charts.h"
+#include "systems/runtime/quality_picker/quality_measurement.h"
+#include "systems/runtime/reference/world_snapshot.h"
+#include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
+
+namespace pyro {
+
+namespace {
+
+// The settings charted: lit without shadows, the exact rays, and the map at each size (slices
+// half its texels across).
+std::vector<ShadowSettings> shadow_candidates(const std::vector<int>& map_sizes) {
+  std::vector<ShadowSettings> out;
+  ShadowSettings s;
+  s.method = ShadowMethod::none;
+  out.push_back(s);
+  s.method = ShadowMethod::rays;
+  out.push_back(s);
+  for (int size : map_sizes) {
+    s.method = ShadowMethod::shadow_map;
+    s.map_size = size;
+    s.map_slices = std::max(4, size / 2);
+    out.push_back(s);
+  }
+  return out;
+}
+
+std::string setting_name(const ShadowSettings& s) {
+  if (s.method != ShadowMethod::shadow_map) return std::string(name_of(s.method));
+  return "map " + std::to_string(s.map_size) + "x" + std::to_string(s.map_slices);
+}
+
+// Milliseconds a frame of the light phase's shadow systems, the mean over `frames` frames.
+double shadow_ms_per_frame(const SceneDescription& scene, const RuntimeOptions& options, int frames) {
+  // behind the front door: times the shadow setting the chart sets
+  SceneRuntime runtime(scene, options);
+  for (int f = 0; f < frames; ++f) runtime.draw_frame(f);
+  double ms = 0.0;
+  for (const ecs::SystemStats& s : runtime.schedule().stats())
+    if (s.name == "shadow_map" || s.name == "shadow_rays") ms += s.total_ms;
+  return ms / frames;
+}
+
+// The world's Gaussians, isotropic and anisotropic.
+std::size_t particle_count(ecs::World& world) {
+  std::size_t n = gather_particles(world).size();
+  world.each<const AnisotropicCloud>([&](const AnisotropicCloud& c) { n += c.particles.size(); });
+  return n;
+}
+
+}  // namespace
+
+ChartTable chart_shadows(const ShadowsChartOptions& o) {
+  std::vector<std::string> scenes = o.scenes;
+  if (scenes.empty())
+    for (const char* s : {"scenes/clouds.json", "scenes/fog.json", "scenes/cloud_fitted.json"})
+      scenes.push_back(content_path(s));
+  ChartTable t;
+  t.name = "shadows";
+  t.title = "Shadow methods against the reference with exact shadows (" + std::to_string(o.width) +
+            "x" + std::to_string(o.height) + ")";
+  t.x_label = "ms per frame (mono)";
+  t.y_label = "RMSE (linear RGB) against the CPU reference with exact shadows";
+  t.ground_truth =
+      "single scattering of the sun with its transmittance exact at every point of every ray "
+      "(systems/runtime/reference/lit_particle_reference.h), over the GL opaque scene whose sunlight keeps "
+      "exp(-tau) of the exact optical depth";
+  t.notes = {"none: lit by the sun without shadows; rays: exact transmittance at each particle "
+             "(engine/math/shadow_ray_index.h); map SxK: opacity shadow map of S texels across and K "
+             "slices (Kim & Neumann 2001), which the ground reads under every method",
+             "shadow_ms: the light phase's shadow systems alone, per frame"};
+  t.extra_columns = {"shadow_ms", "particles"};
+  for (const std::string& file : scenes) {
+    SceneDescription scene = load_scene(file);
+    const std::string stem = std::filesystem::path(file).stem().string();
+    // The scene's own lobe and octaves (if lit as shipped), under every method.
+    const ShadowSettings shipped = scene.shadows.value_or(ShadowSettings{});
+    scene.shadows = shipped;
+    const RgbImage reference = particle_scene_references(scene, o.width, o.height, {0}).at(0);
+    for (ShadowSettings s : shadow_candidates(o.map_sizes)) {
+      s.scattering = shipped.scattering;
+      scene.shadows = s;
+      RuntimeOptions ro;
+      ro.width_override = o.width;
+      ro.height_override = o.height;
+      ChartTable::Row row;
+      row.label = stem + " " + setting_name(s);
+      row.front = stem;
+      row.group = std::string(name_of(s.method));
+      row.time = median_ms_per_frame(scene, ro, o.frames);
+      ro.readback = true;
+      // behind the front door: images the shadow setting the chart sets
+      SceneRuntime imaged(scene, ro);
+      imaged.draw_frame(0);
+      row.error = image_rmse(rgb_of(imaged.image()), reference);
+      row.extra = {shadow_ms_per_frame(scene, ro, o.frames), double(particle_count(imaged.world()))};
+      t.rows.push_back(row);
+    }
+  }
+  mark_pareto_front(t);
+  return t;
+}
+
+}  // namespace pyro
