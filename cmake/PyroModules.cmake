@@ -111,6 +111,16 @@ function(_pyro_create_module name)
   set(target pyro_${name})
   if(sources)
     add_library(${target} STATIC ${sources})
+    # Compiled as unity units: most of a source's compile time is parsing the headers it shares
+    # with its neighbours (the standard library, glm, nlohmann/json), which a unit parses once.
+    # tools/check_unity_names.py refuses two sources of one module that define one file-scope name.
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 16)
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+      # In a unit a source is an included file, so g++ takes a class of one source that holds a
+      # type of its anonymous namespace for a header's (-Wsubobject-linkage); each source is still
+      # its own namespace's only user.
+      target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
+    endif()
     set(public PUBLIC)
     set(private PRIVATE)
   else()

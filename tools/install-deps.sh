@@ -3,7 +3,7 @@
 # already present are skipped, and apt is asked only when something is missing.
 set -euo pipefail
 packages=(
-  build-essential cmake pkg-config git
+  build-essential cmake ninja-build pkg-config git
   libgtest-dev libgmock-dev libbenchmark-dev
   libglm-dev libepoxy-dev libegl-dev libegl1 libgl1-mesa-dri libegl-mesa0
   nlohmann-json3-dev libcli11-dev libstb-dev

@@ -67,7 +67,7 @@ struct ManifestReader {
   }
 };
 
-json read_json(const std::string& file) {
+json read_manifest_json(const std::string& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw UserError(file, "", "a readable particle sequence manifest, found none");
   std::stringstream text;
@@ -145,7 +145,7 @@ void write_particle_sequence_manifest(const std::filesystem::path& folder, const
 ParticleSequence read_particle_sequence(const std::string& folder) {
   const std::filesystem::path dir(folder);
   const ManifestReader r{(dir / kParticleSequenceManifest).string()};
-  const json m = read_json(r.file);
+  const json m = read_manifest_json(r.file);
   if (!m.is_object()) r.fail("", "a JSON object, found " + m.dump());
   if (r.string(m, "", "format") != kParticleSequenceFormat)
     r.fail("/format", std::string("\"") + kParticleSequenceFormat + "\", found " + m["format"].dump());

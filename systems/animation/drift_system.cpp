@@ -18,7 +18,7 @@ namespace pyro {
 
 namespace {
 // Particles per task when drifting is split across threads.
-constexpr size_t kParticlesPerTask = 16384;
+constexpr size_t kDriftParticlesPerTask = 16384;
 
 inline float wrap(float v, float lo, float extent) {
   // Periodic wrap into [lo, lo + extent).
@@ -32,7 +32,7 @@ void drift_particles(const CloudVolume& c, ParticleSet& set, float dt) {
   ParticlePool& p = set.pool;
   const glm::vec3 extent = c.box_max - c.box_min;
   // Each particle moves alone, so the chunks may run on any threads with the same result.
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.size(), kParticlesPerTask),
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, p.size(), kDriftParticlesPerTask),
                     [&](const tbb::blocked_range<size_t>& r) {
     // The arrays are distinct buffers; ivdep lets g++ vectorise (see particle_pool.h).
 #pragma GCC ivdep

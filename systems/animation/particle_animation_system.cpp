@@ -133,14 +133,14 @@ void advance_particles(ParticlePool& p, const ParticleDynamics& d, const Simulat
 
 // Particles per task when a set's update is split across threads: a step costs roughly a
 // curl-noise evaluation per particle, so smaller sets run in one piece.
-constexpr std::size_t kParticlesPerTask = 512;
+constexpr std::size_t kAnimatedParticlesPerTask = 512;
 
 }  // namespace
 
 std::size_t animate_particles(ParticlePool& p, const ParticleDynamics& d,
                               const SimulationEnvironment& env, float dt, double time) {
   const StepFactors f = step_factors(d, env, dt, time);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), kParticlesPerTask),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.size(), kAnimatedParticlesPerTask),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       advance_particles(p, d, env, f, dt, r.begin(), r.end());
                     });

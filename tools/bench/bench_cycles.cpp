@@ -66,7 +66,7 @@ std::string num(double v) {
   return buf;
 }
 
-std::string vec(const glm::dvec3& v) {
+std::string spaced_vector(const glm::dvec3& v) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g", v.x, v.y, v.z);
   return buf;
@@ -119,12 +119,12 @@ CyclesRender render_with_cycles(const CyclesBenchOptions& o, const std::string& 
       {"--extinction", num(medium.extinction)},
       {"--albedo", num(medium.albedo)},
       {"--anisotropy", num(o.anisotropy)},
-      {"--sun-direction", vec(medium.light_direction)},
-      {"--light-color", vec(medium.light_color)},
-      {"--background", vec(medium.background)},
-      {"--camera-position", vec(glm::dvec3(cam.position))},
-      {"--camera-target", vec(glm::dvec3(cam.target))},
-      {"--camera-up", vec(glm::dvec3(cam.up))},
+      {"--sun-direction", spaced_vector(medium.light_direction)},
+      {"--light-color", spaced_vector(medium.light_color)},
+      {"--background", spaced_vector(medium.background)},
+      {"--camera-position", spaced_vector(glm::dvec3(cam.position))},
+      {"--camera-target", spaced_vector(glm::dvec3(cam.target))},
+      {"--camera-up", spaced_vector(glm::dvec3(cam.up))},
       {"--fov-y", num(cam.fov_y_deg)},
       {"--width", std::to_string(o.width)},
       {"--height", std::to_string(o.height)},
@@ -150,7 +150,7 @@ CyclesRender render_with_cycles(const CyclesBenchOptions& o, const std::string& 
   return r;
 }
 
-nlohmann::json score_direction(const CyclesBenchOptions& o, const DenseGrid& grid, const std::string& leaf,
+nlohmann::json score_cycles_direction(const CyclesBenchOptions& o, const DenseGrid& grid, const std::string& leaf,
                                const VolumeMedium& medium, const fs::path& scratch) {
   const CameraDescription cam = framing_camera(grid);
   PathTraceOptions trace;
@@ -204,7 +204,7 @@ nlohmann::json bench_cycles(const CyclesBenchOptions& o) {
     for (int k = 0; k < o.directions; ++k) {
       progress.stage(done++, fs::path(file).filename().string() + ", direction " + std::to_string(k + 1));
       medium.light_direction = sun_direction(k, o.directions);
-      directions.push_back(score_direction(o, grid, leaf, medium, scratch.path));
+      directions.push_back(score_cycles_direction(o, grid, leaf, medium, scratch.path));
       if (!directions.back()["rmse_vs_cycles"].is_null())
         worst = std::max(worst.value_or(0.0), directions.back()["rmse_vs_cycles"].get<double>());
     }

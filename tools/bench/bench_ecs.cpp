@@ -35,7 +35,7 @@ double time_ns(F&& f) {
   return std::chrono::duration<double, std::nano>(t1 - t0).count();
 }
 
-double median(std::vector<double> v) {
+double mean_of_middles(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t m = v.size() / 2;
   return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
@@ -154,10 +154,10 @@ nlohmann::json checked_access_costs(std::size_t n, int repeats, float dt) {
     t_lookup.push_back(d), t_lookup_checked.push_back(e);
   }
   const double per = 1.0 / double(n);
-  const double plain_ns = median(t_plain) * per;
-  const double each_ns = median(t_each) * per, each_checked_ns = median(t_each_checked) * per;
-  const double lookup_ns = median(t_lookup) * per;
-  const double lookup_checked_ns = median(t_lookup_checked) * per;
+  const double plain_ns = mean_of_middles(t_plain) * per;
+  const double each_ns = mean_of_middles(t_each) * per, each_checked_ns = mean_of_middles(t_each_checked) * per;
+  const double lookup_ns = mean_of_middles(t_lookup) * per;
+  const double lookup_checked_ns = mean_of_middles(t_lookup_checked) * per;
   return {
       {"ns_per_entity_checked", each_checked_ns},
       {"ecs_checked_ratio", each_checked_ns / plain_ns},
@@ -245,9 +245,9 @@ nlohmann::json bench_ecs(std::size_t n, int repeats, ProgressSink* progress_sink
   for (std::size_t i = 0; i < n; ++i) sum_pool += double(pool.px[i]) + pool.py[i] + pool.pz[i];
 
   const double per = 1.0 / double(n);
-  const double ecs_ns = median(t_ecs) * per;
-  const double pool_ns = median(t_pool) * per;
-  const double plain_ns = median(t_plain) * per;
+  const double ecs_ns = mean_of_middles(t_ecs) * per;
+  const double pool_ns = mean_of_middles(t_pool) * per;
+  const double plain_ns = mean_of_middles(t_plain) * per;
   nlohmann::json result = {
       {"entities", n},
       {"repeats", repeats},

@@ -49,7 +49,7 @@ void choose_methods(SceneRuntime& runtime, bool depth_aware, bool tiles, bool sp
 }
 
 // `progress` (may be null) advances by one per timed frame, from `done`.
-FrameTiming time_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames,
+FrameTiming time_layer_frames(const SceneDescription& scene, const RuntimeOptions& options, int frames,
                         nlohmann::json* system_ms, bool depth_aware = true, bool tiles = true,
                         bool sprites = true, ProgressTask* progress = nullptr, size_t done = 0) {
   // behind the front door: times the layer scale and methods its caller sets
@@ -95,7 +95,7 @@ nlohmann::json bench_layers(const LayersBenchOptions& o) {
     timed.sync_timing = o.sync_timing;
     nlohmann::json system_ms = nlohmann::json::object();
     progress.stage(done, "scale " + std::to_string(scale).substr(0, 5) + ", timing");
-    const FrameTiming timing = time_frames(scene, timed, o.frames, &system_ms, depth_aware(o),
+    const FrameTiming timing = time_layer_frames(scene, timed, o.frames, &system_ms, depth_aware(o),
                                            tiles(o), sprites(o), &progress, done);
     const double fps = timing.fps;
     done += size_t(o.frames);
@@ -193,7 +193,7 @@ nlohmann::json bench_table1(const Table1BenchOptions& o) {
       const std::string shape_name(name_of(shape));
       progress.stage(done, std::to_string(counts[i]) + " particles, " + shape_name);
       row[shape_name + "_fps"] =
-          time_frames(s, ro, o.frames, nullptr, true, true, true, &progress, done).fps;
+          time_layer_frames(s, ro, o.frames, nullptr, true, true, true, &progress, done).fps;
       done += size_t(o.frames);
       row["live_particles"] = live;
     }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "components/volume_medium.h"
+#include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
 #include "engine/io/png_file.h"
 #include "engine/io/vdb_reader.h"
@@ -20,10 +21,6 @@
 namespace pyro {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 void write_frame(const std::string& folder, const std::string& name, const RgbImage& img) {
   std::vector<float> rgba(size_t(4) * img.width * img.height, 1.0f);
@@ -66,7 +63,7 @@ RgbImage engine_frame(SceneRuntime& runtime, const glm::dvec3& sun, int frame) {
 }
 
 // One sun direction: the truth, the two ray marches and the engine's two frames, scored.
-nlohmann::json score_direction(const DenseGrid& grid, const VolumeMedium& medium, const CameraFrame& camera,
+nlohmann::json score_scattering_direction(const DenseGrid& grid, const VolumeMedium& medium, const CameraFrame& camera,
                                const MultipleScatteringBenchOptions& o, EngineFrames& engine, int k) {
   SunScattering single = o.sun;
   single.octaves.octaves = 1;
@@ -128,7 +125,7 @@ nlohmann::json bench_multiple_scattering(const MultipleScatteringBenchOptions& o
   for (int k = 0; k < o.directions; ++k) {
     progress.stage(1 + size_t(k), "direction " + std::to_string(k + 1) + " of " + std::to_string(o.directions));
     medium.light_direction = sun_direction(k, o.directions);
-    nlohmann::json j = score_direction(grid, medium, camera, o, engine, k);
+    nlohmann::json j = score_scattering_direction(grid, medium, camera, o, engine, k);
     worst_single = std::max(worst_single, j["single_scattering_rmse"].get<double>());
     worst_octaves = std::max(worst_octaves, j["octaves_rmse"].get<double>());
     closer = closer && j["octaves_rmse"].get<double>() < j["single_scattering_rmse"].get<double>();

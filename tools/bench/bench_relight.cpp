@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
 #include "engine/io/vdb_reader.h"
 #include "tools/bench/fitted_import.h"
@@ -21,10 +22,6 @@
 namespace pyro {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // The grid's particles, imported once: the octree's isotropic ones, or the fitted anisotropic ones
 // (`baked`: as imported, lit for the default sun; `fitted`: the same with the albedo for colour).
@@ -60,7 +57,7 @@ SceneRuntime relight_runtime(const RelightParticles& particles, const VolumeMedi
 
 // Seconds for frames [first, first + count) (the GPU finished each), the sun turning every frame
 // when `turn`.
-double time_frames(SceneRuntime& runtime, int first, int count, int directions, bool turn) {
+double time_relit_frames(SceneRuntime& runtime, int first, int count, int directions, bool turn) {
   const auto t = std::chrono::steady_clock::now();
   for (int f = first; f < first + count; ++f) {
     if (turn) set_sun(runtime, sun_direction(f % directions, directions));
@@ -84,8 +81,8 @@ FrameRates alternating_frame_rates(SceneRuntime& lit, SceneRuntime& unlit, int f
   double lit_seconds = 0.0, unlit_seconds = 0.0;
   for (int first = 1; first <= frames; first += 4) {
     const int count = std::min(4, frames + 1 - first);
-    lit_seconds += time_frames(lit, first, count, directions, true);
-    unlit_seconds += time_frames(unlit, first, count, directions, false);
+    lit_seconds += time_relit_frames(lit, first, count, directions, true);
+    unlit_seconds += time_relit_frames(unlit, first, count, directions, false);
   }
   return {frames / lit_seconds, frames / unlit_seconds};
 }

@@ -18,7 +18,7 @@ namespace pyro {
 
 namespace {
 
-double median(std::vector<double> v) {
+double upper_median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
@@ -83,8 +83,8 @@ nlohmann::json bench_render(const RenderBenchOptions& o) {
   }
   progress.finish();
 
-  const double frame_med = median(frame_ms);
-  const double kernel_med = median(kernel_ms), trivial_med = median(trivial_ms);
+  const double frame_med = upper_median(frame_ms);
+  const double kernel_med = upper_median(kernel_ms), trivial_med = upper_median(trivial_ms);
   const double fragments = static_cast<double>(kernel_fragments);
   return {{"scene", scene.file},
           {"width", target.width()},

@@ -13,7 +13,7 @@ namespace pyro {
 
 namespace {
 
-double median(std::vector<double> v) {
+double upper_middle(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
 }
@@ -73,8 +73,8 @@ nlohmann::json bench_schedule(const ScheduleBenchArgs& a, const NoteSink& note,
     progress.update(size_t(f) + 1);
   }
   progress.finish();
-  const double par_ms = median(par.frame_ms), seq_ms = median(seq.frame_ms);
-  const double par_cpu = median(par.cpu_ms), seq_cpu = median(seq.cpu_ms);
+  const double par_ms = upper_middle(par.frame_ms), seq_ms = upper_middle(seq.frame_ms);
+  const double par_cpu = upper_middle(par.cpu_ms), seq_cpu = upper_middle(seq.cpu_ms);
   return {{"scene", a.scene},
           {"frames", a.frames},
           {"threads", parallel.schedule().effective_threads()},

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
 #include "tools/bench/fitted_import.h"
 #include "systems/runtime/cloud_import/cloud_import.h"
@@ -24,11 +25,7 @@ namespace pyro {
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-std::string vec(const glm::dvec3& v) {
+std::string comma_vector(const glm::dvec3& v) {
   char buf[128];
   std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g", v.x, v.y, v.z);
   return buf;
@@ -47,10 +44,10 @@ std::string vdb_render_command(const VdbBenchOptions& a, const DenseGrid& grid,
   if (!a.grid.empty()) grid_option = " -name '" + a.grid + "'";
   return a.vdb_render + " '" + a.file + "' '" + image + "'" + grid_option + " -res " +
          std::to_string(a.width) + "x" + std::to_string(a.height) + " -translate " +
-         vec(glm::dvec3(cam.position)) + " -lookat " + vec(glm::dvec3(cam.target)) + " -up " +
-         vec(glm::dvec3(cam.up)) + " -fov " + std::to_string(glm::degrees(fov_x)) + " -absorb " +
-         vec(glm::dvec3(absorb)) + " -scatter " + vec(glm::dvec3(scatter)) + " -light " +
-         vec(to_light) + "," + vec(medium.light_color) + " -gain 0 -step " + std::to_string(a.vdb_render_step) +
+         comma_vector(glm::dvec3(cam.position)) + " -lookat " + comma_vector(glm::dvec3(cam.target)) + " -up " +
+         comma_vector(glm::dvec3(cam.up)) + " -fov " + std::to_string(glm::degrees(fov_x)) + " -absorb " +
+         comma_vector(glm::dvec3(absorb)) + " -scatter " + comma_vector(glm::dvec3(scatter)) + " -light " +
+         comma_vector(to_light) + "," + comma_vector(medium.light_color) + " -gain 0 -step " + std::to_string(a.vdb_render_step) +
          " -shadowstep " + std::to_string(a.vdb_render_shadow_step) +
          " -cpus 0 > /dev/null 2>&1";
 }

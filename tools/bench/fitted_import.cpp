@@ -8,6 +8,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "engine/core/stopwatch.h"
 #include "systems/runtime/cloud_import/gaussian_fit.h"
 #include "systems/runtime/cloud_import/grid_framing.h"
 #include "systems/runtime/cloud_import/gaussian_lighting.h"
@@ -19,8 +20,6 @@ namespace pyro {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // The Gaussians lit (their `lit` fitted to the transmittance T) and measured from every view;
 // `octree` is the start's report (its light sweep time and levels).

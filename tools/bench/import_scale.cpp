@@ -11,6 +11,7 @@
 #include "engine/core/content_path.h"
 #include "engine/core/file_kind.h"
 #include "engine/core/same_file.h"
+#include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
 #include "engine/io/vdb_file_check.h"
 #include "engine/io/vdb_reader.h"
@@ -26,10 +27,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 uint64_t peak_rss_bytes(int who) {
   struct rusage usage;

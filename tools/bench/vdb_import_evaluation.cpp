@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "engine/core/stopwatch.h"
 #include "systems/runtime/reference/volume_reference.h"
 #include "systems/runtime/scene_runtime/particle_snapshot.h"
 #include "systems/runtime/cloud_import/grid_framing.h"
@@ -12,10 +13,6 @@
 namespace pyro {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
 #include "engine/io/isolated_call.h"
 #include "engine/volume/puff_sequence.h"
@@ -19,8 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // The folder the bench works in: `keep`, or a temporary one removed at the end.
 struct WorkFolder {

@@ -54,7 +54,7 @@ std::string number_text(double v) {
   return buf;
 }
 
-std::string short_number(double v) {
+std::string figure_number(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
@@ -72,7 +72,7 @@ void check_domain(const glm::dvec3& c, const AlignmentFigureParameters& p) {
   if (!why.empty())
     throw UserError("command line", "--radius",
                     "the figures need every billboard beyond the viewplane; at C = (" +
-                        short_number(c.x) + ", " + short_number(c.y) + ", " + short_number(c.z) +
+                        figure_number(c.x) + ", " + figure_number(c.y) + ", " + figure_number(c.z) +
                         "): " + why);
 }
 
@@ -91,8 +91,8 @@ std::pair<double, double> surface_values(const Quantity* q, const glm::dvec3& c,
 }
 
 std::string parameters_text(const AlignmentFigureParameters& p, bool stereo) {
-  std::string s = "r = " + short_number(p.radius) + ", N = " + short_number(p.near);
-  if (stereo) s += ", I = " + short_number(p.interocular);
+  std::string s = "r = " + figure_number(p.radius) + ", N = " + figure_number(p.near);
+  if (stereo) s += ", I = " + figure_number(p.interocular);
   return s;
 }
 
@@ -124,7 +124,7 @@ AlignmentFigure make_surface(const SurfaceSpec& spec, const AlignmentFigureParam
     }
   }
   const std::string fixed =
-      spec.over_xz ? "C_y = " + short_number(spec.fixed_y) : "C_z = " + short_number(z_plane);
+      spec.over_xz ? "C_y = " + figure_number(spec.fixed_y) : "C_z = " + figure_number(z_plane);
   f.chart = {{"x", "c_x"},
              {"y", spec.over_xz ? "c_z" : "c_y"},
              {"x_label", "C_x (camera coordinates)"},
@@ -171,8 +171,8 @@ AlignmentFigure make_diagram(int number, const AlignmentFigureParameters& p) {
              {"centre", {c.x, c.y, c.z}},
              {"e_x", e.e_x},
              {"e_x_paper", paper_eq11_e_x(c, p.radius, p.near)},
-             {"subtitle", "C = (" + short_number(c.x) + ", " + short_number(c.y) + ", " +
-                              short_number(c.z) + "), " + parameters_text(p, false)}};
+             {"subtitle", "C = (" + figure_number(c.x) + ", " + figure_number(c.y) + ", " +
+                              figure_number(c.z) + "), " + parameters_text(p, false)}};
   return f;
 }
 

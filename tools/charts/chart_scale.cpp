@@ -13,7 +13,7 @@ namespace pyro {
 
 namespace {
 
-std::string number(double v) {
+std::string exact_number(double v) {
   char text[64];
   std::snprintf(text, sizeof text, "%.17g", v);
   return text;
@@ -21,12 +21,12 @@ std::string number(double v) {
 
 // A benchmark figure, or nan where the benchmark has none (an order made on the GPU has no
 // std::sort baseline).
-std::string number(const nlohmann::json& v) {
-  return v.is_null() ? "nan" : number(v.get<double>());
+std::string exact_number(const nlohmann::json& v) {
+  return v.is_null() ? "nan" : exact_number(v.get<double>());
 }
 
 std::string slope_text(const nlohmann::json& slope) {
-  return slope.is_null() ? "none (fewer than two counts from 1e5 to 2e6)" : number(slope.get<double>());
+  return slope.is_null() ? "none (fewer than two counts from 1e5 to 2e6)" : exact_number(slope.get<double>());
 }
 
 }  // namespace
@@ -54,10 +54,10 @@ ScaleChart chart_scale(const ScaleChartOptions& o) {
          "draw_calls_ms,sort_over_std_sort,instances_over_memcpy,ordered_on_gpu\n";
   for (const nlohmann::json& c : r["counts"]) {
     const nlohmann::json& st = c["stage_ms"];
-    csv += number(c["particles"].get<double>()) + "," + number(c["ms_per_frame"]) + "," +
-           number(c["cpu_ms_per_frame"]) + "," + number(st["keys"]) + "," + number(st["sort"]) + "," +
-           number(st["pack"]) + "," + number(st["instance_write"]) + "," + number(st["draw_calls"]) +
-           "," + number(c["sort_over_std_sort"]) + "," + number(c["instances_over_memcpy"]) + "," +
+    csv += exact_number(c["particles"].get<double>()) + "," + exact_number(c["ms_per_frame"]) + "," +
+           exact_number(c["cpu_ms_per_frame"]) + "," + exact_number(st["keys"]) + "," + exact_number(st["sort"]) + "," +
+           exact_number(st["pack"]) + "," + exact_number(st["instance_write"]) + "," + exact_number(st["draw_calls"]) +
+           "," + exact_number(c["sort_over_std_sort"]) + "," + exact_number(c["instances_over_memcpy"]) + "," +
            (c["ordered_on"] == "gpu" ? "1" : "0") + "\n";
   }
   return {csv, r};

@@ -15,7 +15,7 @@ bool dominates(const ChartTable::Row& a, const ChartTable::Row& b) {
   return a.time <= b.time && a.error <= b.error && (a.time < b.time || a.error < b.error);
 }
 
-std::string number(double v) {
+std::string table_number(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;
@@ -53,8 +53,8 @@ std::string chart_csv(const ChartTable& t) {
   for (const std::string& c : t.extra_columns) s += "," + c;
   s += ",pareto,usable,front\n";
   for (const ChartTable::Row& r : t.rows) {
-    s += field(r.label) + "," + field(r.group) + "," + number(r.time) + "," + number(r.error);
-    for (double v : r.extra) s += "," + number(v);
+    s += field(r.label) + "," + field(r.group) + "," + table_number(r.time) + "," + table_number(r.error);
+    for (double v : r.extra) s += "," + table_number(v);
     s += r.pareto ? ",1" : ",0";
     s += r.usable ? ",1," : ",0,";
     s += field(r.front) + "\n";

@@ -18,6 +18,7 @@
 
 #include "engine/core/file_kind.h"
 #include "engine/core/same_file.h"
+#include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
 #include "engine/io/durable_file.h"
 #include "engine/io/io_error.h"
@@ -68,10 +69,6 @@ void list_grids(const ImportArgs& a) {
                   g.voxel_size[2], g.is_float() && g.affine ? "" : "  [cannot be imported]");
   }
   if (a.json) write_stdout(nlohmann::json{{"file", a.file}, {"grids", out}}.dump() + "\n");
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
 // Writes the particles and prints the summary (the import's fields, the command's own added).

@@ -35,7 +35,7 @@ std::string template_list() {
 }
 
 // FILE's folder must exist, and FILE must not (unless --force, and then not as a folder).
-void check_destination(const std::string& file, bool force) {
+void check_new_scene_destination(const std::string& file, bool force) {
   const fs::path folder = fs::absolute(file).parent_path();
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
@@ -56,7 +56,7 @@ void run_new(const NewArgs& args) {
   if (args.template_name.empty())
     throw UserError("", "--template", "expected a template name (pyro new --list shows them)");
   const SceneTemplate t = find_scene_template(args.template_name);
-  check_destination(args.file, args.force);
+  check_new_scene_destination(args.file, args.force);
   write_file_durably(args.file, scene_template_text(t, args.file));
   write_stdout("wrote " + args.file + " from the " + t.name + " template (pyro render " + args.file +
                " --out DIR renders it)\n");

@@ -10,6 +10,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "engine/core/stopwatch.h"
 #include "systems/runtime/cloud_import/light_sweep.h"
 #include "systems/runtime/reference/parallel_rows.h"
 
@@ -18,10 +19,6 @@ namespace pyro {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 constexpr int kBrickShift = SparseGrid::kBrickShift;  // a brick is one block of level 3
 constexpr size_t kAbsent = std::numeric_limits<size_t>::max();

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/file_kind.h"
+#include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_file_check.h"
@@ -14,10 +15,6 @@
 namespace pyro {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // The grid the reader would pick for `choice` (vdb_reader.h), or null.
 const VdbGridInfo* chosen_grid(const std::vector<VdbGridInfo>& grids, const VdbGridChoice& choice) {
