@@ -46,3 +46,8 @@ add_test(NAME consumer_links_no_glfw
 set_tests_properties(consumer_links_no_glfw PROPERTIES
   FIXTURES_REQUIRED "consumer_installed;consumer_configured;consumer_built"
   ENVIRONMENT_MODIFICATION "LD_PRELOAD=unset:;ASAN_OPTIONS=unset:;LSAN_OPTIONS=unset:")
+# The package's installation and a consumer's build exercise CMake and the compiler, not the
+# engine's memory safety: CI runs them in the Release half only (docs/reliability.md).
+set_tests_properties(consumer_install consumer_configure consumer_build consumer_render
+                     consumer_gtest consumer_window_gtest consumer_links_no_glfw PROPERTIES
+  LABELS release-only)
