@@ -20,7 +20,7 @@ namespace pyro::cli {
 
 namespace {
 
-void print_note(const std::string& line) { std::fprintf(stderr, "pyro bench import-scale: %s\n", line.c_str()); }
+void print_import_scale_note(const std::string& line) { std::fprintf(stderr, "pyro bench import-scale: %s\n", line.c_str()); }
 
 }  // namespace
 
@@ -49,7 +49,7 @@ void add_bench_import_scale_command(CLI::App& bench) {
   cmd->add_flag("--json", args->json, "Print one JSON object");
   cmd->callback([args] {
     args->options.progress = terminal_progress();
-    args->options.on_note = print_note;
+    args->options.on_note = print_import_scale_note;
     args->options.progress_fd = STDERR_FILENO;
     const nlohmann::json j = bench_import_scale(args->options);
     write_result(j, import_scale_text(j), args->json);
