@@ -10,7 +10,7 @@
 
 #include "engine/io/png_file.h"
 #include "systems/runtime/scene/scene_loader.h"
-#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/open_scene/flipbook_bake.h"
 #include "tests/support/pixel_hue.h"
 #include "tests/support/test_paths.h"
 

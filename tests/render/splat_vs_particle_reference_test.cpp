@@ -13,7 +13,7 @@
 #include "engine/core/rng.h"
 #include "engine/math/camera_math.h"
 #include "systems/runtime/reference/particle_reference.h"
-#include "systems/runtime/scene_runtime/particle_snapshot.h"
+#include "tools/bench/particle_snapshot.h"
 
 namespace pyro {
 namespace {

@@ -1,10 +1,12 @@
 #include "tools/analyze/billboard_modes.h"
 
 #include <cstddef>
+#include <memory>
 
 #include "components/frame_image.h"
 #include "engine/core/format_text.h"
 #include "engine/math/image_error.h"
+#include "systems/runtime/open_scene/open_scene.h"
 #include "systems/runtime/scene/scene_loader.h"
 #include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tools/bench/frame_timing.h"
@@ -33,16 +35,17 @@ ModeRun run_mode(const SceneDescription& scene, const BillboardModesOptions& a,
   o.readback = true;
   // The modes are compared at the scene's written settings (a quality pick's layer scale would
   // blur the difference measured); median_ms_per_frame times them alike.
-  SceneRuntime imaged(scene, o);  // behind the front door: the written settings, as above
-  imaged.step();
+  const std::unique_ptr<SceneRuntime> imaged = open_runtime(scene, o);  // the written settings
+  imaged->step();
   progress.update(++done);
-  return {imaged.image(), ms};
+  return {imaged->image(), ms};
 }
 
 }  // namespace
 
 AnalysisReport analyze_billboard_modes(const BillboardModesOptions& a) {
   const SceneDescription scene = load_scene(a.scene);
+  prepare_scene_run(scene);  // before the timed runtimes (tools/bench/frame_timing.h) open it
   const size_t per_mode = size_t(a.frames) + 2;
   ProgressTask progress(a.progress, "analyze billboard-modes", 2 * per_mode);
   progress.stage(0, std::string(name_of(BillboardAlignment::viewplane)));

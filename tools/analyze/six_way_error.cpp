@@ -3,9 +3,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "components/shadow_settings.h"
 #include "components/view.h"
+#include "systems/runtime/open_scene/open_scene.h"
 #include "systems/runtime/reference/lit_particle_reference.h"
 #include "systems/runtime/reference/world_snapshot.h"
 #include "systems/runtime/scene_runtime/scene_runtime.h"
@@ -74,7 +76,8 @@ SixWayErrorReport measure_six_way_error(const SceneDescription& scene,
   bake.width = options.width;
   bake.height = options.height;
   check_six_way_bake(scene, bake, "");
-  SceneRuntime runtime(scene, six_way_runtime_options(bake));
+  const std::unique_ptr<SceneRuntime> opened = open_runtime(scene, six_way_runtime_options(bake));
+  SceneRuntime& runtime = *opened;
   runtime.draw_frame(options.frame);
   const CameraFrame camera = runtime.world().resource<View>().eyes.at(0);
   const ParticlePool pool = gather_particles(runtime.world());

@@ -4,14 +4,14 @@
 // loaded, --out not holding it, the kind's own refusals, all before anything runs), the opening
 // of the scene through the front door (systems/runtime/open_scene/open_scene.h: a quality
 // target's pick applied) and the report; what differs is the bake run on the opened runtime:
-//   frames   flame frames in a folder (systems/runtime/scene_runtime/flipbook_bake.h)
+//   frames   flame frames in a folder (systems/runtime/open_scene/flipbook_bake.h)
 //   atlas    flame frames as one atlas of COLUMNSxROWS tiles with motion vectors
 //   six_way  six-way lightmaps of a lit smoke scene (tools/bake/six_way_bake.h)
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/open_scene/flipbook_bake.h"
 #include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {

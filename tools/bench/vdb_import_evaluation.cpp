@@ -7,7 +7,7 @@
 
 #include "engine/core/stopwatch.h"
 #include "systems/runtime/reference/volume_reference.h"
-#include "systems/runtime/scene_runtime/particle_snapshot.h"
+#include "tools/bench/particle_snapshot.h"
 #include "systems/runtime/cloud_import/grid_framing.h"
 
 namespace pyro {

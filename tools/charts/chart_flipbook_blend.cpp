@@ -20,7 +20,7 @@
 #include "systems/flipbook_fire/flipbook_atlas_folder.h"
 #include "systems/flipbook_fire/flipbook_motion_blend.h"
 #include "systems/runtime/scene/scene_loader.h"
-#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/open_scene/flipbook_bake.h"
 
 namespace pyro {
 

@@ -27,6 +27,7 @@
 #include "tools/farm/frames_video.h"
 #include "tools/farm/sbatch.h"
 #include "tools/farm/slurm_script.h"
+#include "systems/runtime/open_scene/open_scene.h"
 #include "systems/runtime/scene/scene_loader.h"
 #include "systems/runtime/scene_runtime/frame_range.h"
 #include "tools/pyro/commands.h"
@@ -158,7 +159,8 @@ FarmRecord new_record(const SubmitArgs& a, const CLI::App& cmd, const std::strin
   options.readback = false;
   options.width_override = a.width;
   options.height_override = a.height;
-  record.identity = render_identity_json(scene, options, record.scene, a.depth, print_note);
+  prepare_scene_run(scene, options);  // the default flipbook baked before its folder is digested
+  record.identity = render_identity_json(scene, options, record.scene, a.depth);
   refuse_other_run(dir, record.digest());
   record.frames = parse_frame_range(a.frames, "--frames");
   record.chunk = a.chunk;

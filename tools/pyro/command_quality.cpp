@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/user_error.h"
+#include "systems/runtime/open_scene/open_scene.h"
 #include "systems/runtime/scene/scene_loader.h"
 #include "systems/runtime/quality_picker/quality_measurement.h"
 #include "systems/runtime/quality_picker/quality_picker.h"
@@ -42,6 +43,9 @@ void run_quality(const QualityArgs& a) {
                     "expected an error target: \"quality\": {\"max_rmse\": E} in the scene, or --max-rmse E");
   const int width = a.width > 0 ? a.width : scene.width;
   const int height = a.height > 0 ? a.height : scene.height;
+  RuntimeOptions prepare;  // the measurement's runtimes open a prepared scene
+  prepare.on_note = print_note;
+  prepare_scene_run(scene, prepare);
   const std::string renderer = shared_headless_context().description();
   const QualityPick pick =
       pick_quality(scene, width, height, target, renderer, !a.no_cache, QualitySearch{}, print_note);

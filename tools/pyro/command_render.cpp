@@ -234,7 +234,9 @@ void run_render(const RenderArgs& a) {
   options.height_override = a.height;
   options.profile = !a.trace.empty();
   const auto t0 = std::chrono::steady_clock::now();
-  OutputFolder folder(a.out, render_identity_json(scene, options, a.scene, a.depth, print_note).dump(), describe_difference, a.folder);
+  // The default flipbook baked (a note first) before the identity digests its folder.
+  prepare_scene_run(scene, options);
+  OutputFolder folder(a.out, render_identity_json(scene, options, a.scene, a.depth).dump(), describe_difference, a.folder);
   // A quality target (scene key quality.max_rmse) picks the layer scale, footprint size and time
   // step once for the run, recorded with it before anything is drawn.
   OpenSceneOptions open;

@@ -2,11 +2,16 @@
 // The front door of the engine: how every command, the viewer and an embedding program open a
 // scene file to run it.
 //   scene file --load_scene--> SceneDescription
+//              --prepare_scene_run--> what the run needs made first (the default flame
+//                                 flipbook baked: flipbook_bake.h)
 //              --quality pick--> QualityPick (scene key quality.max_rmse: handed in, else the
 //                                 cache's, else measured now and cached; quality_picker.h)
 //              --RuntimeOptions::quality--> SceneRuntime (scene_runtime.h)
 // A scene without a quality target opens with the options as given. The quality measurement
-// itself (quality_measurement.h) runs its own runtimes behind this door.
+// itself (quality_measurement.h) runs its own runtimes behind this door, of scenes it prepared.
+// A scene held in memory and run as written (no pick: a bake's own scene, an analysis) opens
+// through open_runtime. The runtime (scene_runtime.h) bakes nothing: it refuses a scene whose
+// default flipbook is not baked.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -50,8 +55,20 @@ struct OpenedScene {
 std::optional<QualityPick> open_scene_quality(const SceneDescription& scene,
                                               const OpenSceneOptions& options);
 
-// Loads `path` (unless options.description holds it), picks the quality, and builds the
-// runtime with the pick applied. Throws UserError for a scene file (or a budget) the user can
+// What a run of `scene` needs before any runtime (or a quality measurement) opens it: the
+// engine's default flame flipbook baked (ensure_default_flipbook, flipbook_bake.h) when a fire
+// names no `flipbook` and it is not baked yet, with a note to options.on_note before the bake
+// starts, counted by options.asset_cache (SceneAssetCounters::flipbooks_baked). Nothing when
+// nothing is missing. Whoever computes a run's identity (run_identity.h, whose assets include the
+// default flipbook) or measures a quality pick without open_scene prepares first.
+void prepare_scene_run(const SceneDescription& scene, const RuntimeOptions& options = {});
+
+// `scene`, held in memory, prepared and opened as written (no quality pick) with `options`.
+std::unique_ptr<SceneRuntime> open_runtime(const SceneDescription& scene,
+                                           const RuntimeOptions& options = {});
+
+// Loads `path` (unless options.description holds it), prepares it (prepare_scene_run, with
+// options.runtime), picks the quality, and builds the runtime with the pick applied. Throws UserError for a scene file (or a budget) the user can
 // mend, as load_scene and SceneRuntime do.
 OpenedScene open_scene(const std::string& path, const OpenSceneOptions& options = {});
 

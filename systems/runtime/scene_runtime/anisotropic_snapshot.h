@@ -9,9 +9,12 @@
 #include "engine/particles/anisotropic_gaussian.h"
 #include "systems/runtime/reference/rgb_image.h"
 #include "systems/runtime/scene/scene_description.h"
-#include "systems/runtime/scene_runtime/particle_snapshot.h"  // SnapshotTiming
 
 namespace pyro {
+
+struct SnapshotTiming {
+  double render_seconds = 0.0;  // the frame (sort + draw + readback), best of `repeats`
+};
 
 // `timing`, when given, receives the best of `repeats` frames (upload, sort, draw and readback).
 // The program is built on the first call and kept for the process.

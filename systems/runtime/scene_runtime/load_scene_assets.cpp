@@ -2,8 +2,9 @@
 
 #include <utility>
 
+#include "engine/core/user_error.h"
 #include "systems/runtime/cloud_import/scene_volume.h"
-#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/scene_runtime/default_flipbook.h"
 #include "systems/runtime/scene_runtime/mesh_geometry.h"
 #include "systems/runtime/scene_runtime/resolve_scene.h"
 #include "systems/runtime/scene_runtime/scene_asset_cache.h"
@@ -78,13 +79,20 @@ void load_meshes(const SceneDescription& scene, SceneAssets& assets, const Notes
   }
 }
 
-void load_fires(const SceneDescription& scene, SceneAssets& assets, const Notes& note,
-                SceneAssetCache* cache) {
+// A fire without a `flipbook` plays the engine's default one, baked before the run opened (the
+// front door's prepare_scene_run, systems/runtime/open_scene/open_scene.h): never baked here.
+void load_fires(const SceneDescription& scene, SceneAssets& assets, SceneAssetCache* cache) {
   assets.fires = scene.fires;
-  for (FlipbookFire& fire : assets.fires) {
+  for (size_t i = 0; i < assets.fires.size(); ++i) {
+    FlipbookFire& fire = assets.fires[i];
     if (!fire.flipbook.empty()) continue;
-    if (cache && !default_flipbook_baked()) cache->count_default_bake();
-    fire.flipbook = ensure_default_flipbook(note);
+    fire.flipbook = default_flipbook_folder();
+    if (!default_flipbook_baked())
+      throw UserError(fire.flipbook, "",
+                      "expected a baked default flame flipbook: scenes opened through the front "
+                      "door (systems/runtime/open_scene/open_scene.h) bake it first, as does the "
+                      "build's default_flipbook target; found no flipbook.json, for the fire at "
+                      "/fires/" + std::to_string(i) + " of " + scene.file + " (no `flipbook` named)");
   }
   assets.flipbooks = cache ? cache->flipbooks(assets.fires) : load_flipbooks(assets.fires);
 }
@@ -103,7 +111,7 @@ SceneAssets load_scene_assets(const ResolvedScene& resolved, const NoteSink& on_
     for (const VolumeAsset& v : assets.volumes) volume_particles += v.source.particles;
     check_resolved_budget(resolved, volume_particles);
   }
-  load_fires(resolved.scene, assets, note, cache);
+  load_fires(resolved.scene, assets, cache);
   if (cache) cache->end_load();
   return assets;
 }

@@ -33,12 +33,11 @@ nlohmann::json pixel_settings(const SceneDescription& scene, const RuntimeOption
 }
 
 nlohmann::json render_identity_json(const SceneDescription& scene, const RuntimeOptions& options,
-                                    const std::string& scene_file, bool exr_depth,
-                                    const NoteSink& note) {
+                                    const std::string& scene_file, bool exr_depth) {
   DigestCache digests(cache_folder());
   nlohmann::json settings = pixel_settings(scene, options);
   if (exr_depth) settings["exr_depth"] = true;  // the same file names, other contents
-  const RunIdentity id = run_identity(scene, settings, PYRO_VERSION, digests, note);
+  const RunIdentity id = run_identity(scene, settings, PYRO_VERSION, digests);
   return {{"digest", id.digest}, {"parts", id.parts}, {"scene_file", scene_file}};
 }
 

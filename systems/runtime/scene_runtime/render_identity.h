@@ -15,10 +15,10 @@ namespace pyro {
 nlohmann::json pixel_settings(const SceneDescription& scene, const RuntimeOptions& options);
 
 // {"digest", "parts", "scene_file"} of rendering `scene` (read from `scene_file`) with `options`
-// (width and height overrides applied); `exr_depth` for --format exr --depth. The digests'
-// notes (a digest cache that cannot be written) go to `note`.
+// (width and height overrides applied); `exr_depth` for --format exr --depth. The scene is
+// prepared first by the caller (prepare_scene_run, systems/runtime/open_scene/open_scene.h: the
+// default flipbook baked, whose folder the identity digests); nothing is baked here.
 nlohmann::json render_identity_json(const SceneDescription& scene, const RuntimeOptions& options,
-                                    const std::string& scene_file, bool exr_depth,
-                                    const NoteSink& note);
+                                    const std::string& scene_file, bool exr_depth);
 
 }  // namespace pyro

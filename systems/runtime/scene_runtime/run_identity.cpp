@@ -5,21 +5,20 @@
 #include "engine/core/build_id.h"
 #include "engine/core/content_path.h"
 #include "engine/core/sha256.h"
-#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/scene_runtime/default_flipbook.h"
 
 namespace pyro {
 
 namespace {
 
-nlohmann::json asset_digests(const SceneDescription& scene, DigestCache& digests,
-                             const NoteSink& on_note) {
+nlohmann::json asset_digests(const SceneDescription& scene, DigestCache& digests) {
   nlohmann::json assets = nlohmann::json::object();
   for (const VolumeDescription& v : scene.volumes)  // a particle sequence is a folder
     assets[v.pointer] = v.kind == VolumeFileKind::sequence ? digests.folder(v.path) : digests.file(v.path);
   for (size_t i = 0; i < scene.fires.size(); ++i) {
     const std::string& folder = scene.fires[i].flipbook;
     assets["/fires/" + std::to_string(i) + "/flipbook"] =
-        digests.folder(folder.empty() ? ensure_default_flipbook(on_note) : folder);
+        digests.folder(folder.empty() ? default_flipbook_folder() : folder);
   }
   return assets;
 }
@@ -47,11 +46,10 @@ std::string changed_keys(const nlohmann::json& before, const nlohmann::json& now
 }  // namespace
 
 RunIdentity run_identity(const SceneDescription& scene, const nlohmann::json& settings,
-                         const std::string& engine_version, DigestCache& digests,
-                         const NoteSink& on_note) {
+                         const std::string& engine_version, DigestCache& digests) {
   RunIdentity id;
   id.parts = {{"scene", scene.content_digest},
-              {"assets", asset_digests(scene, digests, on_note)},
+              {"assets", asset_digests(scene, digests)},
               {"settings", settings},
               {"engine", engine_identity(engine_version, digests)}};
   id.digest = sha256_hex(id.parts.dump());

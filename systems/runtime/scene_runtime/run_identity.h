@@ -12,7 +12,6 @@
 
 #include "engine/io/content_digest.h"
 #include "systems/runtime/scene/scene_description.h"
-#include "systems/runtime/scene_runtime/runtime_options.h"
 
 namespace pyro {
 
@@ -22,12 +21,12 @@ struct RunIdentity {
 };
 
 // The identity of running `scene` with `settings` (a JSON object: whatever changes the pixels).
-// Assets' digests come from `digests` (cached by size and modification time); the default
-// flipbook is baked first when a fire needs it and it is missing (a note to `on_note`).
-// `engine_version` is the program's release (e.g. "0.1.0").
+// Assets' digests come from `digests` (cached by size and modification time); a fire without a
+// `flipbook` counts the default flipbook's folder (default_flipbook.h), which the caller has had
+// baked first (prepare_scene_run, systems/runtime/open_scene/open_scene.h): the identity bakes
+// nothing. `engine_version` is the program's release (e.g. "0.1.0").
 RunIdentity run_identity(const SceneDescription& scene, const nlohmann::json& settings,
-                         const std::string& engine_version, DigestCache& digests,
-                         const NoteSink& on_note = {});
+                         const std::string& engine_version, DigestCache& digests);
 
 // What differs between two identities' parts, for a message: "the scene", "the asset at
 // /volumes/0", "the settings (width 64 -> 48)", "the engine"; "an identity pyro no longer

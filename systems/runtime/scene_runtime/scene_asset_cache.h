@@ -59,7 +59,8 @@ class SceneAssetCache {
   // when held.
   FlipbookAssets flipbooks(const std::vector<FlipbookFire>& fires);
 
-  // Counts a bake of the engine's default flipbook (load_scene_assets makes it).
+  // Counts a bake of the engine's default flipbook (the front door's prepare_scene_run makes it,
+  // systems/runtime/open_scene/open_scene.h, for a runtime opened with this cache).
   void count_default_bake() { ++counters_.flipbooks_baked; }
 
  private:

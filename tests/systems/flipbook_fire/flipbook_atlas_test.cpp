@@ -23,7 +23,7 @@
 #include "systems/flipbook_fire/particle_motion_splat.h"
 #include "systems/runtime/scene/scene_loader.h"
 #include "components/gpu_frame.h"
-#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/open_scene/flipbook_bake.h"
 #include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 

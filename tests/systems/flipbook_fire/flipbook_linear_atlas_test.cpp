@@ -17,7 +17,7 @@
 #include "systems/flipbook_fire/flipbook_frame_fade.h"
 #include "systems/flipbook_fire/flipbook_motion.h"
 #include "systems/runtime/scene/scene_loader.h"
-#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/open_scene/flipbook_bake.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {

@@ -1,22 +1,28 @@
 // The runtime's second layer alone: volumes read and noted, the budget checked again with their
-// particles, flipbooks shared between fires that prepare them alike, and the engine's default
-// flipbook baked when missing, all before any world exists (no world is made in these tests).
+// particles, flipbooks shared between fires that prepare them alike, all before any world exists
+// (no world is made in these tests); the engine's default flipbook baked when missing by the front
+// door (prepare_scene_run) before any runtime, and refused unbaked by the runtime alone.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/png_file.h"
 #include "systems/flipbook_fire/flipbook_folder.h"
+#include "systems/runtime/open_scene/flipbook_bake.h"
+#include "systems/runtime/open_scene/open_scene.h"
 #include "systems/runtime/scene/scene_loader.h"
-#include "systems/runtime/scene_runtime/flipbook_bake.h"
 #include "systems/runtime/scene_runtime/load_scene_assets.h"
 #include "systems/runtime/scene_runtime/resolve_scene.h"
+#include "systems/runtime/scene_runtime/scene_asset_cache.h"
+#include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -114,20 +120,59 @@ class FlipbookDir {  // PYRO_FLIPBOOK_DIR set for the test's lifetime
   bool had_ = false;
 };
 
-TEST(LoadSceneAssets, BakesAMissingDefaultFlipbookBeforeAnyWorld) {
+TEST(LoadSceneAssets, TheFrontDoorBakesAMissingDefaultFlipbookBeforeAnyRuntime) {
   const fs::path dir = test::scratch_dir("assets_bake");
   const FlipbookDir env((dir / "fire").string());
   const std::string path = (dir / "scene.json").string();
   std::ofstream(path) << R"({"fires": [{"name": "default"}]})";
+  std::vector<std::string> notes;
+  SceneAssetCache cache;
+  RuntimeOptions options;
+  options.on_note = [&](const std::string& n) { notes.push_back(n); };
+  options.asset_cache = &cache;
+  prepare_scene_run(load_scene(path), options);
+  EXPECT_TRUE(fs::is_regular_file(dir / "fire" / "flipbook.json"));
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("baking the default flame flipbook"), std::string::npos) << notes[0];
+  EXPECT_EQ(cache.counters().flipbooks_baked, 1u);
+  // The runtime's asset step then only reads the folder, and notes nothing.
   const SceneAssets assets = load_scene_assets(resolved(path));
   ASSERT_EQ(assets.fires.size(), 1u);
   EXPECT_EQ(assets.fires[0].flipbook, (dir / "fire").string());
-  EXPECT_TRUE(fs::is_regular_file(dir / "fire" / "flipbook.json"));
-  ASSERT_EQ(assets.notes.size(), 1u);
-  EXPECT_NE(assets.notes[0].find("baking the default flame flipbook"), std::string::npos);
+  EXPECT_TRUE(assets.notes.empty());
   EXPECT_EQ(assets.flipbooks.frames.at(0).rgba.size(), size_t(FlipbookBakeOptions{}.frames));
-  // Baked once: a second load reads the folder and notes nothing.
-  EXPECT_TRUE(load_scene_assets(resolved(path)).notes.empty());
+  // Baked once: preparing again bakes nothing and notes nothing.
+  prepare_scene_run(load_scene(path), options);
+  EXPECT_EQ(notes.size(), 1u);
+  EXPECT_EQ(cache.counters().flipbooks_baked, 1u);
+}
+
+TEST(LoadSceneAssets, TheRuntimeAloneRefusesAnUnbakedDefaultFlipbook) {
+  const fs::path dir = test::scratch_dir("assets_unbaked");
+  const fs::path empty = dir / "fire";
+  fs::create_directories(empty);
+  const FlipbookDir env(empty.string());
+  const std::string path = (dir / "scene.json").string();
+  std::ofstream(path) << R"({"fires": [{"name": "default"}]})";
+  const auto expect_refused = [&](const std::function<void()>& load) {
+    try {
+      load();
+      ADD_FAILURE() << "a fire without a flipbook loaded with the default flipbook unbaked";
+    } catch (const UserError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(e.file(), empty.string());
+      EXPECT_NE(what.find("a baked default flame flipbook: scenes opened through the front door "
+                          "(systems/runtime/open_scene/open_scene.h) bake it first, as does the "
+                          "build's default_flipbook target"),
+                std::string::npos)
+          << what;
+      EXPECT_NE(what.find("/fires/0"), std::string::npos) << what;
+    }
+  };
+  expect_refused([&] { load_scene_assets(resolved(path)); });
+  // SceneRuntime itself, opened without the front door: refused by its asset step, before any world.
+  expect_refused([&] { SceneRuntime runtime(load_scene(path)); });
+  EXPECT_TRUE(fs::is_empty(empty));  // nothing baked behind the front door
 }
 
 }  // namespace

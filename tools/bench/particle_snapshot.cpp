@@ -1,4 +1,4 @@
-#include "systems/runtime/scene_runtime/particle_snapshot.h"
+#include "tools/bench/particle_snapshot.h"
 
 #include "systems/runtime/cloud_import/scene_volume.h"
 

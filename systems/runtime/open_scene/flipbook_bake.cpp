@@ -1,15 +1,14 @@
-#include "systems/runtime/scene_runtime/flipbook_bake.h"
+#include "systems/runtime/open_scene/flipbook_bake.h"
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
 #include "components/particle_set.h"
 #include "components/view.h"
-#include "engine/core/content_location.h"
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "systems/runtime/scene/scene_loader.h"
@@ -21,6 +20,8 @@
 #include "systems/flipbook_fire/flipbook_atlas_sidecar.h"
 #include "systems/flipbook_fire/flipbook_motion.h"
 #include "systems/flipbook_fire/particle_motion_splat.h"
+#include "systems/runtime/open_scene/open_scene.h"
+#include "systems/runtime/scene_runtime/default_flipbook.h"
 #include "systems/runtime/scene_runtime/scene_runtime.h"
 
 namespace pyro {
@@ -60,9 +61,8 @@ FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBa
                                  const std::string& out) {
   check_flipbook_bake(scene, options, out);
   const auto t0 = std::chrono::steady_clock::now();
-  // Behind the front door: the asset step of a runtime being opened bakes here.
-  SceneRuntime runtime(scene, flipbook_runtime_options(options));
-  FlipbookBakeResult result = bake_flipbook(runtime, options, out);
+  const std::unique_ptr<SceneRuntime> runtime = open_runtime(scene, flipbook_runtime_options(options));
+  FlipbookBakeResult result = bake_flipbook(*runtime, options, out);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }
@@ -286,17 +286,6 @@ FlipbookBakeResult bake_flipbook(SceneRuntime& runtime, const FlipbookBakeOption
   staging.commit();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
-}
-
-std::string default_flipbook_folder() {
-  if (const char* env = std::getenv("PYRO_FLIPBOOK_DIR"); env && *env) return env;
-  return built_in_flipbook_dir();
-}
-
-bool default_flipbook_baked() {
-  std::error_code ec;
-  return std::filesystem::is_regular_file(
-      std::filesystem::path(default_flipbook_folder()) / "flipbook.json", ec);
 }
 
 std::string ensure_default_flipbook(const NoteSink& on_note) {

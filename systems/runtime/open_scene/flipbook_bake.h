@@ -62,24 +62,16 @@ RuntimeOptions flipbook_runtime_options(const FlipbookBakeOptions& options);
 FlipbookBakeResult bake_flipbook(SceneRuntime& runtime, const FlipbookBakeOptions& options,
                                  const std::string& out);
 
-// Checks, opens `scene` as it is written (no quality pick: the runtime's own asset step bakes the
-// default flipbook through here, below the quality picker) and bakes.
+// Checks, opens `scene` as it is written (no quality pick: open_runtime, open_scene.h) and bakes.
 FlipbookBakeResult bake_flipbook(const SceneDescription& scene, const FlipbookBakeOptions& options,
                                  const std::string& out);
 
-// Where fires without a `flipbook` find theirs: $PYRO_FLIPBOOK_DIR when set, else the build
-// folder's flipbooks/fire (baked by the build's `default_flipbook` target), or
-// <prefix>/share/pyrocumulus/flipbooks/fire in an installed package
-// (engine/core/content_location.h).
-std::string default_flipbook_folder();
-
-// Whether the default flipbook's folder holds its manifest (else ensure_default_flipbook bakes).
-bool default_flipbook_baked();
-
-// The default flipbook's folder, baked from content/scenes/flipbook_fire.json with the default
-// options first when it holds no manifest yet (a fresh clone's first run; a note to `on_note`
-// before the bake starts). The bake runs its own SceneRuntime: it sits above the runtime, in
-// the runtime's asset step (load_scene_assets.h), never inside a world being built.
+// The default flipbook's folder (default_flipbook_folder(),
+// systems/runtime/scene_runtime/default_flipbook.h), baked from content/scenes/flipbook_fire.json
+// with the default options first when it holds no manifest yet (a fresh clone's first run; a note
+// to `on_note` before the bake starts). The front door calls it before a run opens
+// (prepare_scene_run, open_scene.h); the bake runs its own runtime, opened through the door,
+// never inside a runtime being built.
 std::string ensure_default_flipbook(const NoteSink& on_note = {});
 
 }  // namespace pyro
