@@ -20,7 +20,7 @@ RgbImage render_particle_snapshot(const std::vector<GaussianParticle>& particles
   scene.height = height;
   scene.background = background;
   scene.camera = camera;
-  SceneRuntime runtime(scene);
+  SceneRuntime runtime(scene);  // behind the front door: a synthetic scene the benchmark fills
   ecs::World& world = runtime.world();
   world.emplace<ParticleSet>(world.create(), ParticleSet{to_particle_pool(particles)});
   double best = 1e300;
