@@ -92,8 +92,8 @@ void run_render(const RenderArgs& args) {
     refuse_output_over_inputs(a.video, "--video", scene_inputs(a.scene_path, scene));
     refuse_output_inside(a.video, "--video", a.out, "--out's frames and manifest");
   }
-  TerminalProgress progress(/*interruptible=*/false);
-  print_render_result(args, scene, range, render_to_folder(a, scene, range, print_note, &progress));
+  print_render_result(args, scene, range,
+                      render_to_folder(a, scene, range, print_note, terminal_progress()));
 }
 
 }  // namespace
