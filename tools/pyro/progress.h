@@ -76,14 +76,12 @@ class Progress {
 };
 
 // The engine's progress reports (engine/core/progress_sink.h) as a bar on stderr when it is a
-// terminal: one Progress per task; each update ends the work by Interrupted after a signal unless
-// constructed not `interruptible` (a render is ended by the signal handler's alarm).
+// terminal: one Progress per task.
 class TerminalProgress : public ProgressSink {
  public:
-  explicit TerminalProgress(bool interruptible = true) : interruptible_(interruptible) {}
   void begin(const std::string& label, size_t total) override { bar_.emplace(label, total); }
   void update(size_t done, const std::string& stage) override {
-    if (interruptible_) throw_if_interrupted();
+    throw_if_interrupted();
     if (!bar_) return;
     if (stage.empty()) bar_->update(done);
     else bar_->stage(done, stage);
@@ -91,7 +89,6 @@ class TerminalProgress : public ProgressSink {
   void finish() override { bar_.reset(); }
 
  private:
-  bool interruptible_;
   std::optional<Progress> bar_;
 };
 
