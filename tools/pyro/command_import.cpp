@@ -1,38 +1,30 @@
 // pyro import-vdb FILE [--grid NAME | --grid-index I] [--temperature-grid NAME|none] [--error E]
 //                 --out FILE [--json] [--width W] [--height H] [--samples N]
 // Reads one float grid, imports it as anisotropic Gaussian particles fitted to the grid until the
-// image error from every side meets the target (tools/bench/fitted_import.h: the splats
+// image error from every side meets the target (tools/bench/vdb_file_import.h, fitted_import.h: the splats
 // drawn by the real GL renderer, offscreen, against the CPU reference render of the grid from
 // seven views around it), and only then writes the particle file (engine/io/particle_file.h: checked as the loader checks it, then
 // written durably).
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
-#include <cmath>
-#include <filesystem>
-#include <optional>
 #include <cstdio>
+#include <filesystem>
 
 #include <nlohmann/json.hpp>
 
 #include "engine/core/file_kind.h"
 #include "engine/core/same_file.h"
-#include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
 #include "engine/io/durable_file.h"
 #include "engine/io/io_error.h"
-#include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
-#include "engine/io/vdb_temperature_grid.h"
-#include "engine/math/temperature_emission.h"
-#include "engine/volume/sparse_grid.h"
 #include "systems/runtime/cloud_import/vdb_sequence_members.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/import_sequence.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"
-#include "tools/bench/fitted_import.h"
+#include "tools/bench/vdb_file_import.h"
 
 namespace pyro::cli {
 
@@ -71,25 +63,11 @@ void list_grids(const ImportArgs& a) {
   if (a.json) write_stdout(nlohmann::json{{"file", a.file}, {"grids", out}}.dump() + "\n");
 }
 
-// Writes the particles and prints the summary (the import's fields, the command's own added).
-void finish_import(const ImportArgs& a, const GridHeader& grid, ParticleFile pf, nlohmann::json summary,
-                   double read_seconds) {
-  nlohmann::json meta{{"source", a.file},
-                      {"grid", grid.name},
-                      {"grid_index", grid.file_index},
-                      {"error_target", a.error},
-                      {"extinction", summary["extinction"]},
-                      {"albedo", summary["albedo"]},
-                      {"rmse", summary["rmse"]},
-                      {"rmse_views_max", summary["rmse_views_max"]},
-                      {"target_met", summary["target_met"]},
-                      {"active_voxels", grid.active_voxels}};
-  if (summary.contains("temperature") && !summary["temperature"].is_null()) meta["temperature"] = summary["temperature"];
-  pf.metadata_json = meta.dump();
-  write_particle_file(a.out, pf);
-  const double seconds = read_seconds + summary["import_seconds"].get<double>();
-  summary.update({{"grid", grid.name}, {"read_seconds", read_seconds}, {"seconds", seconds},
-                  {"voxels_per_second", grid.active_voxels / std::max(1e-9, seconds)}, {"out", a.out}});
+// Prints the summary of an import written.
+void print_import(const ImportArgs& a, const VdbFileImport& import) {
+  const nlohmann::json& summary = import.summary;
+  const GridHeader& grid = import.grid;
+  const double seconds = import.seconds;
   if (a.json) {
     write_stdout(summary.dump() + "\n");
   } else if (summary["measured"].get<bool>()) {
@@ -130,40 +108,6 @@ void check_destination(const ImportArgs& a) {
     say(a, "removed " + std::to_string(removed) + " temporary file(s) of " + a.out + " that killed runs had left");
 }
 
-// The temperature grid beside the density (none, or read into the density's index space) and
-// the emission the import is measured with: the automatic mapping for its values at the default
-// intensity (engine/math/temperature_emission.h), as a scene shows it unless told otherwise.
-struct ImportTemperature {
-  std::optional<VdbGridInfo> grid;
-  VolumeEmission emission;
-  nlohmann::json summary;  // null without a temperature grid
-};
-
-ImportTemperature read_import_temperature(const ImportArgs& a, const GridHeader& density) {
-  ImportTemperature t;
-  t.grid = choose_temperature_grid(a.file, list_vdb_grids(a.file), a.temperature_grid, "--temperature-grid");
-  if (!t.grid) {
-    say(a, a.temperature_grid == "none" ? "temperature off (--temperature-grid none)"
-                                        : "no temperature grid (looked for \"temperature\", \"heat\", \"flame\"): smoke only");
-    return t;
-  }
-  t.emission.temperature = read_temperature_grid(a.file, *t.grid, density);
-  const double top = t.emission.temperature.max_value;
-  const TemperatureMapping mapping = automatic_temperature_mapping(top);
-  t.emission.emission = make_temperature_emission(mapping, kDefaultEmissionIntensity, top);
-  t.summary = {{"grid", t.grid->name},       {"grid_index", t.grid->index},
-               {"max", top},                 {"mapping", automatic_mapping_kind(top)},
-               {"scale", mapping.scale},     {"offset", mapping.offset},
-               {"intensity", kDefaultEmissionIntensity}, {"hottest_kelvin", t.emission.emission.hottest_kelvin}};
-  char text[256];
-  std::snprintf(text, sizeof text,
-                "temperature grid \"%s\" (largest value %g: %s, kelvin = %g value + %g, hottest %.0f K)",
-                t.grid->name.c_str(), top, automatic_mapping_kind(top).c_str(), mapping.scale, mapping.offset,
-                t.emission.emission.hottest_kelvin);
-  say(a, text);
-  return t;
-}
-
 void run_import(const ImportArgs& a) {
   // An animated sequence (a printf pattern, a glob or a folder): tools/pyro/import_sequence.h.
   if (names_vdb_sequence(a.file)) {
@@ -184,52 +128,10 @@ void run_import(const ImportArgs& a) {
     return;
   }
   check_destination(a);
-  // Stages: read, reference views, import and measure (refined until the target is met).
-  Progress progress("import-vdb " + std::filesystem::path(a.file).filename().string(), 3);
-  progress.stage(0, "read");
-  const auto t0 = std::chrono::steady_clock::now();
-  std::string note;
-  const SparseGrid sparse = read_vdb_grid_sparse(a.file, {a.grid, a.grid_index}, &note);
-  const double read_seconds = seconds_since(t0);
-  if (!note.empty()) say(a, note);
-  if (sparse.converted_from_level_set) say(a, "grid \"" + sparse.name + "\" is a level set; converted to a fog volume");
-  if (sparse.empty()) say(a, "grid \"" + sparse.name + "\" has no active voxels; writing 0 particles");
-  ParticleFile pf;
-  if (sparse.box_voxels() > kMaxDenseGridVoxels) {
-    if (!a.temperature_grid.empty() && a.temperature_grid != "none")
-      throw UserError(a.file, "--temperature-grid",
-                      "a density grid small enough for a dense box to import a temperature beside it; \"" +
-                          sparse.name + "\" is imported sparse (use --temperature-grid none)");
-    progress.stage(2, "import, and measure against the path-traced truth");
-    SparseImport u = import_sparse(sparse, a.error, std::min(a.width, a.height), a.samples);
-    say(a, u.reason);
-    progress.finish();
-    pf.particles = std::move(u.particles);
-    return finish_import(a, sparse, std::move(pf), sparse_import_summary(u, a.error), read_seconds);
-  }
-  const DenseGrid grid = dense_from_sparse(sparse);
-  ImportTemperature temperature = read_import_temperature(a, grid);
-  // The image error of what the engine draws against the ground truth, from every side.
-  progress.stage(1, "reference views");
-  const VdbImportReference reference =
-      make_vdb_import_reference(grid, a.width, a.height, true, std::move(temperature.emission));
-  progress.stage(2, "import and measure");
-  const FittedImport fit = import_to_target(grid, a.error, reference);
-  if (!fit.target_met) {
-    char text[160];
-    std::snprintf(text, sizeof text, "--error %g not met: rmse_views_max %.4f at best (%llu particles, %d refinement(s)); ",
-                  a.error, fit.best.rmse_views_max, (unsigned long long)fit.best.report.particles, fit.refinements);
-    say(a, text + fit.reason);
-  }
-  if (!std::isfinite(fit.best.rmse))
-    throw UserError(a.file, "grid \"" + grid.name + "\"", "a grid whose import can be measured, found a non-finite image error");
-  progress.update(3);
-  progress.finish();
-  pf.anisotropic = fit.best.fitted;
-  pf.temperature = fit.best.temperatures;
-  nlohmann::json summary = fitted_import_summary(fit, reference, a.error);
-  summary["temperature"] = temperature.summary;
-  finish_import(a, grid, std::move(pf), std::move(summary), read_seconds);
+  const VdbFileImportRequest request{a.file,  a.grid,   a.grid_index, a.temperature_grid, a.error,
+                                     a.width, a.height, a.samples,    a.out};
+  print_import(a, import_vdb_file(request, [&a](const std::string& what) { say(a, what); },
+                                  terminal_progress()));
 }
 
 }  // namespace
