@@ -7,7 +7,7 @@ image tests and benchmarks that mostly exercise Mesa). So that no test lands in 
 unseen, this check refuses:
 
   * a test file outside the release-only folders that draws and reads back frames (it includes
-    tests/support's frame helpers, or the bench or charts modules) and is listed neither
+    tests/support's frame helpers, or the bench, charts or import modules) and is listed neither
     `release-only` nor `sanitized`;
   * an entry of an unknown kind, without a reason, naming no test file or folder, or listed twice;
   * a `release-only` entry whose path docs/reliability.md does not name (every exclusion is listed
@@ -25,7 +25,7 @@ KINDS = ("release-only", "sanitized")
 # applications that measure renders.
 DRAWS_FRAMES = re.compile(
     r'^\s*#\s*include\s*"(tests/support/(rendered_frame|splat_drawing|cli_render|one_particle_scene)\.h'
-    r'|tools/(bench|charts)/)', re.M)
+    r'|tools/(bench|charts|import)/)', re.M)
 
 
 def read_split(path):

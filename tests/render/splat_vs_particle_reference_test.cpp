@@ -13,7 +13,7 @@
 #include "engine/core/rng.h"
 #include "engine/math/camera_math.h"
 #include "systems/runtime/reference/particle_reference.h"
-#include "tools/bench/particle_snapshot.h"
+#include "tools/import/particle_snapshot.h"
 
 namespace pyro {
 namespace {

@@ -10,7 +10,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/png_file.h"
 #include "engine/io/vdb_reader.h"
-#include "tools/bench/relit_particles.h"
+#include "tools/import/relit_particles.h"
 #include "tools/bench/sun_directions.h"
 #include "systems/runtime/cloud_import/cloud_import.h"
 #include "systems/runtime/cloud_import/grid_framing.h"

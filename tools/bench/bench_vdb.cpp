@@ -13,7 +13,7 @@
 
 #include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
-#include "tools/bench/fitted_import.h"
+#include "tools/import/fitted_import.h"
 #include "systems/runtime/cloud_import/cloud_import.h"
 #include "systems/runtime/cloud_import/gaussian_lighting.h"
 #include "systems/runtime/cloud_import/grid_framing.h"

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <functional>
 
-#include "tools/bench/fitted_import.h"
-#include "tools/bench/vdb_import_evaluation.h"
+#include "tools/import/fitted_import.h"
+#include "tools/import/vdb_import_evaluation.h"
 
 namespace pyro {
 

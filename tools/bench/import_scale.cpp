@@ -17,7 +17,7 @@
 #include "engine/io/vdb_reader.h"
 #include "engine/io/vdb_resampled_volume.h"
 #include "engine/volume/procedural_cloud.h"
-#include "tools/bench/sparse_import_error.h"
+#include "tools/import/sparse_import_error.h"
 #include "systems/runtime/cloud_import/cloud_import.h"
 #include "systems/runtime/cloud_import/grid_framing.h"
 

@@ -1,6 +1,6 @@
 // pyro chart particle-budget: VDB import error targets -> particle count, render time and image
 // error, through the same import and measurement as `pyro import-vdb`
-// (tools/bench/vdb_import_evaluation.h).
+// (tools/import/vdb_import_evaluation.h).
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -8,7 +8,7 @@
 #include "engine/core/content_path.h"
 #include "engine/io/vdb_reader.h"
 #include "tools/charts/charts.h"
-#include "tools/bench/vdb_import_evaluation.h"
+#include "tools/import/vdb_import_evaluation.h"
 
 namespace pyro {
 

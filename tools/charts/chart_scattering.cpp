@@ -8,7 +8,7 @@
 #include "components/volume_medium.h"
 #include "engine/core/content_path.h"
 #include "engine/io/vdb_reader.h"
-#include "tools/bench/relit_particles.h"
+#include "tools/import/relit_particles.h"
 #include "tools/bench/sun_directions.h"
 #include "tools/charts/charts.h"
 #include "systems/runtime/cloud_import/cloud_import.h"

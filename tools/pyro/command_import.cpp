@@ -1,7 +1,7 @@
 // pyro import-vdb FILE [--grid NAME | --grid-index I] [--temperature-grid NAME|none] [--error E]
 //                 --out FILE [--json] [--width W] [--height H] [--samples N]
 // Reads one float grid, imports it as anisotropic Gaussian particles fitted to the grid until the
-// image error from every side meets the target (tools/bench/vdb_file_import.h, fitted_import.h: the splats
+// image error from every side meets the target (tools/import/vdb_file_import.h, fitted_import.h: the splats
 // drawn by the real GL renderer, offscreen, against the CPU reference render of the grid from
 // seven views around it), and only then writes the particle file (engine/io/particle_file.h: checked as the loader checks it, then
 // written durably).
@@ -24,7 +24,7 @@
 #include "tools/pyro/import_sequence.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"
-#include "tools/bench/vdb_file_import.h"
+#include "tools/import/vdb_file_import.h"
 
 namespace pyro::cli {
 

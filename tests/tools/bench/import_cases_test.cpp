@@ -7,7 +7,7 @@
 
 #include <map>
 
-#include "tools/bench/fitted_import.h"
+#include "tools/import/fitted_import.h"
 
 namespace pyro {
 namespace {

@@ -1,10 +1,10 @@
-#include "tools/bench/sparse_import_error.h"
+#include "tools/import/sparse_import_error.h"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
-#include "tools/bench/relit_particles.h"
+#include "tools/import/relit_particles.h"
 #include "systems/runtime/cloud_import/grid_framing.h"
 #include "systems/runtime/reference/path_traced_volume.h"
 #include "systems/runtime/reference/world_snapshot.h"

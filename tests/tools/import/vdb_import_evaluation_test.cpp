@@ -2,8 +2,8 @@
 // directions at one distance (and from inside when the grid is large enough); an import refined
 // to a reachable target meets it on every view; an unreachable target ends with target_met false,
 // a reason, and the best error it reached, never a silent miss.
-#include "tools/bench/fitted_import.h"
-#include "tools/bench/vdb_import_evaluation.h"
+#include "tools/import/fitted_import.h"
+#include "tools/import/vdb_import_evaluation.h"
 
 #include <gtest/gtest.h>
 

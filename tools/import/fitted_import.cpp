@@ -1,4 +1,4 @@
-#include "tools/bench/fitted_import.h"
+#include "tools/import/fitted_import.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,4 +1,4 @@
-#include "tools/bench/vdb_file_import.h"
+#include "tools/import/vdb_file_import.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,7 +15,7 @@
 #include "engine/io/vdb_temperature_grid.h"
 #include "engine/math/temperature_emission.h"
 #include "engine/volume/sparse_grid.h"
-#include "tools/bench/fitted_import.h"
+#include "tools/import/fitted_import.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "tools/bench/particle_snapshot.h"
+#include "tools/import/particle_snapshot.h"
 
 #include "systems/runtime/cloud_import/scene_volume.h"
 

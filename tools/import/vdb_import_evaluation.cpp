@@ -1,4 +1,4 @@
-#include "tools/bench/vdb_import_evaluation.h"
+#include "tools/import/vdb_import_evaluation.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,7 +7,7 @@
 
 #include "engine/core/stopwatch.h"
 #include "systems/runtime/reference/volume_reference.h"
-#include "tools/bench/particle_snapshot.h"
+#include "tools/import/particle_snapshot.h"
 #include "systems/runtime/cloud_import/grid_framing.h"
 
 namespace pyro {

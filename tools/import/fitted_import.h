@@ -15,9 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/volume/sparse_grid.h"
-#include "tools/bench/sparse_import_error.h"
+#include "tools/import/sparse_import_error.h"
 
-#include "tools/bench/vdb_import_evaluation.h"
+#include "tools/import/vdb_import_evaluation.h"
 
 namespace pyro {
 

@@ -1,4 +1,4 @@
-#include "tools/bench/relit_particles.h"
+#include "tools/import/relit_particles.h"
 
 #include <limits>
 #include <utility>
