@@ -10,6 +10,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/durable_file.h"
 #include "engine/io/io_error.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/rename_fault.h"
 #include "engine/io/staging_folder.h"
 
@@ -48,13 +49,15 @@ bool restore_or_remove_aside(const fs::path& out) {
 
 }  // namespace
 
-FolderReplacement::FolderReplacement(const std::string& out, const std::string& option)
-    : out_(normalized_output_path(out)) {
+FolderReplacement::FolderReplacement(const std::string& out, FolderOutputKind kind, bool overwrite,
+                                     const std::string& option)
+    : out_(normalized_output_path(out)), kind_(std::move(kind)) {
   std::error_code ec;
   if (fs::exists(out_, ec) && !fs::is_directory(out_, ec))
     throw UserError(out, option, "expected a folder for the output, found a file");
   create_output_folder(out_.parent_path().string(), option);
   restored_ = restore_or_remove_aside(out_);
+  OutputGate().writes({out, option, OutputShape::folder, kind_, overwrite}).check();
   if (fs::is_directory(out_, ec)) removed_leftovers_ = remove_stale_staging(out_);
   staging_ = out_.parent_path() / ("." + out_.filename().string() + ".partial-" + std::to_string(::getpid()));
   fs::remove_all(staging_, ec);  // left by an earlier process with the same id, killed
@@ -67,7 +70,23 @@ FolderReplacement::~FolderReplacement() {
   if (!committed_) fs::remove_all(staging_, ec);
 }
 
+// The old folder's files that no output wrote (the user's), linked into the new folder (copied
+// where the file system has no hard links), unless the new output wrote a file of that name.
+void FolderReplacement::keep_files_beside() {
+  for (const std::string& file : read_folder_output(out_, kind_).foreign) {
+    const fs::path from = out_ / file, to = staging_ / file;
+    std::error_code ec;
+    if (fs::exists(to, ec)) continue;
+    fs::create_directories(to.parent_path(), ec);
+    if (::link(from.c_str(), to.c_str()) == 0) continue;
+    if (!fs::copy_file(from, to, ec))
+      throw IoError(from.string(), "keep the file in the replaced folder", ec.value());
+  }
+}
+
 void FolderReplacement::commit() {
+  write_folder_output_manifest(staging_, kind_);
+  keep_files_beside();
   sync_folder(staging_.string());
   std::error_code ec;
   before_output_rename();

@@ -14,11 +14,18 @@
 #include <string>
 #include <vector>
 
+#include "engine/io/folder_output_kind.h"
+
 namespace pyro {
 
 inline constexpr const char* kParticleSequenceManifest = "sequence.json";
 inline constexpr const char* kParticleSequenceFormat = "pyrocumulus particle sequence";
 inline constexpr int kParticleSequenceVersion = 1;
+
+// A sequence folder as an output: replaced whole by each import (folder_replacement.h).
+inline FolderOutputKind particle_sequence_output_kind() {
+  return {"particle sequence", {".partial-*"}, {"frame_*.pyrop", kParticleSequenceManifest}};
+}
 
 struct ParticleSequenceFrame {
   int64_t number = 0;          // the source frame number (from the source file's name)

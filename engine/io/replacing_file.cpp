@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <filesystem>
 
+#include "engine/core/file_kind.h"
 #include "engine/core/user_error.h"
 #include "engine/io/durable_file.h"
 #include "engine/io/io_error.h"
@@ -32,6 +33,10 @@ int write_all(int fd, const void* data, size_t size) noexcept {
 
 ReplacingFile::ReplacingFile(std::string path, std::string temporary, int open_flags)
     : path_(std::move(path)), temp_(std::move(temporary)) {
+  // The last line of the gate (output_gate.h): whatever a caller checked, a device node, FIFO,
+  // socket or folder is never renamed over.
+  if (const std::string kind = non_regular_file_kind(path_); !kind.empty() && kind != "no file")
+    throw UserError(path_, "", "an absent path or a regular file to write; it is " + kind);
   fd_ = ::open(temp_.c_str(), open_flags | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0 && (errno == ENOENT || errno == ENOTDIR))
     throw UserError(path_, "", "an existing folder to write the file into, found none");

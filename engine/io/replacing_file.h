@@ -14,7 +14,9 @@ namespace pyro {
 class ReplacingFile {
  public:
   // Creates `temporary` with `open_flags` (O_CREAT | O_TRUNC | O_CLOEXEC are added). Throws
-  // UserError when the destination's folder does not exist, IoError when the file cannot be made.
+  // UserError when the destination's folder does not exist or the destination is neither absent
+  // nor a regular file (a device node, FIFO, socket or folder), IoError when the file cannot be
+  // made.
   ReplacingFile(std::string path, std::string temporary, int open_flags);
   ~ReplacingFile();
   ReplacingFile(const ReplacingFile&) = delete;

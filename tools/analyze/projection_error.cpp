@@ -5,6 +5,7 @@
 
 #include "engine/core/format_text.h"
 #include "engine/core/user_error.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/text_file.h"
 #include "engine/math/billboard_alignment.h"
 #include "tools/charts/plot_script.h"
@@ -76,6 +77,7 @@ AnalysisReport analyze_projection_error(const ProjectionErrorOptions& a) {
 AnalysisReport write_projection_error_figures(const ProjectionErrorOptions& a) {
   if (a.out.empty())
     throw UserError("command line", "--out", "--surface needs --out DIR, the folder to write to");
+  OutputGate().writes({a.out, "--out", OutputShape::container}).check();
   std::vector<std::string> names;
   if (a.surface == "all") {
     names = alignment_figure_names();

@@ -6,8 +6,10 @@
 #include "engine/core/content_path.h"
 #include "engine/core/format_text.h"
 #include "engine/core/user_error.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/png_file.h"
 #include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_inputs.h"
 #include "tools/bake/six_way_folder.h"
 #include "tools/bake/six_way_frame.h"
 
@@ -33,7 +35,9 @@ void write_picture(const RgbImage& picture, const std::string& path) {
 
 AnalysisReport analyze_six_way(const SixWayAnalysisOptions& a) {
   const std::string file = a.scene.empty() ? content_path("scenes/six_way_smoke.json") : a.scene;
-  const SixWayErrorReport r = measure_six_way_error(load_scene(file), a.error);
+  const SceneDescription scene = load_scene(file);
+  OutputGate().reads(scene_inputs(file, scene)).writes_file(a.image, "--image").check();
+  const SixWayErrorReport r = measure_six_way_error(scene, a.error);
   if (!a.image.empty()) write_picture(r.picture, a.image);
   nlohmann::json directions = nlohmann::json::array();
   for (const SixWayDirectionError& e : r.directions)
@@ -68,6 +72,7 @@ std::string relight_six_way_bake(const SixWayRelightOptions& a) {
   const glm::vec3 towards(a.light.at(0), a.light.at(1), a.light.at(2));
   if (glm::length(towards) < 1e-6f)
     throw UserError("", "--light", "expected a non-zero direction towards the light, found 0 0 0");
+  OutputGate().reads(a.folder, "the six-way bake").writes_file(a.image, "--image").check();
   const SixWayFrame frame = unpack_six_way(read_six_way_frame(a.folder, a.frame));
   write_picture(relight_six_way(frame, towards), a.image);
   return format_text("relit frame %d of %s (%dx%d) for the light towards %s into %s\n", a.frame,

@@ -4,11 +4,12 @@
 #include <filesystem>
 
 #include "engine/core/format_text.h"
-#include "engine/core/same_file.h"
 #include "engine/core/user_error.h"
+#include "engine/io/output_gate.h"
 #include "systems/flipbook_fire/flipbook_atlas.h"
 #include "systems/runtime/open_scene/open_scene.h"
 #include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_inputs.h"
 #include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tools/bake/six_way_bake.h"
 
@@ -16,18 +17,26 @@ namespace pyro {
 
 namespace {
 
-// The bake replaces --out as a whole: it may not hold (or be) the scene it reads.
-void check_bake_destination(const BakeOptions& a) {
-  std::filesystem::path folder = std::filesystem::path(a.scene).parent_path();
-  if (folder.empty()) folder = ".";
-  for (std::filesystem::path at = std::filesystem::absolute(folder).lexically_normal(); !at.empty();
-       at = at.parent_path()) {
-    if (same_file(at.string(), a.out))
-      throw UserError(a.out, "--out",
-                      "a folder that does not hold the scene file \"" + a.scene +
-                          "\": the bake replaces the folder as a whole");
-    if (at == at.parent_path()) break;
+// The bake replaces --out as a whole (the gate: engine/io/output_gate.h), and what it holds in
+// memory and writes must fit: the frames simulated (with their motion for an atlas) and the
+// atlas images, whose sides the engine's readers limit.
+void check_bake_destination(const BakeOptions& a, const SceneDescription& scene) {
+  OutputGate()
+      .reads(scene_inputs(a.scene, scene))
+      .writes({a.out, "--out", OutputShape::folder, flipbook_bake_output_kind(), a.flipbook.overwrite})
+      .check();
+  const FlipbookBakeOptions& o = a.flipbook;
+  const int64_t frame_pixels = int64_t(o.width) * o.height;
+  const int64_t simulated = int64_t(o.frames) + o.loop_blend;
+  if (a.kind != BakeKind::atlas) {
+    check_memory_need("--frames", "the simulated frames", simulated * frame_pixels * 4);
+    return;
   }
+  check_image_size("--atlas", "an atlas", int64_t(o.atlas_columns) * o.width, int64_t(o.atlas_rows) * o.height);
+  // Per frame pixel: the frame (4 bytes) and its motion sums (3 floats); per atlas pixel: the
+  // colour and motion PNGs (3 + 4 bytes) and EXRs (2 x 4 halves), and their packing.
+  const int64_t atlas_pixels = int64_t(o.atlas_columns) * o.atlas_rows * frame_pixels;
+  check_memory_need("--atlas", "the atlas and its simulated frames", simulated * frame_pixels * 16 + atlas_pixels * 40);
 }
 
 SixWayBakeOptions six_way_options(const FlipbookBakeOptions& flipbook) {
@@ -36,6 +45,7 @@ SixWayBakeOptions six_way_options(const FlipbookBakeOptions& flipbook) {
   options.width = flipbook.width;
   options.height = flipbook.height;
   options.loop_blend = flipbook.loop_blend;
+  options.overwrite = flipbook.overwrite;
   return options;
 }
 
@@ -102,9 +112,9 @@ BakeReport run_bake(BakeOptions a, const NoteSink& on_note) {
     a.flipbook.engine_version = PYRO_VERSION;
   }
   const SceneDescription scene = load_scene(a.scene);
-  if (a.scene != "-") check_bake_destination(a);
   OpenSceneOptions open;
   open.runtime = check_kind(scene, a);
+  check_bake_destination(a, scene);
   open.description = scene;
   open.on_note = on_note;
   const OpenedScene opened = open_scene(a.scene, open);  // with the scene's quality pick

@@ -147,7 +147,7 @@ SixWayBakeResult bake_six_way(SceneRuntime& runtime, const SixWayBakeOptions& op
                               const std::string& out) {
   namespace fs = std::filesystem;
   const auto t0 = std::chrono::steady_clock::now();
-  FolderReplacement staging(out);
+  FolderReplacement staging(out, flipbook_bake_output_kind(), options.overwrite);
   fs::create_directories(staging.path() / kFolderA);
   fs::create_directories(staging.path() / kFolderB);
   SixWayBakeResult result;

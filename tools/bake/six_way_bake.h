@@ -28,6 +28,7 @@ struct SixWayBakeOptions {
   int width = 256;
   int height = 384;
   int loop_blend = 8;  // as FlipbookBakeOptions::loop_blend
+  bool overwrite = false;  // as FlipbookBakeOptions::overwrite
 };
 
 struct SixWayBakeResult {

@@ -10,9 +10,9 @@
 
 #include "engine/core/content_path.h"
 #include "engine/core/file_kind.h"
-#include "engine/core/same_file.h"
 #include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/vdb_file_check.h"
 #include "engine/io/vdb_reader.h"
 #include "engine/io/vdb_resampled_volume.h"
@@ -83,12 +83,7 @@ nlohmann::json make_file(const ImportScaleOptions& o, const std::string& file) {
 // --keep FILE is refused before any work when it would replace the source or cannot be written.
 void check_kept_file(const ImportScaleOptions& o) {
   if (o.keep.empty()) return;
-  std::error_code ec;
-  if (fs::is_directory(o.keep, ec)) throw UserError(o.keep, "--keep", "a file name, found a folder");
-  const fs::path parent = fs::path(o.keep).parent_path();
-  if (!parent.empty() && !fs::is_directory(parent, ec))
-    throw UserError(o.keep, "--keep", "an existing folder for the file, found none at \"" + parent.string() + "\"");
-  if (!o.source.empty()) refuse_output_over_inputs(o.keep, "--keep", {{o.source, "the --source file"}});
+  OutputGate().reads(o.source, "the --source file").writes_file(o.keep, "--keep").check();
 }
 
 // A kept file is an input like any other: one cut short (a full disk, a killed writer) or damaged

@@ -11,6 +11,7 @@
 #include "engine/core/stopwatch.h"
 #include "engine/core/user_error.h"
 #include "engine/io/isolated_call.h"
+#include "engine/io/output_gate.h"
 #include "engine/volume/puff_sequence.h"
 #include "systems/runtime/cloud_import/vdb_sequence_import.h"
 
@@ -96,6 +97,7 @@ std::vector<VdbSequenceMember> write_members(const VdbSequenceBenchOptions& o, i
 nlohmann::json bench_vdb_sequence(const VdbSequenceBenchOptions& o) {
   if (o.lengths.empty() || *std::min_element(o.lengths.begin(), o.lengths.end()) < 1)
     throw UserError("", "--frames", "one or more sequence lengths, each at least 1");
+  OutputGate().writes({o.keep, "--keep", OutputShape::container}).check();
   const WorkFolder work(o.keep);
   nlohmann::json out = {{"side", o.side}, {"error_target", o.error}, {"runs", nlohmann::json::array()}};
   ProgressTask task(o.progress, "bench vdb-sequence", 2 * o.lengths.size());

@@ -8,6 +8,7 @@
 #include "engine/core/format_text.h"
 #include "engine/core/user_error.h"
 #include "engine/io/io_error.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/text_file.h"
 #include "tools/charts/charts.h"
 #include "tools/charts/plot_script.h"
@@ -89,19 +90,14 @@ ChartTable make_chart(const ChartRunOptions& a) {
           a.name + "\"");
 }
 
-// Before any measuring: --out must be a folder or creatable as one, in a folder that can be
-// written (a mistake found after minutes of work wastes them).
+// Before any measuring, --out and the chart's two files pass the gate (engine/io/output_gate.h):
+// a mistake found after minutes of work wastes them.
 void check_out_dir(const ChartRunOptions& a) {
-  std::error_code ec;
-  if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
-    throw UserError(a.out, "--out", "a folder for the chart's files, found a file");
-  fs::path existing = fs::absolute(a.out, ec);
-  while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path())
-    existing = existing.parent_path();
-  if (!fs::is_directory(existing, ec))
-    throw UserError(a.out, "--out", "a folder path, found a file at \"" + existing.string() + "\"");
-  if (::access(existing.c_str(), W_OK) != 0)
-    throw IoError(existing.string(), "write into the folder", errno);
+  OutputGate()
+      .writes({a.out, "--out", OutputShape::container})
+      .writes_file((fs::path(a.out) / (a.name + ".csv")).string(), "--out")
+      .writes_file(a.csv_only ? "" : (fs::path(a.out) / (a.name + ".png")).string(), "--out")
+      .check();
 }
 
 void make_out_dir(const ChartRunOptions& a) {

@@ -8,12 +8,14 @@
 
 #include "engine/core/user_error.h"
 #include "engine/io/io_error.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/staging_folder.h"
 #include "engine/io/text_file.h"
 #include "systems/runtime/open_scene/open_scene.h"
 #include "systems/runtime/scene/scene_loader.h"
 #include "systems/runtime/scene_runtime/frame_range.h"
 #include "systems/runtime/scene_runtime/render_identity.h"
+#include "systems/runtime/scene_runtime/scene_inputs.h"
 #include "tools/farm/farm_collect.h"
 #include "tools/farm/farm_record.h"
 #include "tools/farm/frame_chunks.h"
@@ -104,6 +106,10 @@ FarmRecord new_record(const FarmSubmitRequest& a, const std::string& dir) {
   FarmRecord record;
   record.scene = fs::absolute(a.scene).lexically_normal().string();
   const SceneDescription scene = load_scene(record.scene);
+  OutputGate()
+      .reads(scene_inputs(record.scene, scene))
+      .writes({dir, "--out", OutputShape::folder, render_output_kind()})
+      .check();
   RuntimeOptions options = a.runtime;  // as `pyro render` sets them for the identity
   options.readback = false;
   options.width_override = a.width;
@@ -143,6 +149,11 @@ std::string submit_farm(const FarmSubmitRequest& a) {
 std::string collect_farm_job(const FarmCollectRequest& a, const NoteSink& note) {
   const FarmRecord record = read_farm_record(a.dir);
   if (!a.video.empty()) check_video_path(a.video, "--video");
+  // The frames' folder is the farm's own (checked as an output without its contents).
+  OutputGate()
+      .writes({a.dir, "DIR", OutputShape::folder, render_output_kind(), true})
+      .writes_file(a.video, "--video")
+      .check();
   const FarmCollection c = collect_farm(a.dir, record, note);
   if (!c.missing.empty())
     throw UserError(a.dir, "",

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/user_error.h"
+#include "engine/io/output_gate.h"
 #include "tools/bench/bench_multiple_scattering.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/progress.h"
@@ -23,6 +24,10 @@ namespace {
 void run_bench_multiple_scattering(MultipleScatteringBenchOptions options, bool json) {
   if (!options.images.empty() && !std::filesystem::is_directory(options.images))
     throw UserError(options.images, "--images", "an existing folder for the frames");
+  OutputGate()
+      .reads(options.file, "the OpenVDB file")
+      .writes({options.images, "--images", OutputShape::container})
+      .check();
   options.progress = terminal_progress();
   options.on_note = [](const std::string& note) {
     std::fprintf(stderr, "pyro bench multiple-scattering: %s\n", note.c_str());

@@ -48,6 +48,8 @@ void add_flipbook_commands(CLI::App& app, CLI::App& analyze) {
   b->add_option("--atlas", bake->options.atlas,
                 "Write one atlas of COLUMNSxROWS tiles (e.g. 8x8; row-major from the top left) with "
                 "motion vectors and atlas.json instead of a folder of frames");
+  b->add_flag("--overwrite", bake->options.flipbook.overwrite,
+              "Replace --out even when it holds files no bake wrote (they are kept)");
   b->add_flag("--json", bake->json, "Print a JSON summary as the last line");
   b->callback([bake] {
     bake->options.kind = bake_kind(bake->six_way, bake->options.atlas);

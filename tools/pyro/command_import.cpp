@@ -14,10 +14,10 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/file_kind.h"
-#include "engine/core/same_file.h"
 #include "engine/core/user_error.h"
 #include "engine/io/durable_file.h"
 #include "engine/io/io_error.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/vdb_reader.h"
 #include "systems/runtime/cloud_import/vdb_sequence_members.h"
 #include "tools/pyro/commands.h"
@@ -39,6 +39,7 @@ struct ImportArgs {
   int samples = 256;  // the path-traced truth's paths per pixel (grids too large for a dense box)
   bool json = false;
   bool list = false;
+  bool overwrite = false;   // sequences: replace --out whatever else it holds
   double fps = 24.0;        // sequences: the source's frames per second
   double extinction = 0.0;  // sequences: 0 is automatic
 };
@@ -95,15 +96,7 @@ void check_destination(const ImportArgs& a) {
   std::snprintf(found, sizeof found, "%g", a.error);
   if (!(a.error > 0.0 && a.error <= 1.0))
     throw UserError("", "--error", std::string("a number in (0, 1], found ") + found);
-  std::error_code ec;
-  if (std::filesystem::is_directory(a.out, ec))
-    throw UserError(a.out, "--out", "a file name for the particles, found a folder");
-  const std::filesystem::path parent = std::filesystem::path(a.out).parent_path();
-  const std::string folder = parent.empty() ? "." : parent.string();
-  if (!std::filesystem::is_directory(folder, ec))
-    throw UserError(a.out, "--out", "an existing folder to write the file into, found none at \"" + folder + "\"");
-  refuse_output_over_inputs(a.out, "--out", {{a.file, "the VDB file being imported"}});
-  if (::access(folder.c_str(), W_OK) != 0) throw IoError(folder, "write into the folder", errno);
+  OutputGate().reads(a.file, "the VDB file being imported").writes_file(a.out, "--out").check();
   if (const int removed = remove_stale_temporaries(a.out); removed > 0)
     say(a, "removed " + std::to_string(removed) + " temporary file(s) of " + a.out + " that killed runs had left");
 }
@@ -119,7 +112,8 @@ void run_import(const ImportArgs& a) {
       throw UserError(a.file, "--temperature-grid",
                       "one OpenVDB file: a sequence imports its density grid only (each frame's temperature is "
                       "not imported yet), found a sequence");
-    return run_sequence_import({a.file, a.out, {a.grid, a.grid_index}, a.error, a.extinction, a.fps, a.json});
+    return run_sequence_import({a.file, a.out, {a.grid, a.grid_index}, a.error, a.extinction, a.fps, a.json,
+                                a.overwrite});
   }
   if (const std::string kind = non_regular_file_kind(a.file); !kind.empty())
     throw UserError(a.file, "", "expected an OpenVDB file, found " + kind);
@@ -163,6 +157,8 @@ void add_import_command(CLI::App& app) {
                   "Sequences: extinction per unit density per world unit (default: automatic, from the first "
                   "frame with active voxels)")
       ->check(CLI::Range(1e-9, 1e9));
+  cmd->add_flag("--overwrite", args->overwrite,
+                "A sequence: replace --out even when it holds files no import wrote (they are kept)");
   cmd->add_flag("--json", args->json, "Print a JSON summary");
   cmd->callback([args] { run_import(*args); });
 }

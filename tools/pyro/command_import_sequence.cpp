@@ -12,9 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/core/same_file.h"
 #include "engine/core/user_error.h"
 #include "engine/io/folder_replacement.h"
+#include "engine/io/output_gate.h"
+#include "engine/io/particle_sequence.h"
 #include "systems/runtime/cloud_import/vdb_sequence_import.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/stdout_text.h"
@@ -29,9 +30,6 @@ void check_sequence_destination(const SequenceImportArgs& a) {
   if (ext != ".pyroseq")
     throw UserError(a.out, "--out", "a folder name ending in \".pyroseq\" for an animated sequence, found \"" +
                                         (ext.empty() ? std::string("no extension") : ext) + "\"");
-  std::error_code ec;
-  if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
-    throw UserError(a.out, "--out", "a folder for the particle sequence, found a file");
   char found[64];
   std::snprintf(found, sizeof found, "%g", a.error);
   if (!(a.error > 0.0 && a.error <= 1.0))
@@ -71,11 +69,14 @@ void print_summary(const nlohmann::json& j) {
 void run_sequence_import(const SequenceImportArgs& a) {
   check_sequence_destination(a);
   const std::vector<VdbSequenceMember> members = find_vdb_sequence_members(a.input);
-  for (const VdbSequenceMember& m : members) refuse_output_over_inputs(a.out, "--out", {{m.path, "a member of the sequence"}});
+  OutputGate gate;
+  if (std::filesystem::is_directory(a.input)) gate.reads(a.input, "the sequence's folder");
+  for (const VdbSequenceMember& m : members) gate.reads(m.path, "a member of the sequence");
+  gate.writes({a.out, "--out", OutputShape::folder, particle_sequence_output_kind(), a.overwrite}).check();
   const auto t0 = std::chrono::steady_clock::now();
   VdbSequenceImportReport report;
   check_vdb_sequence_members(members, a.grid, terminal_progress(), &report);
-  FolderReplacement staged(a.out);
+  FolderReplacement staged(a.out, particle_sequence_output_kind(), a.overwrite);
   const ParticleSequence sequence = import_vdb_sequence(
       members, {a.grid, a.error, a.extinction, a.fps, 0}, staged.path(), terminal_progress(), &report);
   staged.commit();

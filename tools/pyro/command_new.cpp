@@ -9,6 +9,7 @@
 
 #include "engine/core/user_error.h"
 #include "engine/io/durable_file.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/parameter_text.h"
 #include "tools/pyro/commands.h"
 #include "tools/authoring/scene_templates.h"
@@ -57,6 +58,7 @@ void run_new(const NewArgs& args) {
     throw UserError("", "--template", "expected a template name (pyro new --list shows them)");
   const SceneTemplate t = find_scene_template(args.template_name);
   check_new_scene_destination(args.file, args.force);
+  OutputGate().reads(t.path, "the template").writes_file(args.file, "FILE").check();
   write_file_durably(args.file, scene_template_text(t, args.file));
   write_stdout("wrote " + args.file + " from the " + t.name + " template (pyro render " + args.file +
                " --out DIR renders it)\n");

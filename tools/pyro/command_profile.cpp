@@ -17,17 +17,17 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/trace_events.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/text_file.h"
 #include "systems/runtime/open_scene/open_scene.h"
 #include "tools/bench/bench_text.h"
 #include "tools/bench/profile_report.h"
 #include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_inputs.h"
 #include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/print_note.h"
 #include "tools/pyro/render_options.h"
-#include "tools/pyro/scene_inputs.h"
-#include "tools/pyro/trace_path.h"
 #include "tools/pyro/stdout_text.h"
 
 namespace pyro::cli {
@@ -46,9 +46,8 @@ struct ProfileArgs {
 
 // The report as tables: systems, GPU passes, particles.
 void run_profile(const ProfileArgs& a) {
-  if (!a.trace.empty()) check_trace_path(a.trace, "--trace");
   const SceneDescription scene = load_scene(a.scene);
-  if (!a.trace.empty()) refuse_output_over_inputs(a.trace, "--trace", scene_inputs(a.scene, scene));
+  OutputGate().reads(scene_inputs(a.scene, scene)).writes_file(a.trace, "--trace").check();
   OpenSceneOptions open;
   open.runtime = a.runtime;
   open.runtime.readback = false;

@@ -12,19 +12,18 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/core/same_file.h"
 #include "engine/core/user_error.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/video_file.h"
 #include "systems/runtime/open_scene/render_to_folder.h"
 #include "systems/runtime/scene/scene_loader.h"
 #include "systems/runtime/scene_runtime/frame_range.h"
+#include "systems/runtime/scene_runtime/scene_inputs.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/print_note.h"
 #include "tools/pyro/progress.h"
 #include "tools/pyro/render_options.h"
-#include "tools/pyro/scene_inputs.h"
 #include "tools/pyro/stdout_text.h"
-#include "tools/pyro/trace_path.h"
 
 namespace pyro::cli {
 
@@ -39,10 +38,6 @@ struct RenderArgs {
 
 // Everything the user can get wrong that needs no reading of the scene.
 void check_render_arguments(const FolderRenderRequest& a) {
-  std::error_code ec;
-  if (std::filesystem::exists(a.out, ec) && !std::filesystem::is_directory(a.out, ec))
-    throw UserError(a.out, "--out", "expected a folder for the frames, found a file");
-  if (!a.trace.empty()) check_trace_path(a.trace, "--trace");
   if (a.depth && a.format != "exr")
     throw UserError("--depth", "", "--format exr: only EXR frames carry a depth channel");
   if (a.format == "exr" && a.runtime.frame_scale < 1.0f)
@@ -84,14 +79,12 @@ void run_render(const RenderArgs& args) {
   const FrameRange range = parse_frame_range(args.frames, "--frames");
   check_render_arguments(a);
   const SceneDescription scene = load_scene(a.scene_path);
-  if (!a.trace.empty()) {
-    refuse_output_over_inputs(a.trace, "--trace", scene_inputs(a.scene_path, scene));
-    refuse_output_inside(a.trace, "--trace", a.out, "--out's frames and manifest");
-  }
-  if (!a.video.empty()) {
-    refuse_output_over_inputs(a.video, "--video", scene_inputs(a.scene_path, scene));
-    refuse_output_inside(a.video, "--video", a.out, "--out's frames and manifest");
-  }
+  OutputGate()
+      .reads(scene_inputs(a.scene_path, scene))
+      .writes({a.out, "--out", OutputShape::folder, render_output_kind(), a.folder.overwrite})
+      .writes_file(a.trace, "--trace")
+      .writes_file(a.video, "--video")
+      .check();
   print_render_result(args, scene, range,
                       render_to_folder(a, scene, range, print_note, terminal_progress()));
 }

@@ -16,8 +16,10 @@
 
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/text_file.h"
 #include "systems/runtime/scene/scene_loader.h"
+#include "systems/runtime/scene_runtime/scene_inputs.h"
 #include "tools/viewer/viewer.h"
 #include "tools/viewer/viewer_keys.h"
 #include "tools/pyro/commands.h"
@@ -84,16 +86,6 @@ std::vector<ViewerPress> parse_presses(const std::vector<std::string>& specs) {
   return presses;
 }
 
-void check_output_path(const std::string& path, const char* option, const char* kind) {
-  namespace fs = std::filesystem;
-  const fs::path parent = fs::path(path).parent_path();
-  std::error_code ec;
-  if (!parent.empty() && !fs::is_directory(parent, ec))
-    throw UserError(path, option, std::string("expected a ") + kind + " path in an existing folder");
-  if (fs::is_directory(path, ec))
-    throw UserError(path, option, std::string("expected a ") + kind + " file name, found a folder");
-}
-
 // FRAME:/POINTER=VALUE. VALUE is JSON (3, [0, 1, 0], "text", true); a bare word that is not JSON
 // is taken as a string, so that a choice needs no shell quoting (/render/particles=spherical).
 std::vector<ViewerSet> parse_sets(const std::vector<std::string>& specs) {
@@ -117,10 +109,37 @@ std::vector<ViewerScreenshot> parse_screenshots(const std::vector<std::string>& 
   for (const std::string& spec : specs) {
     std::string file;
     const uint64_t frame = parse_frame_prefix(spec, "--screenshot-at", "FILE, e.g. 30:shot.png", file);
-    check_output_path(file, "--screenshot-at", "PNG");
     shots.push_back({frame, file});
   }
   return shots;
+}
+
+// With --frames N the session ends after frame N - 1: a scripted action at a later frame would
+// never happen, and what it was meant to change would be saved or shot unchanged.
+void check_actions_within_frames(const ViewerOptions& o) {
+  if (o.frames <= 0) return;
+  const uint64_t end = uint64_t(o.frames);
+  const auto refuse = [&](const char* option, uint64_t frame) {
+    if (frame < end) return;
+    throw UserError(option, "", "actions at frames the session reaches, 0 to " + std::to_string(end - 1) +
+                                    " with --frames " + std::to_string(end) + ", found one at frame " +
+                                    std::to_string(frame));
+  };
+  for (const ViewerEdit& e : o.edits) refuse("--replace-at", e.frame);
+  for (const ViewerPress& p : o.presses) refuse("--press-at", p.frame);
+  for (const ViewerSet& s : o.sets) refuse("--set-at", s.frame);
+  for (uint64_t u : o.undos) refuse("--undo-at", u);
+  for (const ViewerScreenshot& s : o.screenshots) refuse("--screenshot-at", s.frame);
+}
+
+// Every file the session writes passes the gate (engine/io/output_gate.h).
+void check_view_outputs(const ViewerOptions& o, const SceneDescription& scene) {
+  OutputGate gate;
+  gate.reads(scene_inputs(o.scene, scene));
+  gate.writes_file(o.screenshot, "--screenshot");
+  for (const ViewerScreenshot& s : o.screenshots) gate.writes_file(s.file, "--screenshot-at");
+  gate.writes_file(o.save_as, "--save-as");
+  gate.check();
 }
 
 void print_view_note(const std::string& note) { std::fprintf(stderr, "pyro view: %s\n", note.c_str()); }
@@ -133,8 +152,6 @@ void run_view(const ViewArgs& a) {
   options.sets = parse_sets(a.set_at);
   options.undos = a.undo_at;
   options.screenshots = parse_screenshots(a.screenshot_at);
-  if (!a.screenshot.empty()) check_output_path(a.screenshot, "--screenshot", "PNG");
-  if (!a.save_as.empty()) check_output_path(a.save_as, "--save-as", "scene");
   options.save_as = a.save_as;
   if (!a.inspect.empty() && a.inspect[0] != '/')
     throw UserError(a.inspect, "--inspect", "expected a JSON pointer, e.g. /clouds/0");
@@ -147,7 +164,10 @@ void run_view(const ViewArgs& a) {
   options.overlay = !a.no_overlay;
   options.runtime = a.runtime;
   options.on_note = print_view_note;
-  const nlohmann::json summary = run_viewer(options, load_scene(a.scene));
+  check_actions_within_frames(options);
+  SceneDescription scene = load_scene(a.scene);
+  check_view_outputs(options, scene);
+  const nlohmann::json summary = run_viewer(options, std::move(scene));
   if (a.json) {
     write_stdout(summary.dump() + "\n");
   } else {

@@ -15,6 +15,7 @@ struct SequenceImportArgs {
   double extinction = 0.0;  // 0: automatic, from the first frame with active voxels
   double fps = 24.0;
   bool json = false;
+  bool overwrite = false;  // replace --out whatever else it holds (keeping those files)
 };
 
 void run_sequence_import(const SequenceImportArgs& args);

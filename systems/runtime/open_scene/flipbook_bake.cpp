@@ -274,7 +274,7 @@ void write_atlas(const SimulatedFrames& sim, const SceneDescription& scene,
 FlipbookBakeResult bake_flipbook(SceneRuntime& runtime, const FlipbookBakeOptions& options,
                                  const std::string& out) {
   const auto t0 = std::chrono::steady_clock::now();
-  FolderReplacement staging(out);
+  FolderReplacement staging(out, flipbook_bake_output_kind(), options.overwrite);
   const SimulatedFrames sim = simulate(runtime, options);
   FlipbookBakeResult result;
   result.removed_leftovers = staging.removed_leftovers();

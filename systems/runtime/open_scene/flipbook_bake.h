@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/io/folder_output_kind.h"
 #include "systems/flipbook_fire/flipbook_frame_fade.h"
 #include "systems/runtime/scene/scene_description.h"
 #include "systems/runtime/scene_runtime/runtime_options.h"
@@ -38,7 +39,16 @@ struct FlipbookBakeOptions {
   // An atlas of atlas_columns x atlas_rows tiles (both 0: a folder of frames); frames must fit.
   int atlas_columns = 0, atlas_rows = 0;
   std::string engine_version;  // recorded in the atlas sidecar
+  bool overwrite = false;      // replace the folder whatever else it holds (keeping those files)
 };
+
+// A bake's folder as an output (engine/io/folder_output_kind.h): frames, an atlas or six-way
+// lightmaps, each replacing the others' in a folder (bake-flipbook's three forms).
+inline FolderOutputKind flipbook_bake_output_kind() {
+  return {"flipbook bake",
+          {".partial-*"},
+          {"frame_*.png", "flipbook.json", "atlas.*", "motion.*", "six_way*"}};
+}
 
 struct FlipbookBakeResult {
   std::vector<std::string> files;  // in `out`, frames then the manifest

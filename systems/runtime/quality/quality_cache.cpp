@@ -8,6 +8,7 @@
 
 #include "engine/core/cache_folder.h"
 #include "engine/core/file_kind.h"
+#include "engine/io/output_gate.h"
 #include "engine/io/text_file.h"
 
 namespace pyro {
@@ -92,9 +93,9 @@ bool write_quality_cache(const std::string& path, const std::string& key, const 
   std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
   std::string damage;
   nlohmann::json all = read_all(path, damage);
-  if (!damage.empty() && !non_regular_file_kind(path).empty()) return false;  // never replace a non-file
   all[key] = entry;
   try {
+    OutputGate().writes_file(path, "the quality cache").check();  // never a device node or FIFO
     write_text_file(path, all.dump(1) + "\n");
   } catch (const std::exception&) {
     return false;  // a cache that cannot be written never fails the command

@@ -40,8 +40,9 @@ TEST(PyroCliBakeAtomic, AKillBetweenAnyTwoRenamesLeavesTheOldBakeOrTheNew) {
   const auto old_files = contents(old_bake), new_files = contents(new_bake);
   ASSERT_NE(old_files, new_files);
   int killed = 0;
-  // A bake of 3 frames renames 3 frames and flipbook.json into its folder, then the folder.
-  for (int n = 1; n <= 6; ++n) {
+  // A bake of 3 frames renames 3 frames, flipbook.json and its manifest into its folder, then the
+  // folder.
+  for (int n = 1; n <= 7; ++n) {
     const fs::path out = dir / ("trial_" + std::to_string(n)) / "fire";
     fs::create_directories(out.parent_path());
     fs::copy(old_bake, out);
@@ -55,7 +56,7 @@ TEST(PyroCliBakeAtomic, AKillBetweenAnyTwoRenamesLeavesTheOldBakeOrTheNew) {
     EXPECT_EQ(contents(out), new_files);
     EXPECT_TRUE(beside(out).empty()) << "kill before rename " << n << ": " << beside(out).front();
   }
-  EXPECT_EQ(killed, 5) << "every rename up to the folder's was a kill point";
+  EXPECT_EQ(killed, 6) << "every rename up to the folder's was a kill point";
 }
 
 TEST(PyroCliBakeAtomic, ABakeOfFewerFramesLeavesExactlyItsOwn) {
@@ -64,8 +65,10 @@ TEST(PyroCliBakeAtomic, ABakeOfFewerFramesLeavesExactlyItsOwn) {
   ASSERT_EQ(bake(out, 4).exit_code, 0);
   ASSERT_EQ(bake(out, 2).exit_code, 0);
   const auto files = contents(out);
-  EXPECT_EQ(files.size(), 3u);
-  EXPECT_EQ(files.count("frame_0000.png") + files.count("frame_0001.png") + files.count("flipbook.json"), 3u);
+  EXPECT_EQ(files.size(), 4u);
+  EXPECT_EQ(files.count("frame_0000.png") + files.count("frame_0001.png") + files.count("flipbook.json") +
+                files.count(".pyro_manifest.json"),
+            4u);
   // A scene using the folder loads it.
   const fs::path scene = dir / "scene.json";
   std::ofstream(scene) << R"({"fires": [{"flipbook": "fire"}], "output": {"width": 32, "height": 32}})";

@@ -1,6 +1,6 @@
 // No command overwrites its own inputs, and inputs that are not regular files are refused at
 // once with what they are: every output path is compared with every input by file identity
-// before any work (engine/core/same_file.h), and a FIFO, folder or link loop where a file is
+// before any work (engine/io/output_gate.h), and a FIFO, folder or link loop where a file is
 // expected is named as such (engine/core/file_kind.h).
 #include <gtest/gtest.h>
 #include <sys/stat.h>
