@@ -1,5 +1,6 @@
 #pragma once
 // Paths the tests need: the pyro binary, the content folder, a scratch folder.
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -8,7 +9,12 @@
 
 namespace pyro::test {
 
-inline std::string pyro_binary() { return PYRO_BINARY; }
+// The pyro the tests run: the build's, or $PYRO_TEST_BINARY (to see the command-line tests
+// fail on another build, an older one say).
+inline std::string pyro_binary() {
+  const char* other = std::getenv("PYRO_TEST_BINARY");
+  return other && *other ? other : PYRO_BINARY;
+}
 inline std::string scene_path(const std::string& name) { return content_path("scenes/" + name); }
 
 // A fresh empty folder under the system's temp folder, unique to this test.
