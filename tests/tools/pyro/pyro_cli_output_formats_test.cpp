@@ -9,12 +9,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include <ImfInputFile.h>
 #include <glm/glm.hpp>
 
 #include "components/frame_image.h"
@@ -87,6 +89,16 @@ TEST(PyroCliExr, FramesAreTheLinearFramebufferWithAlphaAndTheGroundsDepth) {
       EXPECT_NEAR(exr.depth[size_t(y) * kExrWidth + x], ground_depth(cam, x, y),
                   1e-3 * ground_depth(cam, x, y)) << x << ", " << y;
   EXPECT_EQ(exr.depth[0], std::numeric_limits<float>::infinity()) << "the sky: no geometry";
+}
+
+TEST(PyroCliExr, FramesAreCompleteOpenExrFiles) {
+  const fs::path out = test::scratch_dir("exr_complete_frames") / "out";
+  const auto r = test::render("fog.json", out, "2", 40, {"--format", "exr", "--depth"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* name : {"frame_0000.exr", "frame_0001.exr"}) {
+    Imf::InputFile file((out / name).c_str());
+    EXPECT_TRUE(file.isComplete()) << name << ": the line-offset table is written";
+  }
 }
 
 TEST(PyroCliExr, StereoWritesAFilePerEyeAndDepthNeedsExr) {
