@@ -40,10 +40,22 @@ inline int output_width(int view_width, StereoMode m) {
   return two_views_wide(m) ? 2 * view_width : view_width;
 }
 
+// What the frames hold where neither medium nor mesh covers the background (scene key
+// output.background, pyro render --background): the background colour, opaque; or nothing, the
+// frames' alpha then the coverage of the media and the meshes (systems/output/
+// transparent_frame.h).
+enum class OutputBackground { opaque, none };
+inline constexpr EnumName<OutputBackground> output_background_names[] = {
+    {OutputBackground::opaque, "opaque"}, {OutputBackground::none, "none"}};
+constexpr const auto& enum_names(OutputBackground) { return output_background_names; }
+
 struct RenderSettings {
   int width = 800;
   int height = 600;
   glm::vec3 background{0.62f, 0.68f, 0.76f};  // linear RGB
+  // OutputBackground::none: the scene targets are cleared to the background with alpha 0, so that
+  // alpha carries the coverage through the composite (the colours stay those of the opaque frame).
+  bool transparent = false;
   // The lights are entities (components/directional_light.h, ambient_light.h), gathered each
   // frame by the light phase into SceneLighting (components/scene_lighting.h).
   BillboardAlignment alignment = BillboardAlignment::viewplane;

@@ -17,7 +17,12 @@
 //                        texel for texel; else DEPTH_AWARE: upsampled_media below, FRONT:
 //                        bilinear but no media on a surface nearer than every particle, or
 //                        bilinear;
-//                        SHIMMER: heat shimmer).
+//                        SHIMMER: heat shimmer);
+//   TRANSPARENT          alpha out: the coverage of the scene (its alpha: the meshes', and the
+//                        particles' drawn into it) and of the layer over it, composited as the
+//                        colours are ("over": a = a_scene (1 - a_layer) + a_layer), the larger of
+//                        the two views' where a draw reads both; else alpha 1. The colours are
+//                        the same in both: the background is in the scene's colour either way.
 #ifndef USE_LEFT
 #define USE_LEFT 1
 #endif
@@ -44,6 +49,9 @@
 #endif
 #ifndef SRGB_ENCODE
 #define SRGB_ENCODE 0
+#endif
+#ifndef TRANSPARENT
+#define TRANSPARENT 0
 #endif
 #if SRGB_ENCODE
 #include "srgb_encode.glsl"
@@ -183,7 +191,7 @@ vec4 layer_media(sampler2D depth, sampler2D media, sampler2D media_depth,
 }
 
 vec3 view_color(sampler2D scene, sampler2D depth, sampler2D media, sampler2D media_depth,
-                sampler2D particle_depths, ivec2 texel, vec2 uv) {
+                sampler2D particle_depths, ivec2 texel, vec2 uv, out float alpha) {
   vec4 m = layer_media(depth, media, media_depth, particle_depths, texel, uv);
 #if SHIMMER
   // Heat shimmer: the scene seen through hot gas moves along a noise field, by an amount that
@@ -193,18 +201,23 @@ vec3 view_color(sampler2D scene, sampler2D depth, sampler2D media, sampler2D med
 #else
   vec2 offset = textureLod(media_depth, uv, 0.0).ba;
 #endif
-  vec3 c = textureLod(scene, uv + offset, 0.0).rgb;
+  vec4 s = textureLod(scene, uv + offset, 0.0);
 #else
-  vec3 c = texelFetch(scene, texel, 0).rgb;
+  vec4 s = texelFetch(scene, texel, 0);
 #endif
+  vec3 c = s.rgb;
+  alpha = s.a * (1.0 - m.a) + m.a;
   return c * (1.0 - m.a) + m.rgb;
 }
 #else
-vec3 view_color(sampler2D scene, sampler2D layer, ivec2 texel, vec2 uv) {
-  vec3 c = texelFetch(scene, texel, 0).rgb;
+vec3 view_color(sampler2D scene, sampler2D layer, ivec2 texel, vec2 uv, out float alpha) {
+  vec4 s = texelFetch(scene, texel, 0);
+  vec3 c = s.rgb;
+  alpha = s.a;
 #if LAYERS
   vec4 p = textureLod(layer, uv, 0.0);
   c = c * (1.0 - p.a) + p.rgb;
+  alpha = alpha * (1.0 - p.a) + p.a;
 #endif
   return c;
 }
@@ -214,26 +227,35 @@ void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy) - u_origin;
   vec2 uv = (vec2(texel) + 0.5) / u_view_size;
   vec3 c = vec3(0.0);
+  float a = 0.0, a_view = 0.0;
 #if MEDIA
 #if USE_LEFT
   c += u_left_matrix * view_color(u_left, u_left_depth, u_left_media, u_left_media_depth,
-                                  u_left_particle_depths, texel, uv);
+                                  u_left_particle_depths, texel, uv, a_view);
+  a = max(a, a_view);
 #endif
 #if USE_RIGHT
   c += u_right_matrix * view_color(u_right, u_right_depth, u_right_media, u_right_media_depth,
-                                   u_right_particle_depths, texel, uv);
+                                   u_right_particle_depths, texel, uv, a_view);
+  a = max(a, a_view);
 #endif
 #else
 #if USE_LEFT
-  c += u_left_matrix * view_color(u_left, u_left_layer, texel, uv);
+  c += u_left_matrix * view_color(u_left, u_left_layer, texel, uv, a_view);
+  a = max(a, a_view);
 #endif
 #if USE_RIGHT
-  c += u_right_matrix * view_color(u_right, u_right_layer, texel, uv);
+  c += u_right_matrix * view_color(u_right, u_right_layer, texel, uv, a_view);
+  a = max(a, a_view);
 #endif
 #endif
   c = roll_off_highlights(c);
 #if SRGB_ENCODE
   c = srgb_encode(c);
 #endif
+#if TRANSPARENT
+  o_color = vec4(c, a);
+#else
   o_color = vec4(c, 1.0);
+#endif
 }

@@ -23,8 +23,10 @@ namespace pyro {
 
 namespace {
 
-// OpenEXR's output stream over memory: the file is encoded into bytes (OpenEXR seeks back to
-// write its offset table), which are then written durably, every write checked.
+// OpenEXR's output stream over memory: the file is encoded into bytes, which are then written
+// durably, every write checked. The bytes are complete only once the Imf::OutputFile is
+// destroyed: its destructor seeks back and writes the line-offset table (where each block of
+// rows starts), which until then holds zeros.
 class MemoryStream : public Imf::OStream {
  public:
   explicit MemoryStream(const std::string& name) : Imf::OStream(name.c_str()) {}
@@ -74,9 +76,11 @@ std::string encode_exr(const std::string& path, const ExrImage& image) {
                                  reinterpret_cast<char*>(const_cast<float*>(image.depth.data())),
                                  sizeof(float), sizeof(float) * row));
   MemoryStream stream(path);
-  Imf::OutputFile file(stream, header);
-  file.setFrameBuffer(frame);
-  file.writePixels(image.height);
+  {
+    Imf::OutputFile file(stream, header);
+    file.setFrameBuffer(frame);
+    file.writePixels(image.height);
+  }  // closed: OpenEXR seeks back and writes the line-offset table as the file is destroyed
   return stream.bytes();
 }
 

@@ -12,6 +12,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/io_error.h"
 #include "engine/io/libav_error.h"
+#include "engine/io/palette_quantizer.h"
 #include "engine/io/seekable_output_file.h"
 
 extern "C" {
@@ -39,7 +40,7 @@ VideoFormat format_for(const std::string& path, const std::string& option = "") 
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".mp4") return {"mp4", "libx264", AV_PIX_FMT_YUV420P, 51, true};
   if (extension == ".webm") return {"webm", "libvpx-vp9", AV_PIX_FMT_YUV420P, 63, false};
-  if (extension == ".gif") return {"gif", "gif", AV_PIX_FMT_RGB8, 0, false};
+  if (extension == ".gif") return {"gif", "gif", AV_PIX_FMT_PAL8, 0, false};
   throw UserError(path, option, "a video file name ending in .mp4, .webm or .gif, found '" +
                                 extension + "'");
 }
@@ -80,6 +81,7 @@ struct VideoWriter::State {
   AVFrame* frame = nullptr;
   AVPacket* packet = nullptr;
   std::vector<uint8_t> rgb;  // one frame as RGB24 at the coded size
+  std::vector<std::vector<uint8_t>> held;  // GIF: every frame's rgb, until finish()
   int frames = 0;
   bool finished = false;
 
@@ -98,8 +100,11 @@ struct VideoWriter::State {
   void open_muxer();
   void open_encoder(AVRational rate, int quality);
   void open_converter();
+  void open_scaler();
   void fill_rgb(const uint8_t* pixels, int channels);
   void encode(const AVFrame* input);
+  void encode_rgb();
+  void encode_held_gif();
 };
 
 VideoWriter::State::~State() {
@@ -168,15 +173,10 @@ void VideoWriter::State::open_encoder(AVRational rate, int quality) {
 }
 
 // SWS_FULL_CHR_H_INP filters every column into the subsampled chroma (by default swscale takes
-// every other one, which aliases at coloured edges).
+// every other one, which aliases at coloured edges). GIF frames need no converter: their
+// palette indices are found here (encode_held_gif).
 void VideoWriter::State::open_converter() {
-  scaler = sws_getContext(coded_width, coded_height, AV_PIX_FMT_RGB24, coded_width, coded_height,
-                          format.pixels, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP,
-                          nullptr, nullptr, nullptr);
-  if (!scaler) throw IoError(path, "set up the colour conversion", EINVAL);
-  if (format.max_crf > 0)  // sRGB in full range to BT.709 YUV in limited range
-    sws_setColorspaceDetails(scaler, sws_getCoefficients(SWS_CS_ITU709), 1,
-                             sws_getCoefficients(SWS_CS_ITU709), 0, 0, 1 << 16, 1 << 16);
+  if (format.pixels != AV_PIX_FMT_PAL8) open_scaler();
   frame = av_frame_alloc();
   packet = av_packet_alloc();
   if (!frame || !packet) throw IoError(path, "allocate a video frame", ENOMEM);
@@ -185,6 +185,16 @@ void VideoWriter::State::open_converter() {
   frame->height = coded_height;
   check(av_frame_get_buffer(frame, 0), "allocate a video frame");
   rgb.resize(static_cast<size_t>(coded_width) * coded_height * 3);
+}
+
+void VideoWriter::State::open_scaler() {
+  scaler = sws_getContext(coded_width, coded_height, AV_PIX_FMT_RGB24, coded_width, coded_height,
+                          format.pixels, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP,
+                          nullptr, nullptr, nullptr);
+  if (!scaler) throw IoError(path, "set up the colour conversion", EINVAL);
+  if (format.max_crf > 0)  // sRGB in full range to BT.709 YUV in limited range
+    sws_setColorspaceDetails(scaler, sws_getCoefficients(SWS_CS_ITU709), 1,
+                             sws_getCoefficients(SWS_CS_ITU709), 0, 0, 1 << 16, 1 << 16);
 }
 
 // The frame as RGB24 at the coded size: alpha dropped, an odd edge repeated into the padding.
@@ -241,17 +251,53 @@ void VideoWriter::add_frame(const uint8_t* pixels, int channels) {
   if (channels != 3 && channels != 4)
     throw std::invalid_argument("VideoWriter::add_frame: channels must be 3 or 4");
   s.fill_rgb(pixels, channels);
-  s.check(av_frame_make_writable(s.frame), "allocate a video frame");
-  const uint8_t* source[1] = {s.rgb.data()};
-  const int stride[1] = {s.coded_width * 3};
-  sws_scale(s.scaler, source, stride, 0, s.coded_height, s.frame->data, s.frame->linesize);
-  s.frame->pts = s.frames++;
-  s.encode(s.frame);
+  if (s.format.pixels == AV_PIX_FMT_PAL8) {
+    s.held.push_back(s.rgb);  // encoded by finish(), with the palette of every frame
+    s.frames++;
+    return;
+  }
+  s.encode_rgb();
+}
+
+// The frame in `rgb`, converted and sent to the encoder.
+void VideoWriter::State::encode_rgb() {
+  check(av_frame_make_writable(frame), "allocate a video frame");
+  const uint8_t* source[1] = {rgb.data()};
+  const int stride[1] = {coded_width * 3};
+  sws_scale(scaler, source, stride, 0, coded_height, frame->data, frame->linesize);
+  frame->pts = frames++;
+  encode(frame);
+}
+
+// GIF: one palette of 256 colours made from the pixels of every held frame
+// (engine/io/palette_quantizer.h), each frame's pixels mapped to their nearest palette colour.
+// One palette for the whole clip: the encoder writes it once, as the global colour table, and
+// may leave pixels whose index did not change out of a frame.
+void VideoWriter::State::encode_held_gif() {
+  PaletteBuilder builder;
+  for (const std::vector<uint8_t>& f : held) builder.add_pixels(f.data(), f.size() / 3);
+  std::vector<PaletteColor> colors = builder.palette(256);
+  PaletteMapper mapper(colors);
+  colors.resize(256, colors.back());
+  for (size_t f = 0; f < held.size(); ++f) {
+    check(av_frame_make_writable(frame), "allocate a video frame");
+    auto* table = reinterpret_cast<uint32_t*>(frame->data[1]);
+    for (size_t i = 0; i < 256; ++i)  // AV_PIX_FMT_PAL8: native-endian 0xAARRGGBB, opaque
+      table[i] = 0xff000000u | uint32_t(colors[i][0]) << 16 | uint32_t(colors[i][1]) << 8 | colors[i][2];
+    for (int y = 0; y < coded_height; ++y)
+      mapper.map(held[f].data() + static_cast<size_t>(y) * coded_width * 3,
+                 static_cast<size_t>(coded_width), frame->data[0] + static_cast<ptrdiff_t>(y) * frame->linesize[0]);
+    frame->pts = static_cast<int64_t>(f);
+    std::vector<uint8_t>().swap(held[f]);
+    encode(frame);
+  }
+  held.clear();
 }
 
 void VideoWriter::finish() {
   State& s = *state_;
   if (s.finished) return;
+  if (!s.held.empty()) s.encode_held_gif();
   s.encode(nullptr);
   s.check(av_write_trailer(s.muxer), "write the video's trailer");
   avio_flush(s.io);

@@ -5,8 +5,11 @@
 //          width or height is padded to even by repeating the last column or row, so the video
 //          is then one pixel wider or taller than the frames.
 //   .webm  VP9 (libvpx-vp9), yuv420p, BT.709 limited range.
-//   .gif   GIF, each frame reduced to 256 colours (3-3-2 RGB with error diffusion); the
-//          quality does not apply. GIF frame delays are in hundredths of a second.
+//   .gif   GIF with one palette of 256 colours made from the pixels of every frame and each
+//          pixel its nearest palette colour, undithered (engine/io/palette_quantizer.h); the
+//          quality does not apply. The frames are held in memory (3 bytes a pixel each) and
+//          encoded by finish(), which needs them all to make the palette. GIF frame delays are
+//          in hundredths of a second.
 // Quality 0..100 maps linearly onto the encoder's constant-rate factor (CRF, lower is better):
 // crf = round(max_crf * (100 - quality) / 100), max_crf 51 for x264 and 63 for VP9, so the
 // default 75 is CRF 13 (x264) and 16 (VP9); 100 is CRF 0.
@@ -43,7 +46,8 @@ class VideoWriter {
   VideoWriter& operator=(const VideoWriter&) = delete;
 
   // One frame of width * height pixels, 8-bit sRGB, top row first: RGB (channels 3) or RGBA
-  // (channels 4, alpha ignored: frames are opaque). Throws IoError when encoding or writing fails.
+  // (channels 4, alpha ignored: frames are opaque). Throws IoError when encoding or writing fails
+  // (for a GIF, which only holds the frame here, when finish() encodes it).
   void add_frame(const uint8_t* pixels, int channels);
   // Flushes the encoder, writes the trailer, fsyncs and renames the file into place. Throws
   // IoError (then nothing is left under either name).

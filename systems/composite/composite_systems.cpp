@@ -93,6 +93,7 @@ void composite(ecs::World& world) {
     found = true;
   });
   const RenderSettings& settings = world.resource<const RenderSettings>();
+  compositor.set_transparent(settings.transparent);
   compositor.compose(settings.stereo_mode, frame, swap_eyes, settings.motion_blur);
   if (frame.display) {
     // The frame-scale shortcut: upscale the composed image bilinearly.

@@ -31,7 +31,7 @@ const gpu::Program& Compositor::variant(bool use_left, bool use_right, const Fea
   const size_t key = size_t(use_left) | size_t(use_right) << 1 | size_t(layers) << 2 |
                      size_t(media) << 3 | size_t(depth_aware) << 4 | size_t(shimmer) << 5 |
                      size_t(f.tiled) << 6 | size_t(encode_) << 7 | size_t(full_size) << 8 |
-                     size_t(front) << 9;
+                     size_t(front) << 9 | size_t(transparent_) << 10;
   gpu::Program& p = compose_[key];
   if (p.get() == 0) {
     auto flag = [](const char* name, bool on) { return std::string(name) + (on ? " 1" : " 0"); };
@@ -39,7 +39,8 @@ const gpu::Program& Compositor::variant(bool use_left, bool use_right, const Fea
                                         flag("LAYERS", layers), flag("MEDIA", media),
                                         flag("DEPTH_AWARE", depth_aware), flag("FRONT", front),
                                         flag("FULL_SIZE", full_size), flag("SHIMMER", shimmer),
-                                        flag("SRGB_ENCODE", encode_)};
+                                        flag("SRGB_ENCODE", encode_),
+                                        flag("TRANSPARENT", transparent_)};
     if (encode_) defines.push_back(srgb_polynomial_define());
     p = gpu::load_program(f.tiled ? "compose_tile.vert" : "fullscreen.vert", "compose.frag", defines);
   }

@@ -41,6 +41,8 @@ class Compositor {
  public:
   Compositor();
   void set_media(const MediaComposition& m) { media_ = m; }
+  // Alpha out as the coverage (the TRANSPARENT variants of compose.frag), else 1.
+  void set_transparent(bool transparent) { transparent_ = transparent; }
   // Writes one view, its layer composited, into the linear float target `out` (same size):
   // the final composition's arithmetic without the sRGB encoding, for readback.
   void resolve_linear(const EyeTargets& view, const gpu::RenderTarget& out);
@@ -80,7 +82,7 @@ class Compositor {
   const gpu::Program& variant(bool use_left, bool use_right, const Features& features);
   void upload_shimmer_noise(float time);
 
-  std::array<gpu::Program, 1024> compose_;  // compose.frag variants, compiled on first use
+  std::array<gpu::Program, 2048> compose_;  // compose.frag variants, compiled on first use
   gpu::Program media_prepare_, media_edges_, cell_nearest_depth_;
   gpu::Framebuffer prepare_fbo_;  // two outputs: media_combined and media_depth
   gpu::VertexArray empty_;
@@ -89,6 +91,7 @@ class Compositor {
   // The draws write the sRGB output's bytes themselves (srgb_encode.glsl, GL_FRAMEBUFFER_SRGB
   // off): cheaper than GL's conversion on llvmpipe. Set by compose for its draws.
   bool encode_ = false;
+  bool transparent_ = false;
   glm::ivec2 media_layer_size_{0};              // with media bound: the layers' size
   ComposeTiles tiles_;
   DetailNoise shimmer_volume_;    // made on first use

@@ -76,6 +76,10 @@ void MeshRenderer::release_unused(const std::vector<MeshInstance>& instances) {
 
 namespace {
 
+// The background's alpha: 0 when the frames are transparent, so that the scene target's alpha is
+// the meshes' coverage (their fragments write 1) and the composite carries it on.
+float background_alpha(const RenderSettings& settings) { return settings.transparent ? 0.0f : 1.0f; }
+
 // Everything the opaque image depends on, as numbers.
 std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                                const RenderSettings& settings, const SceneLighting& lighting,
@@ -88,6 +92,7 @@ std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const
   put(glm::value_ptr(lighting.sun_color), 3);
   put(glm::value_ptr(lighting.ambient), 3);
   put(glm::value_ptr(settings.background), 3);
+  k.push_back(background_alpha(settings));
   k.push_back(static_cast<float>(target.width()));
   k.push_back(static_cast<float>(target.height()));
   k.push_back(static_cast<float>(target.format()));
@@ -167,7 +172,8 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
 void MeshRenderer::leave_state(bool meshes, const RenderSettings& settings,
                                const gpu::RenderTarget& target) const {
   target.bind();
-  glClearColor(settings.background.x, settings.background.y, settings.background.z, 1.0f);
+  glClearColor(settings.background.x, settings.background.y, settings.background.z,
+               background_alpha(settings));
   glClearDepth(1.0);
   glDepthMask(GL_TRUE);
   if (!meshes) return;
@@ -185,7 +191,8 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
                                const SceneLighting& lighting, const gpu::RenderTarget& target,
                                const ShadowVolume* shadows, const FireLights* fire) {
   target.bind();
-  glClearColor(settings.background.x, settings.background.y, settings.background.z, 1.0f);
+  glClearColor(settings.background.x, settings.background.y, settings.background.z,
+               background_alpha(settings));
   glClearDepth(1.0);
   glDepthMask(GL_TRUE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

@@ -4,6 +4,7 @@
 
 #include "engine/io/exr_file.h"
 #include "systems/output/frame_names.h"
+#include "systems/output/transparent_frame.h"
 
 namespace pyro {
 
@@ -24,6 +25,7 @@ void ExrSink::write(OutputFrame& frame, const std::filesystem::path& staging) {
     image.width = views[v].width;
     image.height = views[v].height;
     image.rgba = views[v].rgba;
+    if (frame.background()) remove_linear_background(image.rgba, frame.background()->linear);
     image.depth = views[v].depth;
     write_exr((staging / names[v]).string(), image);
   }

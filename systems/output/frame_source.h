@@ -1,7 +1,9 @@
 #pragma once
 // What the output phase reads a frame back from: the runtime that drew it (SceneRuntime), or a
 // test's or an embedding program's own source.
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace pyro {
@@ -25,6 +27,13 @@ struct LinearView {
   std::vector<float> depth;
 };
 
+// Transparent frames (systems/output/transparent_frame.h): the background colour the frames were
+// composed over, as they hold it where nothing covers it, and their alpha is the coverage.
+struct FrameBackground {
+  std::array<float, 3> linear{};  // the linear views' colour (LinearView::rgba)
+  std::array<float, 3> shown{};   // the shown image's, sRGB-encoded, in [0, 1]
+};
+
 class FrameSource {
  public:
   virtual ~FrameSource() = default;
@@ -34,6 +43,9 @@ class FrameSource {
   virtual std::vector<LinearView> read_linear(bool with_depth) = 0;
   // Whether the shown image holds two views side by side (left-right stereo).
   virtual bool shown_side_by_side() = 0;
+  // For transparent frames, the background they were composed over (their alpha the coverage);
+  // nullopt: opaque frames, alpha 1.
+  virtual std::optional<FrameBackground> transparent_background() { return std::nullopt; }
 };
 
 }  // namespace pyro

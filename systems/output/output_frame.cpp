@@ -15,4 +15,9 @@ const std::vector<LinearView>& OutputFrame::linear(bool with_depth) {
   return *linear_;
 }
 
+const std::optional<FrameBackground>& OutputFrame::background() {
+  if (!background_) background_ = source_.transparent_background();
+  return *background_;
+}
+
 }  // namespace pyro

@@ -20,6 +20,8 @@ class OutputFrame {
   // a read without it).
   const std::vector<LinearView>& linear(bool with_depth);
   bool side_by_side() { return source_.shown_side_by_side(); }
+  // The background to take out of transparent frames (frame_source.h); nullopt: opaque frames.
+  const std::optional<FrameBackground>& background();
 
  private:
   int index_;
@@ -27,6 +29,7 @@ class OutputFrame {
   std::optional<ShownImage> shown_;
   std::optional<std::vector<LinearView>> linear_;
   bool linear_has_depth_ = false;
+  std::optional<std::optional<FrameBackground>> background_;
 };
 
 }  // namespace pyro

@@ -1,7 +1,8 @@
 #pragma once
-// PNG frames: each output frame as shown (sRGB, 8-bit RGB, alpha dropped: frames are opaque),
-// frame_NNNN.png, or frame_NNNN_left.png and frame_NNNN_right.png when the shown image holds two
-// views side by side (engine/io/png_file.h writes each durably).
+// PNG frames: each output frame as shown (sRGB, 8-bit RGB, alpha dropped: frames are opaque; for
+// transparent frames RGBA, straight alpha, over nothing: transparent_frame.h), frame_NNNN.png, or
+// frame_NNNN_left.png and frame_NNNN_right.png when the shown image holds two views side by side
+// (engine/io/png_file.h writes each durably).
 #include "systems/output/frame_sink.h"
 
 namespace pyro {
@@ -18,8 +19,9 @@ class PngSink : public FrameSink {
 };
 
 // Writes `shown` as `stem`.png, or `stem`_left.png and `stem`_right.png (split in halves) when
-// `two_views`; returns the paths written. For programs that write a single image.
+// `two_views`; returns the paths written. For programs that write a single image. `channels` 3:
+// RGB, alpha dropped; 4: RGBA.
 std::vector<std::string> write_shown_png(const ShownImage& shown, const std::string& stem,
-                                         bool two_views);
+                                         bool two_views, int channels = 3);
 
 }  // namespace pyro

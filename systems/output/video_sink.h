@@ -1,6 +1,7 @@
 #pragma once
 // A video of a run's frames as shown (sRGB; in left-right stereo both views side by side),
-// encoded as they are rendered (engine/io/video_file.h: .mp4, .webm or .gif by the extension).
+// encoded as they are rendered (engine/io/video_file.h: .mp4, .webm or .gif by the extension; a
+// GIF's frames are held and encoded by finish(), with one palette made from all of them).
 // The video is written to a temporary beside its path and renamed into place by finish(), which
 // the common frame calls before it moves the frames in: a failed or killed run leaves no
 // half-written video at the path. It needs every frame of the range: a resumed run draws the

@@ -1,5 +1,6 @@
 // pyro render SCENE --out DIR [--width W] [--height H] [--frames N | --frames A:B] [--json]
-//                  [--format png|exr [--depth]] [--video FILE [--video-quality Q]]
+//                  [--format png|exr [--depth]] [--background opaque|transparent]
+//                  [--video FILE [--video-quality Q]]
 //                  [--wait] [--overwrite | --resume]
 //
 // The run itself (output sinks, frame loop, the folder's identity and record) is
@@ -111,6 +112,14 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--depth", r.depth,
                 "With --format exr: a float channel Z, the view depth of the opaque geometry "
                 "(+infinity where none)");
+  cmd->add_option_function<std::string>(
+         "--background",
+         [&r](const std::string& v) {
+           r.runtime.background = v == "transparent" ? OutputBackground::none : OutputBackground::opaque;
+         },
+         "opaque (the scene's background colour) or transparent (alpha the coverage of the media "
+         "and meshes, over nothing; a video stays opaque) (default: the scene's output.background)")
+      ->check(CLI::IsMember({"opaque", "transparent"}));
   cmd->add_option("--video", r.video,
                   "Also encode the frames as shown into FILE (.mp4 H.264, .webm VP9 or .gif) at "
                   "the scene's fps; written into place only when the render succeeds");

@@ -14,6 +14,7 @@
 #include "components/emitter.h"
 #include "components/mesh_instance.h"
 #include "components/render_modes.h"
+#include "components/render_settings.h"
 #include "components/flipbook_fire.h"
 #include "components/light_keyframes.h"
 #include "components/particle_dynamics.h"
@@ -182,6 +183,7 @@ struct SceneDescription {
   int width = 800;                           // 1 .. 8192
   int height = 600;                          // 1 .. 8192
   float frames_per_second = 30.0f;           // > 0
+  OutputBackground output_background = OutputBackground::opaque;  // output.background
   glm::vec3 background{0.62f, 0.68f, 0.76f}; // linear RGB sky colour
   CameraDescription camera;
   // The scene's lights (the components double as descriptions): `light` gives one directional

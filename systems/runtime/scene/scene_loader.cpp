@@ -704,6 +704,7 @@ SceneDescription read_scene(ObjectReader& r) {
     o.integer("width", s.width);
     o.integer("height", s.height);
     o.number("fps", s.frames_per_second);
+    o.choice("background", s.output_background);
   });
   r.vec3("background", s.background);
   r.object("camera", [&](ObjectReader& c) { read_camera(c, s.camera); });

@@ -21,6 +21,7 @@ nlohmann::json pixel_settings(const SceneDescription& scene, const RuntimeOption
                       {"particles", name_of(rs.particles)},
                       {"layer_scale", rs.layer_scale},
                       {"frame_scale", o.frame_scale}};
+  if (rs.transparent) s["background"] = "none";  // absent when opaque: earlier runs' identities stay
   if (o.shading) s["shading"] = name_of(*o.shading);
   if (o.shadows_off)
     s["shadows"] = "off";

@@ -15,6 +15,7 @@ RenderSettings merge_render_settings(const SceneDescription& scene, const Runtim
   s.width = options.width_override > 0 ? options.width_override : scene.width;
   s.height = options.height_override > 0 ? options.height_override : scene.height;
   s.background = scene.background;
+  s.transparent = options.background.value_or(scene.output_background) == OutputBackground::none;
   s.alignment = options.alignment.value_or(scene.render.billboards);
   s.particles = options.particles.value_or(scene.render.particles);
   s.layer_scale = options.layer_scale.value_or(scene.render.layer_scale);

@@ -37,6 +37,7 @@ struct RuntimeOptions {
   bool shadows_off = false;
   std::optional<ShadowMethod> shadow_method;
   float frame_scale = 1.0f;                     // views at this fraction, output upscaled
+  std::optional<OutputBackground> background;   // replaces the scene's output.background
   std::optional<float> interocular;
   std::optional<float> zero_parallax_distance;
   std::optional<bool> swap_eyes;  // replaces the scene's eye order

@@ -8,6 +8,7 @@
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
 #include "systems/output/linear_readback.h"
+#include "systems/output/transparent_frame.h"
 #include "systems/runtime/scene_runtime/build_world.h"
 #include "systems/runtime/scene_runtime/load_scene_assets.h"
 #include "systems/runtime/scene_runtime/resolve_scene.h"
@@ -132,6 +133,11 @@ ShownImage SceneRuntime::read_output() {
 std::vector<LinearView> SceneRuntime::read_linear(bool with_depth) {
   make_current_();
   return read_linear_views(world_, with_depth);
+}
+
+std::optional<FrameBackground> SceneRuntime::transparent_background() {
+  make_current_();
+  return held_background(world_);
 }
 
 bool SceneRuntime::shown_side_by_side() {

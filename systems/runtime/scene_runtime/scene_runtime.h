@@ -91,6 +91,7 @@ class SceneRuntime : public FrameStepper, public FrameSource {
   ShownImage read_shown() override { return read_output(); }
   std::vector<LinearView> read_linear(bool with_depth) override;
   bool shown_side_by_side() override;
+  std::optional<FrameBackground> transparent_background() override;
 
  private:
   SceneRuntime(const ResolvedScene& resolved, const RuntimeOptions& options);

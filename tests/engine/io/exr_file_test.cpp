@@ -81,6 +81,20 @@ TEST(ExrFile, HeaderHoldsHalfRgbaAndFloatZZipCompressed) {
   EXPECT_TRUE(read_exr((dir / "plain.exr").string()).depth.empty());
 }
 
+// OpenEXR writes a scan-line file's line-offset table (where each block of rows starts) when the
+// OutputFile is closed; isComplete() checks that table against the file. A table left zeroed
+// (bytes taken before the close) reads as incomplete, and readers must rebuild it by scanning.
+TEST(ExrFile, WrittenFilesAreCompleteWithTheirLineOffsetTable) {
+  const fs::path dir = test::scratch_dir("exr_complete");
+  // 40 rows: three ZIP blocks of 16 rows, so the table has three entries.
+  for (const bool with_depth : {false, true}) {
+    const fs::path path = dir / (with_depth ? "depth.exr" : "plain.exr");
+    write_exr(path.string(), exr_test_image(37, 40, with_depth));
+    Imf::InputFile file(path.c_str());
+    EXPECT_TRUE(file.isComplete()) << path;
+  }
+}
+
 TEST(ExrFile, TopRowComesFirst) {
   const fs::path path = test::scratch_dir("exr_rows") / "rows.exr";
   ExrImage in{2, 3, std::vector<float>(2 * 3 * 4, 0.0f), {1.0f, 1.0f, 2.0f, 2.0f, 3.0f, 3.0f}};

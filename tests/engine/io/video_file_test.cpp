@@ -105,13 +105,23 @@ TEST(VideoFile, Mp4KeepsFramesRateAndPsnr) { expect_video_round_trip("mp4", 3); 
 
 TEST(VideoFile, WebmKeepsFramesRateAndPsnr) { expect_video_round_trip("webm", 4); }
 
-TEST(VideoFile, GifKeepsFrameCountAndSize) {
+TEST(VideoFile, GifKeepsFrameCountSizeAndColours) {
   const fs::path path = test::scratch_dir("video_gif") / "clip.gif";
   write_test_video(path, kVideoWidth, kVideoHeight);
   const VideoClip clip = read_video(path.string());
-  EXPECT_EQ(clip.frame_count(), kVideoFrames);
+  ASSERT_EQ(clip.frame_count(), kVideoFrames);
   EXPECT_EQ(clip.width, kVideoWidth);
   EXPECT_EQ(clip.height, kVideoHeight);
+  // One palette from every frame's pixels: the gradients and the disc within a few levels (a
+  // fixed 3-3-2 palette, steps of 36 and 85 levels, errs by tens of levels without dithering).
+  double sum = 0.0;
+  for (int i = 0; i < kVideoFrames; ++i) {
+    const std::vector<uint8_t> expected = video_test_frame(kVideoWidth, kVideoHeight, i);
+    for (size_t k = 0; k < expected.size(); ++k) sum += std::abs(int(clip.frames[i][k]) - expected[k]);
+  }
+  const double mean = sum / (double(kVideoFrames) * kVideoWidth * kVideoHeight * 3);
+  std::printf("gif: mean error %.3f levels of 255\n", mean);
+  EXPECT_LE(mean, 6.0);
 }
 
 TEST(VideoFile, OddSizedMp4IsPaddedToEven) {

@@ -9,12 +9,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include <ImfInputFile.h>
 #include <glm/glm.hpp>
 
 #include "components/frame_image.h"
@@ -89,6 +91,16 @@ TEST(PyroCliExr, FramesAreTheLinearFramebufferWithAlphaAndTheGroundsDepth) {
   EXPECT_EQ(exr.depth[0], std::numeric_limits<float>::infinity()) << "the sky: no geometry";
 }
 
+TEST(PyroCliExr, FramesAreCompleteOpenExrFiles) {
+  const fs::path out = test::scratch_dir("exr_complete_frames") / "out";
+  const auto r = test::render("fog.json", out, "2", 40, {"--format", "exr", "--depth"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* name : {"frame_0000.exr", "frame_0001.exr"}) {
+    Imf::InputFile file((out / name).c_str());
+    EXPECT_TRUE(file.isComplete()) << name << ": the line-offset table is written";
+  }
+}
+
 TEST(PyroCliExr, StereoWritesAFilePerEyeAndDepthNeedsExr) {
   const fs::path dir = test::scratch_dir("exr_stereo");
   const auto r = test::render("fog.json", dir / "out", "1", 24, {"--format", "exr", "--stereo", "left-right"});
@@ -133,6 +145,47 @@ TEST(PyroCliVideo, DecodesToThePngFramesWithTheFrameCountAndFps) {
   }
   std::printf("mp4 at the default quality: worst frame %.2f dB against the PNG frames\n", worst);
   EXPECT_GE(worst, 35.0);
+}
+
+// The mean and the largest absolute difference, in 8-bit levels over every channel of every
+// frame, between a GIF's frames and the PNG frames of the same render.
+struct GifError {
+  double mean = 0.0;
+  int max = 0;
+};
+
+GifError gif_error_against_pngs(const VideoClip& clip, const fs::path& frames) {
+  GifError e;
+  double sum = 0.0;
+  size_t n = 0;
+  for (int f = 0; f < clip.frame_count(); ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", f);
+    const PngImage png = read_png((frames / name).string());
+    EXPECT_EQ(png.width, clip.width);
+    EXPECT_EQ(png.height, clip.height);
+    for (size_t p = 0; p < size_t(png.width) * png.height; ++p)
+      for (int c = 0; c < 3; ++c) {
+        const int d = std::abs(int(clip.frames[f][p * 3 + c]) - png.pixels[p * png.channels + c]);
+        sum += d;
+        e.max = std::max(e.max, d);
+        ++n;
+      }
+  }
+  e.mean = n ? sum / double(n) : 0.0;
+  return e;
+}
+
+TEST(PyroCliVideo, GifFramesAreWithinEightLevelsOfThePngFrames) {
+  const fs::path dir = test::scratch_dir("video_gif_error");
+  const fs::path video = dir / "explosion.gif";
+  const auto r = test::render("explosion.json", dir / "out", "12", 64, {"--video", video.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const VideoClip clip = read_video(video.string());
+  ASSERT_EQ(clip.frame_count(), 12);
+  const GifError e = gif_error_against_pngs(clip, dir / "out");
+  std::printf("gif against the PNG frames: mean %.2f, max %d levels of 255\n", e.mean, e.max);
+  EXPECT_LE(e.mean, 8.0);
 }
 
 TEST(PyroCliVideo, LeftRightStereoIsEncodedSideBySide) {

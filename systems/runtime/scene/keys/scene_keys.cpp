@@ -10,10 +10,13 @@ namespace pyro {
 const ParameterTable& output_keys() {
   static const SceneDescription d{};
   static const ParameterTable table{
-      "output", "Image size and frame rate.",
+      "output", "Image size, frame rate and background.",
       {integer_key("width", 1, 8192, "Image width in pixels (per eye).").with_default(d.width),
        integer_key("height", 1, 8192, "Image height in pixels.").with_default(d.height),
-       number_key("fps", kPositive, "Frames per second of animation time.").with_default(d.frames_per_second)}};
+       number_key("fps", kPositive, "Frames per second of animation time.").with_default(d.frames_per_second),
+       enum_key<OutputBackground>("background",
+                                  "\"none\": frames with alpha, the media and meshes over nothing.")
+           .with_default(d.output_background)}};
   return table;
 }
 
@@ -50,7 +53,7 @@ const ParameterTable& scene_keys() {
       {string_key("name", "Scene name, for reports.").with_default(d.name),
        integer_key("seed", 0, std::numeric_limits<std::uint64_t>::max(), "Every random stream derives from it.")
            .with_default(d.seed),
-       object_key("output", output_keys(), "Image size and frame rate."),
+       object_key("output", output_keys(), "Image size, frame rate and background."),
        vec3_key("background", kNonNegative, "Linear RGB sky colour.").with_default(d.background),
        object_key("camera", camera_keys(), "The viewpoint."),
        object_key("light", light_keys(), "The directional and ambient light; not with lights."),
