@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "engine/core/printable_text.h"
 #include "engine/core/user_error.h"
 #include "engine/io/io_error.h"
 
@@ -319,7 +320,9 @@ void run_isolated(const std::string& file, const std::string& what,
                                   "): the file is damaged, or asks for more memory than allowed" +
                                   memory_note + tail_of(err));
   if (bytes[0] == 'R') {
-    if (!err.empty()) std::fputs(err.c_str(), stderr);  // the reader's own warnings
+    // The reader's own warnings (OpenVDB's log), each line escaped and prefixed.
+    const std::string said = printable_lines(err, "pyro: " + printable(file) + ": OpenVDB: ");
+    if (!said.empty()) std::fputs(said.c_str(), stderr);
     take(bytes.substr(1));
     return;
   }

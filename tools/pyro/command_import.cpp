@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/file_kind.h"
+#include "engine/core/printable_text.h"
 #include "engine/core/user_error.h"
 #include "engine/io/durable_file.h"
 #include "engine/io/io_error.h"
@@ -74,19 +75,19 @@ void print_import(const ImportArgs& a, const VdbFileImport& import) {
   } else if (summary["measured"].get<bool>()) {
     std::printf("%s: %llu active voxels -> %llu particles, image RMSE over %d views mean %.4f, max %.4f "
                 "(target %g %s), %.3f s; wrote %s\n",
-                a.file.c_str(), (unsigned long long)grid.active_voxels, summary["particles"].get<unsigned long long>(),
+                printable(a.file).c_str(), (unsigned long long)grid.active_voxels, summary["particles"].get<unsigned long long>(),
                 summary["views"].get<int>(), summary["rmse_views_mean"].get<double>(),
                 summary["rmse_views_max"].get<double>(), a.error, summary["target_met"].get<bool>() ? "met" : "not met",
-                seconds, a.out.c_str());
+                seconds, printable(a.out).c_str());
   } else {
-    std::printf("%s: %llu active voxels -> %llu particles (error not measured), %.3f s; wrote %s\n", a.file.c_str(),
+    std::printf("%s: %llu active voxels -> %llu particles (error not measured), %.3f s; wrote %s\n", printable(a.file).c_str(),
                 (unsigned long long)grid.active_voxels, summary["particles"].get<unsigned long long>(), seconds,
-                a.out.c_str());
+                printable(a.out).c_str());
   }
 }
 
 void say(const ImportArgs& a, const std::string& what) {
-  std::fprintf(stderr, "pyro import-vdb: %s: %s\n", a.file.c_str(), what.c_str());
+  std::fprintf(stderr, "pyro import-vdb: %s: %s\n", printable(a.file).c_str(), printable(what).c_str());
 }
 
 // Everything about the output that can be wrong is found before the import (seconds to minutes).

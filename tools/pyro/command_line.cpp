@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/core/edit_distance.h"
+#include "engine/core/printable_text.h"
 #include "engine/core/user_error.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/io/io_error.h"
@@ -164,36 +165,7 @@ int run_parsed(CLI::App& app, int argc, char** argv) {
   return 0;
 }
 
-// How many bytes starting at `s` form one valid UTF-8 character (0: not valid).
-size_t utf8_length(std::string_view s) {
-  const auto c = static_cast<unsigned char>(s[0]);
-  size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
-  if (n == 0 || n > s.size()) return 0;
-  for (size_t k = 1; k < n; ++k)
-    if ((static_cast<unsigned char>(s[k]) >> 6) != 0x2) return 0;
-  return n;
-}
-
 }  // namespace
-
-std::string printable(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (size_t i = 0; i < text.size();) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    const size_t n = utf8_length(text.substr(i));
-    if (n == 0 || (n == 1 && (c < 0x20 || c == 0x7f))) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
-      out += escaped;
-      ++i;
-      continue;
-    }
-    out.append(text.substr(i, n));
-    i += n;
-  }
-  return out;
-}
 
 int run_command_line(CLI::App& app, int argc, char** argv) {
   int status = run_parsed(app, argc, argv);

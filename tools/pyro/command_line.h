@@ -20,9 +20,4 @@ namespace pyro::cli {
 // status, having printed the error, if any, and flushed standard output (a failed flush is 1).
 int run_command_line(CLI::App& app, int argc, char** argv);
 
-// `text` with every byte a terminal would act on escaped: control characters (escape sequences
-// included) as \xNN, and bytes that are not valid UTF-8 the same way. Text taken from files and
-// arguments goes through it before it is printed.
-std::string printable(std::string_view text);
-
 }  // namespace pyro::cli

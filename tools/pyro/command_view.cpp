@@ -121,7 +121,7 @@ void check_actions_within_frames(const ViewerOptions& o) {
   const uint64_t end = uint64_t(o.frames);
   const auto refuse = [&](const char* option, uint64_t frame) {
     if (frame < end) return;
-    throw UserError(option, "", "actions at frames the session reaches, 0 to " + std::to_string(end - 1) +
+    throw UserError("", option, "actions at frames the session reaches, 0 to " + std::to_string(end - 1) +
                                     " with --frames " + std::to_string(end) + ", found one at frame " +
                                     std::to_string(frame));
   };

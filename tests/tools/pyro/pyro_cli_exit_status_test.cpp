@@ -223,12 +223,5 @@ TEST(PyroCliExitStatus, SignalsEndARenderCleanlyWith128PlusTheSignal) {
   }
 }
 
-TEST(PyroCliExitStatus, PrintableEscapesControlBytesAndBrokenUtf8) {
-  EXPECT_EQ(cli::printable("plain, caf\xc3\xa9"), "plain, caf\xc3\xa9");
-  EXPECT_EQ(cli::printable("a\x1b[31mb"), "a\\x1b[31mb");
-  EXPECT_EQ(cli::printable("x\xff\xc3"), "x\\xff\\xc3");
-  EXPECT_EQ(cli::printable("line\nbreak\x7f"), "line\\x0abreak\\x7f");
-}
-
 }  // namespace
 }  // namespace pyro

@@ -8,8 +8,10 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
+#include "engine/io/vdb_reader.h"
 #include "tests/support/cli_render.h"
 #include "tests/support/test_paths.h"
 
@@ -147,6 +149,30 @@ TEST(PyroCliInputs, BytesFromFilesAreEscapedInMessages) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << "a raw escape reached stderr";
   EXPECT_NE(r.err.find("\\x1b[2Jcloudz"), std::string::npos) << r.err;
+}
+
+// OpenVDB's own log (a second grid of the same name, here) reaches stderr as pyro's lines: each
+// prefixed with pyro and the file, its colour dropped, its bytes escaped (the file name holds an
+// escape byte).
+TEST(PyroCliInputs, OpenVdbLogLinesArePrefixedAndEscaped) {
+  const fs::path dir = test::scratch_dir("inputs_vdb_log");
+  const fs::path vdb = dir / "two\x1b" "densities.vdb";
+  VdbGridToWrite grid;
+  grid.name = "density";
+  grid.dims = {4, 4, 4};
+  grid.values.assign(64, 0.5f);
+  write_vdb_grids(vdb.string(), {grid, grid});
+  const auto r = test::run_pyro({"import-vdb", vdb.string(), "--out", (dir / "out.pyrop").string(),
+                                 "--width", "16", "--height", "16"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ((r.err + r.out).find('\x1b'), std::string::npos) << r.err << r.out;
+  std::istringstream lines(r.err);
+  int from_openvdb = 0;
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_EQ(line.rfind("pyro", 0), 0u) << "a line not prefixed: " << line;
+    from_openvdb += line.find(": OpenVDB: ") != std::string::npos;
+  }
+  EXPECT_GT(from_openvdb, 0) << "OpenVDB said nothing of the second grid: " << r.err;
 }
 
 }  // namespace

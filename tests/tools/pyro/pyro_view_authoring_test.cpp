@@ -9,6 +9,7 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +24,7 @@ namespace pyro {
 namespace {
 
 namespace fs = std::filesystem;
+using Args = std::vector<std::string>;
 
 // Pretty-printed by hand, with texts a re-serialiser would change ("0.40", the layout).
 const char* kAuthoringScene = R"({
@@ -142,6 +144,27 @@ TEST(PyroViewAuthoring, ARefusedValueEndsTheSessionWithTheLoadersMessageAndSaves
   const auto bad = test::run_pyro({"view", scene.string(), "--set-at", "2:clouds=1"});
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("FRAME:/POINTER=VALUE"), std::string::npos) << bad.err;
+}
+
+// With --frames N the session ends after frame N - 1: an action scripted for later would never
+// happen and the scene would be saved unedited, so it is refused before the window opens (no
+// display needed), and nothing is saved.
+TEST(PyroViewAuthoring, ActionsPastTheLastFrameAreRefusedUpFront) {
+  const fs::path dir = test::scratch_dir("view_authoring_past_frames");
+  const fs::path scene = write_authoring_scene(dir);
+  const fs::path saved = dir / "x.json";
+  for (const Args& action : {Args{"--set-at", "99:/clouds/0/density=0.5"}, Args{"--undo-at", "3"},
+                             Args{"--screenshot-at", "3:" + (dir / "late.png").string()},
+                             Args{"--press-at", "5:B"}}) {
+    Args args = {"view", scene.string(), "--frames", "3", "--save-as", saved.string()};
+    args.insert(args.end(), action.begin(), action.end());
+    const auto r = test::run_pyro_with("env -u DISPLAY", args);
+    EXPECT_EQ(r.exit_code, 2) << action[0] << "\n" << r.err;
+    EXPECT_NE(r.err.find("at " + action[0] + ": actions at frames the session reaches, 0 to 2 with --frames 3"),
+              std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(saved));
+  EXPECT_FALSE(fs::exists(dir / "late.png"));
 }
 
 }  // namespace
