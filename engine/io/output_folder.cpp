@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/user_error.h"
+#include "engine/io/content_digest.h"
 #include "engine/io/durable_file.h"
 #include "engine/io/io_error.h"
 
@@ -74,6 +75,39 @@ nlohmann::json choices_in(const nlohmann::json& j) {
                                                                                : nlohmann::json::object();
 }
 
+struct CheckedFiles {
+  std::vector<std::string> held, damaged;
+  std::map<std::string, std::string> digests;
+};
+
+// The files `listed` by manifest `m` that `out` holds, each read and checked against the SHA-256
+// the manifest records for it: held when they agree, damaged otherwise (or when none is recorded,
+// or the file cannot be read).
+CheckedFiles check_listed_files(const fs::path& out, const nlohmann::json& m,
+                                const std::vector<std::string>& listed) {
+  const nlohmann::json recorded =
+      m.contains("sha256") && m.at("sha256").is_object() ? m.at("sha256") : nlohmann::json::object();
+  CheckedFiles c;
+  std::error_code ec;
+  for (const std::string& name : listed) {
+    const fs::path file = out / name;
+    if (!fs::exists(file, ec)) continue;
+    std::string digest;
+    try {
+      digest = file_sha256(file.string());
+    } catch (const IoError&) {
+    }
+    const auto it = recorded.find(name);
+    if (!digest.empty() && it != recorded.end() && it->is_string() && *it == digest) {
+      c.held.push_back(name);
+      c.digests[name] = digest;
+    } else {
+      c.damaged.push_back(name);
+    }
+  }
+  return c;
+}
+
 }  // namespace
 
 OutputFolder::OutputFolder(const std::string& out, const std::string& identity_json,
@@ -130,9 +164,12 @@ void OutputFolder::check_manifest(OutputFolderOptions options) {
       if (f.is_string() && f.get<std::string>().find('/') == std::string::npos)
         listed.push_back(f.get<std::string>());
     if (digest_in(m) == digest_) {
-      // A run killed while moving its files in wrote the manifest first: keep what is there.
-      for (const std::string& name : listed)
-        if (fs::exists(fs::path(out_) / name, ec)) held_.push_back(name);
+      // A run killed while moving its files in wrote the manifest first: keep what arrived, and
+      // only what still has the bytes the manifest records.
+      CheckedFiles checked = check_listed_files(out_, m, listed);
+      held_ = std::move(checked.held);
+      damaged_ = std::move(checked.damaged);
+      digests_ = std::move(checked.digests);
       manifest_choices_ = choices_in(m).dump();
       return;
     }
@@ -213,19 +250,27 @@ void OutputFolder::take_killed_runs_files(bool resume) {
 void OutputFolder::commit() {
   std::set<std::string> files(held_.begin(), held_.end());
   std::error_code ec;
-  for (fs::directory_iterator it(staging_->path(), ec), end; !ec && it != end; it.increment(ec))
-    if (it->path().filename() != kStagingRecordName) files.insert(it->path().filename().string());
+  for (fs::directory_iterator it(staging_->path(), ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name == kStagingRecordName) continue;
+    files.insert(name);
+    digests_[name] = file_sha256(it->path().string());  // the bytes that are moved in
+  }
   // The manifest first: a run killed while the files move in leaves a manifest naming them
   // (check_manifest keeps those that arrived; --resume adopts the rest from the staging folder,
   // whose record goes last).
+  nlohmann::json digests = nlohmann::json::object();
+  for (const std::string& name : files) digests[name] = digests_.at(name);
   nlohmann::json manifest = {{"identity", nlohmann::json::parse(identity_json_)},
                              {"choices", nlohmann::json::parse(choices_json_)},
-                             {"files", std::vector<std::string>(files.begin(), files.end())}};
+                             {"files", std::vector<std::string>(files.begin(), files.end())},
+                             {"sha256", digests}};
   write_file_durably((fs::path(out_) / kOutputManifestName).string(), manifest.dump(1) + "\n");
   staging_->commit();
-  // The replaced run's files this one did not rewrite.
-  for (const std::string& name : stale_)
-    if (!files.count(name)) fs::remove(fs::path(out_) / name, ec);
+  // The replaced run's files, and the damaged ones, that this run did not rewrite.
+  for (const std::vector<std::string>* gone : {&stale_, &damaged_})
+    for (const std::string& name : *gone)
+      if (!files.count(name)) fs::remove(fs::path(out_) / name, ec);
   stale_.clear();
   held_.assign(files.begin(), files.end());
   created_ = false;

@@ -120,6 +120,18 @@ FarmRecord new_record(const FarmSubmitRequest& a, const std::string& dir) {
   return record;
 }
 
+// The refusal of a collection with damaged or missing frames, naming each.
+UserError incomplete_job(const std::string& dir, const FarmRecord& record, const FarmCollection& c) {
+  std::string damaged;
+  for (const std::string& name : c.damaged) damaged += (damaged.empty() ? "" : ", ") + name;
+  std::string what = "every frame of " + range_text(record.frames) + ", each with its recorded SHA-256";
+  if (!damaged.empty())
+    what += "; damaged frames (bytes differ from the SHA-256 recorded when rendered; removed): " +
+            damaged.substr(0, 800);
+  if (!c.missing.empty()) what += "; missing frames " + ranges_text(c.missing);
+  return UserError(dir, "", what + " (`pyro farm resubmit " + dir + "` renders them again)");
+}
+
 }  // namespace
 
 std::string submit_farm(const FarmSubmitRequest& a) {
@@ -144,11 +156,7 @@ std::string collect_farm_job(const FarmCollectRequest& a, const NoteSink& note) 
   const FarmRecord record = read_farm_record(a.dir);
   if (!a.video.empty()) check_video_path(a.video, "--video");
   const FarmCollection c = collect_farm(a.dir, record, note);
-  if (!c.missing.empty())
-    throw UserError(a.dir, "",
-                    "every frame of " + range_text(record.frames) + "; missing frames " +
-                        ranges_text(c.missing) + " (`pyro farm resubmit " + a.dir +
-                        "` renders them again)");
+  if (!c.missing.empty() || !c.damaged.empty()) throw incomplete_job(a.dir, record, c);
   if (!a.video.empty())
     encode_frames_video(a.dir, c.files, a.video, record.frames_per_second, a.video_quality);
   return "collected frames " + range_text(record.frames) + " into " + a.dir + " (" +

@@ -71,6 +71,13 @@ void say_what_the_folder_held(const OutputFolder& folder, const FolderRenderRequ
   else if (folder.removed_leftovers() > 0)
     note("removed " + std::to_string(folder.removed_leftovers()) +
          " leftover(s) of killed runs from " + a.out);
+  if (!folder.damaged_files().empty()) {
+    std::string names;
+    for (const std::string& name : folder.damaged_files()) names += (names.empty() ? "" : ", ") + name;
+    note(std::to_string(folder.damaged_files().size()) + " frame file(s) of " + a.out +
+         " are damaged (their bytes differ from the SHA-256 its manifest records): " +
+         names.substr(0, 400) + "; none is kept (drawn again when in the range, else removed)");
+  }
   if (folder.replaced_files() > 0)
     note("replacing " + std::to_string(folder.replaced_files()) + " file(s) of " + a.out +
          ": it " + folder.replaced_because());

@@ -2,7 +2,8 @@
 // arguments and prints a job id, and the array tasks are the batch script submit wrote, run by
 // bash once per task as Slurm would. The frames collect gathers are compared byte for byte with
 // one `pyro render` of the whole range; a deleted frame is reported as a range with a non-zero
-// exit. (tests/farm/slurm_farm_test.sh does the same on a real single-node Slurm.)
+// exit, and a damaged or swapped one by name, never certified.
+// (tests/farm/slurm_farm_test.sh does the same on a real single-node Slurm.)
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -53,10 +54,11 @@ std::vector<std::string> farm_submit_args(const fs::path& out,
   return args;
 }
 
-// Runs array task `task` of the submission's batch script as Slurm would.
-int run_farm_task(const fs::path& out, int task) {
+// Runs array task `task` of submission `submission`'s batch script as Slurm would.
+int run_farm_task(const fs::path& out, int task, int submission = 0) {
+  const std::string script = "render-" + std::to_string(submission) + ".sh";
   const std::string cmd = "SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " bash " +
-                          test::shell_quote((out / ".farm" / "render-0.sh").string()) +
+                          test::shell_quote((out / ".farm" / script).string()) +
                           " >/dev/null 2>&1";
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -136,6 +138,49 @@ TEST(PyroCliFarm, AKilledChunkIsMissingUntilResubmittedAndThenResumes) {
   const auto collected = test::run_pyro({"farm", "collect", out.string()});
   ASSERT_EQ(collected.exit_code, 0) << collected.err;
   EXPECT_EQ(farm_frames(out).size(), 6u);
+}
+
+// The render of frames 0:5 at 32x24 of `scene` into `to`, by one `pyro render`.
+std::map<std::string, std::string> single_render(const fs::path& scene, const fs::path& to) {
+  const auto r = test::run_pyro({"render", scene.string(), "--out", to.string(), "--frames", "0:5",
+                                 "--width", "32", "--height", "24"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return farm_frames(to);
+}
+
+TEST(PyroCliFarm, DamagedOrSwappedFramesAreNamedAndNeverCertified) {
+  const fs::path dir = test::scratch_dir("farm_damaged");
+  const fs::path bin = fake_sbatch_folder(dir), out = dir / "out";
+  ASSERT_EQ(farm_with_path(bin, farm_submit_args(out)).exit_code, 0);
+  ASSERT_EQ(run_farm_task(out, 0), 0);
+  ASSERT_EQ(run_farm_task(out, 1), 0);
+  const fs::path chunk = out / ".farm" / "chunks" / "0-3";
+  fs::resize_file(chunk / "frame_0001.png", fs::file_size(chunk / "frame_0001.png") / 2);
+  fs::copy_file(chunk / "frame_0000.png", chunk / "frame_0002.png",
+                fs::copy_options::overwrite_existing);
+  const auto damaged = test::run_pyro({"farm", "collect", out.string()});
+  EXPECT_EQ(damaged.exit_code, 2);
+  for (const char* name : {"chunks/0-3/frame_0001.png", "chunks/0-3/frame_0002.png", "missing frames 1:2"})
+    EXPECT_NE(damaged.err.find(name), std::string::npos) << name << "\n" << damaged.err;
+  EXPECT_FALSE(fs::exists(out / "SHA256SUMS"));
+  EXPECT_FALSE(fs::exists(out / "frame_0001.png"));
+  EXPECT_FALSE(fs::exists(out / "frame_0002.png"));
+
+  const auto resubmitted = farm_with_path(bin, {"farm", "resubmit", out.string()});
+  ASSERT_EQ(resubmitted.exit_code, 0) << resubmitted.err;
+  EXPECT_NE(resubmitted.out.find("(1 task(s): frames 1:2)"), std::string::npos) << resubmitted.out;
+  ASSERT_EQ(run_farm_task(out, 0, 1), 0);
+  const auto collected = test::run_pyro({"farm", "collect", out.string()});
+  ASSERT_EQ(collected.exit_code, 0) << collected.err;
+  const auto frames = farm_frames(out);
+  EXPECT_EQ(frames, single_render(test::scene_path("fog.json"), dir / "single"));
+
+  // A frame copied over another after the collect: named, and the checksums withdrawn.
+  fs::copy_file(out / "frame_0000.png", out / "frame_0005.png", fs::copy_options::overwrite_existing);
+  const auto swapped = test::run_pyro({"farm", "collect", out.string()});
+  EXPECT_EQ(swapped.exit_code, 2);
+  EXPECT_NE(swapped.err.find("frame_0005.png"), std::string::npos) << swapped.err;
+  EXPECT_FALSE(fs::exists(out / "SHA256SUMS"));
 }
 
 TEST(PyroCliFarm, BadInputIsRefusedAndLeavesNothing) {

@@ -1,7 +1,8 @@
 // A render's output folder is keyed on the run's content (systems/runtime/scene_runtime/run_identity.h):
 // an edited scene or asset is drawn again on --resume and counted, a folder holding another run
 // is refused naming what differs, --overwrite removes only that run's files, a reformatted scene
-// is the same run, and scenes read from pipes get the identity of what they say.
+// is the same run, scenes read from pipes get the identity of what they say, and a frame whose
+// bytes differ from the SHA-256 the manifest records is never kept.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -61,6 +62,21 @@ TEST(PyroCliRunIdentity, AnEditedSceneIsDrawnAgainOnResumeAndCounted) {
     EXPECT_NE(read_bytes(out / f), old_frames.at(f)) << f << " is the old scene's";
     EXPECT_EQ(read_bytes(out / f), read_bytes(fresh / f)) << f << " differs from a fresh render";
   }
+}
+
+TEST(PyroCliRunIdentity, ADamagedOrSwappedFrameIsDrawnAgainOnResume) {
+  const fs::path dir = test::scratch_dir("identity_damaged_frame");
+  const fs::path out = dir / "out", fresh = dir / "fresh";
+  ASSERT_EQ(test::render("fog.json", out, "4", 32).exit_code, 0);
+  ASSERT_EQ(test::render("fog.json", fresh, "4", 32).exit_code, 0);
+  fs::resize_file(out / "frame_0001.png", fs::file_size(out / "frame_0001.png") / 2);
+  fs::copy_file(out / "frame_0000.png", out / "frame_0003.png", fs::copy_options::overwrite_existing);
+  const auto resumed = test::render("fog.json", out, "4", 32, {"--resume"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("2 frame file(s) of " + out.string() + " are damaged"), std::string::npos)
+      << resumed.err;
+  EXPECT_NE(resumed.err.find("resuming: 2 of 4"), std::string::npos) << resumed.err;
+  EXPECT_EQ(contents(out), contents(fresh)) << "every frame has the bytes of a fresh render";
 }
 
 TEST(PyroCliRunIdentity, AnAssetReplacedInPlaceIsDrawnAgainOnResume) {
