@@ -183,10 +183,13 @@ void write_checksums(const std::string& dir, const FarmCollection& c, const Outp
 
 }  // namespace
 
-void refuse_other_run(const std::string& dir, const std::string& digest) {
+void refuse_other_run(const std::string& dir, const std::string& digest,
+                      const std::vector<std::string>& replaceable) {
   const nlohmann::json m = read_manifest(dir);
   std::error_code ec;
-  if (!fs::exists(fs::path(dir) / kOutputManifestName, ec) || manifest_digest(m) == digest) return;
+  if (!fs::exists(fs::path(dir) / kOutputManifestName, ec) || manifest_digest(m) == digest ||
+      std::count(replaceable.begin(), replaceable.end(), manifest_digest(m)) > 0)
+    return;
   throw UserError(dir, "",
                   "a folder for this farm job's frames; its manifest (" +
                       std::string(kOutputManifestName) +
@@ -196,7 +199,7 @@ void refuse_other_run(const std::string& dir, const std::string& digest) {
 
 FarmCollection collect_farm(const std::string& dir, const FarmRecord& record,
                             const NoteSink& note) {
-  refuse_other_run(dir, record.digest());
+  refuse_other_run(dir, record.digest(), record.superseded);
   OutputFolderOptions options;
   options.wait = true;    // a render by hand into DIR finishes first
   options.resume = true;  // takes up what a killed collect had moved into DIR's staging folder

@@ -27,8 +27,10 @@ namespace pyro {
 int frame_of_file(const std::string& name);
 
 // Throws UserError naming `dir` when its manifest holds another run than `digest` (another scene,
-// asset, settings or engine): a farm job never mixes its frames with another run's.
-void refuse_other_run(const std::string& dir, const std::string& digest);
+// asset, settings or engine) or one of `replaceable` (the job's earlier identities, whose frames
+// it replaces): a farm job never mixes its frames with another run's.
+void refuse_other_run(const std::string& dir, const std::string& digest,
+                      const std::vector<std::string>& replaceable = {});
 
 struct FarmCollection {
   std::vector<FrameRange> missing;  // the job's frames DIR lacks, as ranges

@@ -83,7 +83,8 @@ nlohmann::json farm_record_json(const FarmRecord& r) {
           {"render_options", r.render_options},
           {"partition", r.partition},
           {"frames_per_second", r.frames_per_second},
-          {"submissions", submissions}};
+          {"submissions", submissions},
+          {"superseded", r.superseded}};
 }
 
 FarmRecord farm_record_from_json(const nlohmann::json& j, const std::string& file) {
@@ -101,6 +102,7 @@ FarmRecord farm_record_from_json(const nlohmann::json& j, const std::string& fil
       field(j, "/partition", file, &J::is_string, "a partition name or \"\"").get<std::string>();
   r.frames_per_second =
       field(j, "/frames_per_second", file, &J::is_number, "the scene's fps").get<double>();
+  if (j.contains("superseded")) r.superseded = strings_from(j, "/superseded", file);
   const size_t n = field(j, "/submissions", file, &J::is_array, "the jobs submitted").size();
   for (size_t i = 0; i < n; ++i)
     r.submissions.push_back(submission_from(j, "/submissions/" + std::to_string(i), file));

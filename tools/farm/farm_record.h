@@ -31,6 +31,9 @@ struct FarmRecord {
   std::string partition;                    // empty: the cluster's default partition
   double frames_per_second = 24.0;          // the scene's, for collect --video
   std::vector<FarmSubmission> submissions;
+  // The digests of the job's earlier identities (its scene or assets edited, then the job rendered
+  // again: `pyro farm resubmit --overwrite`): DIR's frames of those are this job's to replace.
+  std::vector<std::string> superseded;
 
   std::string digest() const { return identity.at("digest").get<std::string>(); }
 };

@@ -1,7 +1,7 @@
 // pyro farm submit SCENE --out DIR --frames A:B --chunk K [--partition P] [--dry-run]
 //                  [--width W] [--height H] [--format png|exr [--depth]] [render options]
 // pyro farm collect DIR [--video FILE [--video-quality Q]]
-// pyro farm resubmit DIR [--dry-run]
+// pyro farm resubmit DIR [--dry-run] [--overwrite]
 //
 // A sequence rendered by a Slurm cluster: a job array with one task per chunk of K frames, each
 // task a `pyro render --frames a:b` into its own folder (frames are the same bytes whichever
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/user_error.h"
 #include "tools/farm/farm_jobs.h"
 #include "tools/pyro/commands.h"
 #include "tools/pyro/print_note.h"
@@ -52,6 +53,18 @@ void run_submit(FarmSubmitRequest a, const CLI::App& cmd) {
   write_stdout(submit_farm(a));
 }
 
+// The options each task's `pyro render` takes: size, format and the render options.
+void add_task_options(CLI::App* cmd, FarmSubmitRequest& a) {
+  cmd->add_option("--width", a.width, "Image width in pixels (default: the scene's)")
+      ->check(CLI::Range(1, 8192));
+  cmd->add_option("--height", a.height, "Image height in pixels (default: the scene's)")
+      ->check(CLI::Range(1, 8192));
+  cmd->add_option("--format", a.format, "Frame files: png or exr")
+      ->check(CLI::IsMember({"png", "exr"}));
+  cmd->add_flag("--depth", a.depth, "With --format exr: a view-depth channel Z");
+  add_render_options(cmd, a.runtime);
+}
+
 void add_submit(CLI::App& farm) {
   auto a = std::make_shared<FarmSubmitRequest>();
   CLI::App* cmd = farm.add_subcommand("submit",
@@ -68,14 +81,7 @@ void add_submit(CLI::App& farm) {
   cmd->add_option("--partition", a->partition, "Slurm partition (default: the cluster's)");
   cmd->add_flag("--dry-run", a->dry_run,
                 "Print the batch scripts and sbatch commands; submit nothing");
-  cmd->add_option("--width", a->width, "Image width in pixels (default: the scene's)")
-      ->check(CLI::Range(1, 8192));
-  cmd->add_option("--height", a->height, "Image height in pixels (default: the scene's)")
-      ->check(CLI::Range(1, 8192));
-  cmd->add_option("--format", a->format, "Frame files: png or exr")
-      ->check(CLI::IsMember({"png", "exr"}));
-  cmd->add_flag("--depth", a->depth, "With --format exr: a view-depth channel Z");
-  add_render_options(cmd, a->runtime);
+  add_task_options(cmd, *a);
   cmd->callback([a, cmd] { run_submit(*a, *cmd); });
 }
 
@@ -94,22 +100,34 @@ void add_collect(CLI::App& farm) {
   cmd->callback([a] { run_collect(*a); });
 }
 
-struct ResubmitArgs {
-  std::string dir;
-  bool dry_run = false;
-};
-
-void run_resubmit(const ResubmitArgs& a) { write_stdout(resubmit_farm(a.dir, a.dry_run, print_note)); }
+// A farm job's render options (as its record keeps them) parsed as `farm submit` parsed them.
+FarmSubmitRequest task_request(const std::vector<std::string>& render_options) {
+  FarmSubmitRequest a;
+  CLI::App app;
+  add_task_options(&app, a);
+  std::vector<std::string> args(render_options.rbegin(), render_options.rend());
+  try {
+    app.parse(args);
+  } catch (const CLI::ParseError& e) {
+    throw UserError("", "/render_options",
+                    std::string("render options this pyro takes (") + e.what() + ")");
+  }
+  return a;
+}
 
 void add_resubmit(CLI::App& farm) {
-  auto a = std::make_shared<ResubmitArgs>();
+  auto a = std::make_shared<FarmResubmitRequest>();
+  a->task_request = task_request;
   CLI::App* cmd = farm.add_subcommand("resubmit",
                                       "Submit again only the frames a farm job is missing "
                                       "(a new array and collect job)");
   cmd->add_option("dir", a->dir, "The --out folder of `pyro farm submit`")->required();
   cmd->add_flag("--dry-run", a->dry_run,
                 "Print the batch scripts and sbatch commands; submit nothing");
-  cmd->callback([a] { run_resubmit(*a); });
+  cmd->add_flag("--overwrite", a->overwrite,
+                "The scene or an asset changed since the submit: render the job's frames again "
+                "as they are now (refused without it)");
+  cmd->callback([a] { write_stdout(resubmit_farm(*a, print_note)); });
 }
 
 }  // namespace

@@ -24,6 +24,7 @@ FarmRecord sample_farm_record() {
   r.partition = "render";
   r.frames_per_second = 25.0;
   r.submissions.push_back({"1234", "1235", {{10, 19}, {20, 29}}});
+  r.superseded = {std::string(64, 'c')};
   return r;
 }
 

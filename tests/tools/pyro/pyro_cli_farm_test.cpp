@@ -2,7 +2,8 @@
 // arguments and prints a job id, and the array tasks are the batch script submit wrote, run by
 // bash once per task as Slurm would. The frames collect gathers are compared byte for byte with
 // one `pyro render` of the whole range; a deleted frame is reported as a range with a non-zero
-// exit, and a damaged or swapped one by name, never certified.
+// exit, a damaged or swapped one by name and never certified; resubmit refuses a job whose scene
+// was edited since submit unless told to render it again.
 // (tests/farm/slurm_farm_test.sh does the same on a real single-node Slurm.)
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -181,6 +182,42 @@ TEST(PyroCliFarm, DamagedOrSwappedFramesAreNamedAndNeverCertified) {
   EXPECT_EQ(swapped.exit_code, 2);
   EXPECT_NE(swapped.err.find("frame_0005.png"), std::string::npos) << swapped.err;
   EXPECT_FALSE(fs::exists(out / "SHA256SUMS"));
+}
+
+TEST(PyroCliFarm, ResubmitRefusesAnEditedSceneUnlessToldToRenderItAgain) {
+  const fs::path dir = test::scratch_dir("farm_edited");
+  const fs::path bin = fake_sbatch_folder(dir), out = dir / "out", scene = dir / "fog.json";
+  fs::copy_file(test::scene_path("fog.json"), scene);
+  std::vector<std::string> submit = farm_submit_args(out);
+  submit[2] = scene.string();
+  ASSERT_EQ(farm_with_path(bin, submit).exit_code, 0);
+  ASSERT_EQ(run_farm_task(out, 0), 0);
+  std::string text = test::read_bytes(scene);
+  const std::string background = "\"background\": [0.56, 0.6, 0.66]";
+  ASSERT_NE(text.find(background), std::string::npos);
+  text.replace(text.find(background), background.size(), "\"background\": [0.1, 0.2, 0.3]");
+  std::ofstream(scene, std::ios::binary) << text;
+  ASSERT_EQ(run_farm_task(out, 1), 0);  // renders the edited scene
+  EXPECT_EQ(test::run_pyro({"farm", "collect", out.string()}).exit_code, 2);
+
+  const std::string calls = test::read_bytes(bin / "calls.txt");
+  const auto refused = farm_with_path(bin, {"farm", "resubmit", out.string()});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("the scene"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("--overwrite"), std::string::npos) << refused.err;
+  EXPECT_EQ(test::read_bytes(bin / "calls.txt"), calls) << "a refused resubmit submits nothing";
+
+  const auto again = farm_with_path(bin, {"farm", "resubmit", out.string(), "--overwrite"});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("(1 task(s): frames 0:3)"), std::string::npos)
+      << "frames 4:5 are the edited scene's already\n" << again.out;
+  ASSERT_EQ(run_farm_task(out, 0, 1), 0);
+  const auto collected = test::run_pyro({"farm", "collect", out.string()});
+  ASSERT_EQ(collected.exit_code, 0) << collected.err;
+  EXPECT_EQ(farm_frames(out), single_render(scene, dir / "single"));
+  const auto nothing = farm_with_path(bin, {"farm", "resubmit", out.string()});
+  ASSERT_EQ(nothing.exit_code, 0) << nothing.err;
+  EXPECT_NE(nothing.out.find("nothing to resubmit"), std::string::npos) << nothing.out;
 }
 
 TEST(PyroCliFarm, BadInputIsRefusedAndLeavesNothing) {
