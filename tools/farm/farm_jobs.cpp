@@ -20,6 +20,7 @@
 #include "tools/farm/frame_chunks.h"
 #include "tools/farm/frames_video.h"
 #include "tools/farm/sbatch.h"
+#include "tools/farm/slurm_options.h"
 #include "tools/farm/slurm_script.h"
 
 namespace pyro {
@@ -90,6 +91,7 @@ void check_submit_request(const FarmSubmitRequest& a) {
                     "a scene file every node can read; the tasks cannot read standard input");
   if (a.depth && a.format != "exr")
     throw UserError("--depth", "", "--format exr: only EXR frames carry a depth channel");
+  check_farm_scheduler(a.scheduler);
   std::error_code ec;
   if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
     throw UserError(a.out, "--out", "expected a folder for the frames, found a file");
@@ -124,6 +126,7 @@ FarmRecord new_record(const FarmSubmitRequest& a, const std::string& dir) {
   record.pyro = this_program();
   record.render_options = a.render_options;
   record.partition = a.partition;
+  record.scheduler = a.scheduler;
   record.frames_per_second = scene.frames_per_second;
   return record;
 }

@@ -17,6 +17,7 @@ namespace pyro {
 struct FarmSubmitRequest {
   std::string scene, out, frames, partition;
   int chunk = 0;
+  FarmScheduler scheduler;  // --time, --mem, --cpus-per-task, --account, --sbatch-arg
   bool dry_run = false;  // print the batch scripts and sbatch commands; submit nothing
   int width = 0, height = 0;
   std::string format = "png";

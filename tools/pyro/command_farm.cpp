@@ -1,4 +1,5 @@
 // pyro farm submit SCENE --out DIR --frames A:B --chunk K [--partition P] [--dry-run]
+//                  [--time T] [--mem M] [--cpus-per-task N] [--account A] [--sbatch-arg=ARG ...]
 //                  [--width W] [--height H] [--format png|exr [--depth]] [render options]
 // pyro farm collect DIR [--video FILE [--video-quality Q]]
 // pyro farm resubmit DIR [--dry-run] [--overwrite]
@@ -27,8 +28,9 @@ namespace {
 
 // The farm's own options; every other option given to `farm submit` is a render option, passed
 // on to each task as given.
-const std::set<std::string> kFarmOptions = {"--out",       "--frames",  "--chunk",
-                                            "--partition", "--dry-run", "--help"};
+const std::set<std::string> kFarmOptions = {
+    "--out",  "--frames",        "--chunk",   "--partition",  "--dry-run", "--help",
+    "--time", "--cpus-per-task", "--account", "--sbatch-arg", "--mem"};
 
 std::vector<std::string> render_options_given(const CLI::App& cmd) {
   std::vector<std::string> args;
@@ -65,6 +67,20 @@ void add_task_options(CLI::App* cmd, FarmSubmitRequest& a) {
   add_render_options(cmd, a.runtime);
 }
 
+// What Slurm is asked for besides the partition (checked by tools/farm/slurm_options.h).
+void add_scheduler_options(CLI::App* cmd, FarmScheduler& s) {
+  cmd->add_option("--time", s.time,
+                  "Time limit of each render task, in Slurm's forms (90, 2:30:00, 1-12, ...)");
+  cmd->add_option("--mem", s.mem, "Memory per render task, e.g. 4G (no unit: megabytes)");
+  cmd->add_option("--cpus-per-task", s.cpus_per_task,
+                  "CPUs per render task; its render and llvmpipe use that many threads")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--account", s.account, "Slurm account every job of the farm is charged to");
+  cmd->add_option("--sbatch-arg", s.sbatch_args,
+                  "One more sbatch option for every job of the farm, as --sbatch-arg=--qos=high "
+                  "(repeatable)");
+}
+
 void add_submit(CLI::App& farm) {
   auto a = std::make_shared<FarmSubmitRequest>();
   CLI::App* cmd = farm.add_subcommand("submit",
@@ -81,6 +97,7 @@ void add_submit(CLI::App& farm) {
   cmd->add_option("--partition", a->partition, "Slurm partition (default: the cluster's)");
   cmd->add_flag("--dry-run", a->dry_run,
                 "Print the batch scripts and sbatch commands; submit nothing");
+  add_scheduler_options(cmd, a->scheduler);
   add_task_options(cmd, *a);
   cmd->callback([a, cmd] { run_submit(*a, *cmd); });
 }

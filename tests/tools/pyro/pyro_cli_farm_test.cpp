@@ -3,7 +3,7 @@
 // bash once per task as Slurm would. The frames collect gathers are compared byte for byte with
 // one `pyro render` of the whole range; a deleted frame is reported as a range with a non-zero
 // exit, a damaged or swapped one by name and never certified; resubmit refuses a job whose scene
-// was edited since submit unless told to render it again.
+// was edited since submit unless told to render it again; the scheduler options reach sbatch.
 // (tests/farm/slurm_farm_test.sh does the same on a real single-node Slurm.)
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -218,6 +218,58 @@ TEST(PyroCliFarm, ResubmitRefusesAnEditedSceneUnlessToldToRenderItAgain) {
   const auto nothing = farm_with_path(bin, {"farm", "resubmit", out.string()});
   ASSERT_EQ(nothing.exit_code, 0) << nothing.err;
   EXPECT_NE(nothing.out.find("nothing to resubmit"), std::string::npos) << nothing.out;
+}
+
+TEST(PyroCliFarm, SchedulerOptionsReachSbatchAndTheTasks) {
+  const fs::path dir = test::scratch_dir("farm_scheduler");
+  const fs::path bin = fake_sbatch_folder(dir), out = dir / "out";
+  const auto submitted = farm_with_path(
+      bin, farm_submit_args(out, {"--time", "1-02:30:00", "--mem", "4G", "--cpus-per-task", "3",
+                                  "--account", "proj_a", "--sbatch-arg=--qos=high",
+                                  "--sbatch-arg=--constraint=avx2"}));
+  ASSERT_EQ(submitted.exit_code, 0) << submitted.err;
+  const std::string calls = test::read_bytes(bin / "calls.txt");
+  const size_t split = calls.find("--\n");
+  ASSERT_NE(split, std::string::npos) << calls;
+  const std::string render = calls.substr(0, split), collect = calls.substr(split);
+  for (const char* arg : {"--time=1-02:30:00\n", "--mem=4G\n", "--cpus-per-task=3\n",
+                          "--account=proj_a\n", "--qos=high\n", "--constraint=avx2\n"})
+    EXPECT_NE(render.find(arg), std::string::npos) << arg << "\n" << render;
+  for (const char* arg : {"--account=proj_a\n", "--qos=high\n", "--constraint=avx2\n"})
+    EXPECT_NE(collect.find(arg), std::string::npos) << arg << "\n" << collect;
+  EXPECT_EQ(collect.find("--time="), std::string::npos) << collect;
+  const std::string script = test::read_bytes(out / ".farm" / "render-0.sh");
+  EXPECT_NE(script.find("export LP_NUM_THREADS=3"), std::string::npos) << script;
+  EXPECT_NE(script.find("'--threads' '3'"), std::string::npos) << script;
+  ASSERT_EQ(run_farm_task(out, 0), 0) << "the render takes --threads";
+  ASSERT_EQ(run_farm_task(out, 1), 0);
+  ASSERT_EQ(test::run_pyro({"farm", "collect", out.string()}).exit_code, 0);
+  EXPECT_EQ(farm_frames(out), single_render(test::scene_path("fog.json"), dir / "single"));
+}
+
+TEST(PyroCliFarm, BadSchedulerOptionsAreRefusedUpFront) {
+  const fs::path dir = test::scratch_dir("farm_scheduler_bad");
+  const fs::path bin = fake_sbatch_folder(dir), out = dir / "out";
+  const std::vector<std::vector<std::string>> bad = {
+      {"--time", "1h"},         {"--time", "1:75:00"},       {"--time", "2-"},
+      {"--mem", "4GB"},         {"--mem", "-4G"},            {"--cpus-per-task", "0"},
+      {"--account", "a b"},     {"--sbatch-arg=--array=0-9"}, {"--sbatch-arg=qos=high"}};
+  for (const auto& args : bad) {
+    const auto refused = farm_with_path(bin, farm_submit_args(out, args));
+    EXPECT_EQ(refused.exit_code, 2) << args[0] << " " << args.back() << "\n" << refused.err;
+    const std::string option = args[0].substr(0, args[0].find('='));
+    EXPECT_NE(refused.err.find(option), std::string::npos) << option << "\n" << refused.err;
+  }
+  EXPECT_FALSE(fs::exists(out)) << "a refused submit writes nothing";
+  EXPECT_FALSE(fs::exists(bin / "calls.txt")) << "and submits nothing";
+  const std::vector<std::vector<std::string>> good_values = {
+      {"--time", "90"},        {"--time", "2-12"},  {"--time", "30:00"},
+      {"--time", "UNLIMITED"}, {"--mem", "2048"},   {"--mem", "512M"}};
+  for (const auto& good : good_values) {
+    const auto ok = farm_with_path(bin, farm_submit_args(out, {good[0], good[1], "--dry-run"}));
+    EXPECT_EQ(ok.exit_code, 0) << good[0] << " " << good[1] << "\n" << ok.err;
+    EXPECT_NE(ok.out.find(good[0] + "=" + good[1]), std::string::npos) << ok.out;
+  }
 }
 
 TEST(PyroCliFarm, BadInputIsRefusedAndLeavesNothing) {
