@@ -75,6 +75,35 @@ nlohmann::json choices_in(const nlohmann::json& j) {
                                                                                : nlohmann::json::object();
 }
 
+// What a run was made from ({"path": canonical path, "file": device and inode} of its scene
+// file), when its identity records it.
+nlohmann::json source_in(const nlohmann::json& identity) {
+  return identity.is_object() && identity.contains("source") && identity.at("source").is_object()
+             ? identity.at("source")
+             : nlohmann::json();
+}
+
+// Whether two sources name one file: the same file by device and inode, or the same path.
+bool same_source(const nlohmann::json& a, const nlohmann::json& b) {
+  auto same = [&](const char* key) {
+    return a.contains(key) && b.contains(key) && a.at(key).is_string() && a.at(key) == b.at(key);
+  };
+  return a.is_object() && b.is_object() && (same("file") || same("path"));
+}
+
+// The entries of `out` that neither its manifest nor a run's staging names: what the folder holds
+// besides the runs pyro wrote there.
+std::vector<std::string> foreign_entries(const fs::path& out, const std::vector<std::string>& listed) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name == kOutputManifestName || staging_owner(name) != 0) continue;
+    if (std::find(listed.begin(), listed.end(), name) == listed.end()) names.push_back(name);
+  }
+  return names;
+}
+
 struct CheckedFiles {
   std::vector<std::string> held, damaged;
   std::map<std::string, std::string> digests;
@@ -121,6 +150,7 @@ OutputFolder::OutputFolder(const std::string& out, const std::string& identity_j
     check_manifest(options);
   } catch (...) {
     if (created_ && fs::is_empty(out_, ec)) fs::remove(out_, ec);
+    if (lock_fd_ >= 0) ::close(lock_fd_);  // no destructor runs: a refusal holds no lock
     throw;
   }
 }
@@ -157,6 +187,7 @@ void OutputFolder::check_manifest(OutputFolderOptions options) {
   std::error_code ec;
   std::vector<std::string> listed;
   std::string why;
+  bool earlier_render = false;
   const bool has_manifest = fs::exists(file, ec);
   if (has_manifest) {
     const nlohmann::json m = read_manifest(file);
@@ -173,19 +204,24 @@ void OutputFolder::check_manifest(OutputFolderOptions options) {
       manifest_choices_ = choices_in(m).dump();
       return;
     }
-    const nlohmann::json now = nlohmann::json::parse(identity_json_).value("parts", nlohmann::json());
+    const nlohmann::json id_now = nlohmann::json::parse(identity_json_);
     const nlohmann::json& identity = m.value("identity", nlohmann::json::object());
     const std::string of = identity.is_object() && identity.value("scene_file", nlohmann::json()).is_string()
                                ? " of " + identity.at("scene_file").get<std::string>()
                                : std::string();
-    why = "holds " + std::to_string(listed.size()) + " file(s) of another run" + of +
-          ", which differs from this one in " + describe_(parts_in(m).dump(), now.dump());
+    // An earlier render of the same scene file, alone in the folder, is this render's to replace.
+    earlier_render = same_source(source_in(identity), source_in(id_now)) &&
+                     foreign_entries(out_, listed).empty();
+    why = "holds " + std::to_string(listed.size()) + " file(s) of " +
+          (earlier_render ? "an earlier render" : "another run") + of +
+          ", which differs from this one in " +
+          describe_(parts_in(m).dump(), id_now.value("parts", nlohmann::json()).dump());
   } else {
     listed = unaccounted_frames(out_);
     if (listed.empty()) return;
     why = "holds " + std::to_string(listed.size()) + " frame files no manifest accounts for";
   }
-  if (options.overwrite || (options.resume && has_manifest)) {
+  if (options.overwrite || (options.resume && has_manifest) || earlier_render) {
     if (has_manifest) stale_ = listed;  // files no manifest names are not this engine's to remove
     replaced_because_ = why;
     return;

@@ -7,12 +7,16 @@
 //    (a quality pick), the files the folder holds and each file's SHA-256 ("sha256": {name: hex},
 //    computed as the file is moved in). A file is held only while its bytes have that digest: one
 //    truncated, edited or copied over another is damaged, never held, and commit() removes it
-//    unless the run wrote it again. A folder holds one identity: a run of
-//    another identity, or into a folder holding frames no manifest accounts for, is refused,
-//    naming what differs, unless `overwrite` (then, once the run has succeeded, the other run's
-//    files that it did not rewrite are removed; files no manifest names stay) or `resume` (the
-//    other identity's frames are stale: all are drawn again and the count said). Ranges of one
-//    identity add to the folder.
+//    unless the run wrote it again.
+//    A folder holds one identity: a run of another identity, or into a folder holding frames no
+//    manifest accounts for, is refused, naming what differs, unless
+//      - the run is made from the same source as the folder's run (the identity's "source": its
+//        scene file, the same by device and inode or by path) and the folder holds nothing else:
+//        it replaces that earlier run, as with `overwrite`;
+//      - `overwrite`: once the run has succeeded, the other run's files that it did not rewrite
+//        are removed; files no manifest names stay;
+//      - `resume`: the other identity's frames are stale: all are drawn again and the count said.
+//    Ranges of one identity add to the folder.
 //  * Staging: files are written into staging().path() and moved in by commit()
 //    (engine/io/staging_folder.h), which also records them in the manifest. The staging folder
 //    holds a record of its run's identity, so that what a killed run left can be told apart.

@@ -155,8 +155,9 @@ FolderRender render_to_folder(const FolderRenderRequest& a, const SceneDescripti
   const auto t0 = std::chrono::steady_clock::now();
   // The default flipbook baked (a note first) before the identity digests its folder.
   prepare_scene_run(scene, options);
-  OutputFolder folder(a.out, render_identity_json(scene, options, a.scene_path, a.depth).dump(),
-                      describe_identity_difference, a.folder);
+  nlohmann::json identity = render_identity_json(scene, options, a.scene_path, a.depth);
+  if (nlohmann::json source = scene_source(a.scene_path); !source.is_null()) identity["source"] = source;
+  OutputFolder folder(a.out, identity.dump(), describe_identity_difference, a.folder);
   // A quality target picks the layer scale, footprint size and time step once for the run,
   // recorded with it before anything is drawn.
   OpenSceneOptions open;

@@ -1,6 +1,7 @@
 // OutputFolder on hand-made identities: the manifest records each file's SHA-256 as it is moved
 // in, a file whose bytes no longer have it is not held (truncated, or another frame copied over
-// it).
+// it), and a run whose identity names the same source file as the folder's earlier run replaces
+// that run, unless the folder holds anything else.
 #include "engine/io/output_folder.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +74,30 @@ TEST(OutputFolder, ADamagedOrSwappedFileIsNotHeld) {
   EXPECT_FALSE(fs::exists(out / "frame_0000.png"));
   EXPECT_FALSE(fs::exists(out / "frame_0002.png"));
   EXPECT_EQ(folder_held(out, id), (std::vector<std::string>{"frame_0001.png"}));
+}
+
+TEST(OutputFolder, AnEarlierRunOfTheSameSourceIsReplacedAndOthersRefused) {
+  const fs::path out = test::scratch_dir("output_folder_source") / "out";
+  const nlohmann::json scene = {{"path", "/s/fog.json"}, {"file", "7:42"}};
+  folder_run_into(out, folder_identity("before-edit", scene),
+           {{"frame_0000.png", "old 0"}, {"frame_0001.png", "old 1"}});
+  // The same file, renamed into place by an editor (another inode, the same path).
+  const nlohmann::json saved = {{"path", "/s/fog.json"}, {"file", "7:43"}};
+  folder_run_into(out, folder_identity("after-edit", saved), {{"frame_0000.png", "new 0"}});
+  EXPECT_EQ(test::read_bytes(out / "frame_0000.png"), "new 0");
+  EXPECT_FALSE(fs::exists(out / "frame_0001.png")) << "the earlier render goes whole";
+
+  const nlohmann::json other = {{"path", "/s/mist.json"}, {"file", "7:50"}};
+  EXPECT_THROW(OutputFolder(out.string(), folder_identity("mist", other), output_folder_test_difference, {}), UserError);
+  EXPECT_THROW(OutputFolder(out.string(), folder_identity("piped"), output_folder_test_difference, {}), UserError);
+  std::ofstream(out / "notes.txt") << "the artist's";
+  const nlohmann::json linked = {{"path", "/elsewhere/link.json"}, {"file", "7:43"}};
+  EXPECT_THROW(OutputFolder(out.string(), folder_identity("edited-again", linked), output_folder_test_difference, {}),
+               UserError)
+      << "a folder holding anything else is refused";
+  fs::remove(out / "notes.txt");
+  folder_run_into(out, folder_identity("edited-again", linked), {{"frame_0000.png", "newer 0"}});
+  EXPECT_EQ(test::read_bytes(out / "frame_0000.png"), "newer 0");
 }
 
 }  // namespace
