@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/user_error.h"
+#include "engine/io/content_digest.h"
 #include "engine/io/durable_file.h"
 #include "engine/io/io_error.h"
 
@@ -74,6 +75,68 @@ nlohmann::json choices_in(const nlohmann::json& j) {
                                                                                : nlohmann::json::object();
 }
 
+// What a run was made from ({"path": canonical path, "file": device and inode} of its scene
+// file), when its identity records it.
+nlohmann::json source_in(const nlohmann::json& identity) {
+  return identity.is_object() && identity.contains("source") && identity.at("source").is_object()
+             ? identity.at("source")
+             : nlohmann::json();
+}
+
+// Whether two sources name one file: the same file by device and inode, or the same path.
+bool same_source(const nlohmann::json& a, const nlohmann::json& b) {
+  auto same = [&](const char* key) {
+    return a.contains(key) && b.contains(key) && a.at(key).is_string() && a.at(key) == b.at(key);
+  };
+  return a.is_object() && b.is_object() && (same("file") || same("path"));
+}
+
+// The entries of `out` that neither its manifest nor a run's staging names: what the folder holds
+// besides the runs pyro wrote there.
+std::vector<std::string> foreign_entries(const fs::path& out, const std::vector<std::string>& listed) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name == kOutputManifestName || staging_owner(name) != 0) continue;
+    if (std::find(listed.begin(), listed.end(), name) == listed.end()) names.push_back(name);
+  }
+  return names;
+}
+
+struct CheckedFiles {
+  std::vector<std::string> held, damaged;
+  std::map<std::string, std::string> digests;
+};
+
+// The files `listed` by manifest `m` that `out` holds, each read and checked against the SHA-256
+// the manifest records for it: held when they agree, damaged otherwise (or when none is recorded,
+// or the file cannot be read).
+CheckedFiles check_listed_files(const fs::path& out, const nlohmann::json& m,
+                                const std::vector<std::string>& listed) {
+  const nlohmann::json recorded =
+      m.contains("sha256") && m.at("sha256").is_object() ? m.at("sha256") : nlohmann::json::object();
+  CheckedFiles c;
+  std::error_code ec;
+  for (const std::string& name : listed) {
+    const fs::path file = out / name;
+    if (!fs::exists(file, ec)) continue;
+    std::string digest;
+    try {
+      digest = file_sha256(file.string());
+    } catch (const IoError&) {
+    }
+    const auto it = recorded.find(name);
+    if (!digest.empty() && it != recorded.end() && it->is_string() && *it == digest) {
+      c.held.push_back(name);
+      c.digests[name] = digest;
+    } else {
+      c.damaged.push_back(name);
+    }
+  }
+  return c;
+}
+
 }  // namespace
 
 OutputFolder::OutputFolder(const std::string& out, const std::string& identity_json,
@@ -87,6 +150,7 @@ OutputFolder::OutputFolder(const std::string& out, const std::string& identity_j
     check_manifest(options);
   } catch (...) {
     if (created_ && fs::is_empty(out_, ec)) fs::remove(out_, ec);
+    if (lock_fd_ >= 0) ::close(lock_fd_);  // no destructor runs: a refusal holds no lock
     throw;
   }
 }
@@ -123,6 +187,7 @@ void OutputFolder::check_manifest(OutputFolderOptions options) {
   std::error_code ec;
   std::vector<std::string> listed;
   std::string why;
+  bool earlier_render = false;
   const bool has_manifest = fs::exists(file, ec);
   if (has_manifest) {
     const nlohmann::json m = read_manifest(file);
@@ -130,25 +195,33 @@ void OutputFolder::check_manifest(OutputFolderOptions options) {
       if (f.is_string() && f.get<std::string>().find('/') == std::string::npos)
         listed.push_back(f.get<std::string>());
     if (digest_in(m) == digest_) {
-      // A run killed while moving its files in wrote the manifest first: keep what is there.
-      for (const std::string& name : listed)
-        if (fs::exists(fs::path(out_) / name, ec)) held_.push_back(name);
+      // A run killed while moving its files in wrote the manifest first: keep what arrived, and
+      // only what still has the bytes the manifest records.
+      CheckedFiles checked = check_listed_files(out_, m, listed);
+      held_ = std::move(checked.held);
+      damaged_ = std::move(checked.damaged);
+      digests_ = std::move(checked.digests);
       manifest_choices_ = choices_in(m).dump();
       return;
     }
-    const nlohmann::json now = nlohmann::json::parse(identity_json_).value("parts", nlohmann::json());
+    const nlohmann::json id_now = nlohmann::json::parse(identity_json_);
     const nlohmann::json& identity = m.value("identity", nlohmann::json::object());
     const std::string of = identity.is_object() && identity.value("scene_file", nlohmann::json()).is_string()
                                ? " of " + identity.at("scene_file").get<std::string>()
                                : std::string();
-    why = "holds " + std::to_string(listed.size()) + " file(s) of another run" + of +
-          ", which differs from this one in " + describe_(parts_in(m).dump(), now.dump());
+    // An earlier render of the same scene file, alone in the folder, is this render's to replace.
+    earlier_render = same_source(source_in(identity), source_in(id_now)) &&
+                     foreign_entries(out_, listed).empty();
+    why = "holds " + std::to_string(listed.size()) + " file(s) of " +
+          (earlier_render ? "an earlier render" : "another run") + of +
+          ", which differs from this one in " +
+          describe_(parts_in(m).dump(), id_now.value("parts", nlohmann::json()).dump());
   } else {
     listed = unaccounted_frames(out_);
     if (listed.empty()) return;
     why = "holds " + std::to_string(listed.size()) + " frame files no manifest accounts for";
   }
-  if (options.overwrite || (options.resume && has_manifest)) {
+  if (options.overwrite || (options.resume && has_manifest) || earlier_render) {
     if (has_manifest) stale_ = listed;  // files no manifest names are not this engine's to remove
     replaced_because_ = why;
     return;
@@ -213,19 +286,27 @@ void OutputFolder::take_killed_runs_files(bool resume) {
 void OutputFolder::commit() {
   std::set<std::string> files(held_.begin(), held_.end());
   std::error_code ec;
-  for (fs::directory_iterator it(staging_->path(), ec), end; !ec && it != end; it.increment(ec))
-    if (it->path().filename() != kStagingRecordName) files.insert(it->path().filename().string());
+  for (fs::directory_iterator it(staging_->path(), ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name == kStagingRecordName) continue;
+    files.insert(name);
+    digests_[name] = file_sha256(it->path().string());  // the bytes that are moved in
+  }
   // The manifest first: a run killed while the files move in leaves a manifest naming them
   // (check_manifest keeps those that arrived; --resume adopts the rest from the staging folder,
   // whose record goes last).
+  nlohmann::json digests = nlohmann::json::object();
+  for (const std::string& name : files) digests[name] = digests_.at(name);
   nlohmann::json manifest = {{"identity", nlohmann::json::parse(identity_json_)},
                              {"choices", nlohmann::json::parse(choices_json_)},
-                             {"files", std::vector<std::string>(files.begin(), files.end())}};
+                             {"files", std::vector<std::string>(files.begin(), files.end())},
+                             {"sha256", digests}};
   write_file_durably((fs::path(out_) / kOutputManifestName).string(), manifest.dump(1) + "\n");
   staging_->commit();
-  // The replaced run's files this one did not rewrite.
-  for (const std::string& name : stale_)
-    if (!files.count(name)) fs::remove(fs::path(out_) / name, ec);
+  // The replaced run's files, and the damaged ones, that this run did not rewrite.
+  for (const std::vector<std::string>* gone : {&stale_, &damaged_})
+    for (const std::string& name : *gone)
+      if (!files.count(name)) fs::remove(fs::path(out_) / name, ec);
   stale_.clear();
   held_.assign(files.begin(), files.end());
   created_ = false;

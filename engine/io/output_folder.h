@@ -4,12 +4,19 @@
 //    the same folder is refused (UserError) or, with `wait`, waits for the first to finish.
 //  * Manifest: `.pyro_manifest.json` in the folder records the run's identity (its digest and
 //    parts: systems/runtime/scene_runtime/run_identity.h), what the run chose once for all its ranges
-//    (a quality pick) and the files the folder holds. A folder holds one identity: a run of
-//    another identity, or into a folder holding frames no manifest accounts for, is refused,
-//    naming what differs, unless `overwrite` (then, once the run has succeeded, the other run's
-//    files that it did not rewrite are removed; files no manifest names stay) or `resume` (the
-//    other identity's frames are stale: all are drawn again and the count said). Ranges of one
-//    identity add to the folder.
+//    (a quality pick), the files the folder holds and each file's SHA-256 ("sha256": {name: hex},
+//    computed as the file is moved in). A file is held only while its bytes have that digest: one
+//    truncated, edited or copied over another is damaged, never held, and commit() removes it
+//    unless the run wrote it again.
+//    A folder holds one identity: a run of another identity, or into a folder holding frames no
+//    manifest accounts for, is refused, naming what differs, unless
+//      - the run is made from the same source as the folder's run (the identity's "source": its
+//        scene file, the same by device and inode or by path) and the folder holds nothing else:
+//        it replaces that earlier run, as with `overwrite`;
+//      - `overwrite`: once the run has succeeded, the other run's files that it did not rewrite
+//        are removed; files no manifest names stay;
+//      - `resume`: the other identity's frames are stale: all are drawn again and the count said.
+//    Ranges of one identity add to the folder.
 //  * Staging: files are written into staging().path() and moved in by commit()
 //    (engine/io/staging_folder.h), which also records them in the manifest. The staging folder
 //    holds a record of its run's identity, so that what a killed run left can be told apart.
@@ -17,6 +24,7 @@
 //    into place only once complete: durable_file.h). With `resume`, those of a killed run of the
 //    same identity are adopted into this run's staging folder; without it they are removed with
 //    the rest of the stale staging (and counted, for a note).
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,8 +62,14 @@ class OutputFolder {
   void begin(const std::string& choices_json = "{}");
 
   StagingFolder& staging() { return *staging_; }
-  // The file names the folder holds for this identity: what a resumed run may skip.
+  // The file names the folder holds for this identity, each checked against the SHA-256 the
+  // manifest records for it: what a resumed run may skip.
   const std::vector<std::string>& held_files() const { return held_; }
+  // The file names the manifest lists for this identity whose bytes differ from their recorded
+  // SHA-256 (or that have none recorded): never held; removed by commit() unless rewritten.
+  const std::vector<std::string>& damaged_files() const { return damaged_; }
+  // The SHA-256 of each held file (after commit(): of every file the folder holds for the run).
+  const std::map<std::string, std::string>& file_digests() const { return digests_; }
   // With `resume`: the file names adopted from killed runs (now in staging().path()).
   const std::vector<std::string>& adopted_files() const { return adopted_; }
   // Without `resume`: how many finished files of this identity killed runs had left (removed).
@@ -82,7 +96,8 @@ class OutputFolder {
   bool created_ = false, resume_ = false;
   int lock_fd_ = -1;
   std::string manifest_choices_;  // the manifest's choices when it holds this identity
-  std::vector<std::string> held_, adopted_;
+  std::vector<std::string> held_, adopted_, damaged_;
+  std::map<std::string, std::string> digests_;  // held file -> SHA-256
   std::vector<std::string> stale_;  // the files of the run being replaced
   std::string replaced_because_;
   int discarded_ = 0, removed_leftovers_ = 0;

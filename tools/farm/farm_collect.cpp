@@ -8,6 +8,7 @@
 
 #include "engine/core/user_error.h"
 #include "engine/io/content_digest.h"
+#include "engine/io/io_error.h"
 #include "engine/io/output_folder.h"
 #include "engine/io/staging_folder.h"
 #include "engine/io/text_file.h"
@@ -49,18 +50,31 @@ std::string manifest_digest(const nlohmann::json& m) {
                                                                : std::string();
 }
 
+// Whether `file` has the SHA-256 `m` records for its name.
+bool has_recorded_digest(const nlohmann::json& m, const fs::path& file) {
+  const nlohmann::json::json_pointer p("/sha256");
+  if (!m.contains(p) || !m.at(p).is_object()) return false;
+  const auto it = m.at(p).find(file.filename().string());
+  std::error_code ec;
+  if (it == m.at(p).end() || !it->is_string() || !fs::is_regular_file(file, ec)) return false;
+  try {
+    return *it == file_sha256(file.string());
+  } catch (const IoError&) {
+    return false;
+  }
+}
+
 // The frames of `record` whose files `folder`'s manifest names for the record's identity and
-// the folder holds.
+// the folder holds with the bytes the manifest records.
 std::set<int> frames_in_manifest(const fs::path& folder, const FarmRecord& record) {
   std::set<int> frames;
   const nlohmann::json m = read_manifest(folder);
   if (manifest_digest(m) != record.digest() || !m.contains("files") || !m.at("files").is_array())
     return frames;
-  std::error_code ec;
   for (const auto& f : m.at("files")) {
     const int frame = f.is_string() ? frame_of_file(f.get<std::string>()) : -1;
     if (frame >= record.frames.first && frame <= record.frames.last &&
-        fs::exists(folder / f.get<std::string>(), ec))
+        has_recorded_digest(m, folder / f.get<std::string>()))
       frames.insert(frame);
   }
   return frames;
@@ -83,7 +97,7 @@ std::unique_ptr<OutputFolder> open_chunk(const fs::path& path, const FarmRecord&
   try {
     auto folder = std::make_unique<OutputFolder>(path.string(), record.identity.dump(),
                                                  describe_difference, OutputFolderOptions{});
-    if (!folder->held_files().empty()) return folder;
+    if (!folder->held_files().empty() || !folder->damaged_files().empty()) return folder;
   } catch (const UserError& e) {
     if (note) note("left " + path.string() + " as it is: " + e.what());
   }
@@ -108,13 +122,14 @@ std::string run_quality(const OutputFolder& out, std::vector<std::unique_ptr<Out
 }
 
 // Removes what is left of the collected chunks: their manifests (DIR's names their frames now),
-// staging folders of killed tasks, and the folders once empty.
+// their damaged frames, staging folders of killed tasks, and the folders once empty.
 void remove_collected(std::vector<std::unique_ptr<OutputFolder>>& chunks,
                       const std::vector<fs::path>& paths) {
   std::error_code ec;
   for (size_t i = 0; i < chunks.size(); ++i) {
     if (!chunks[i]) continue;
     fs::remove(paths[i] / kOutputManifestName, ec);
+    for (const std::string& name : chunks[i]->damaged_files()) fs::remove(paths[i] / name, ec);
     remove_stale_staging(paths[i]);
     chunks[i].reset();         // unlocks
     fs::remove(paths[i], ec);  // (only when empty)
@@ -136,25 +151,45 @@ int move_chunks_in(OutputFolder& out, const std::vector<std::unique_ptr<OutputFo
   return moved;
 }
 
-void write_checksums(const std::string& dir, const FarmCollection& c) {
+// The frames of the job found damaged in a chunk folder opened for collection, or in DIR and not
+// replaced by this collect (called after out.commit()), each named by its path inside DIR.
+std::vector<std::string> damaged_frames(const std::string& dir, const OutputFolder& out,
+                                        const std::vector<std::unique_ptr<OutputFolder>>& chunks,
+                                        const std::vector<fs::path>& paths) {
+  std::vector<std::string> damaged;
+  const std::vector<std::string>& held = out.held_files();
+  for (const std::string& name : out.damaged_files())
+    if (std::find(held.begin(), held.end(), name) == held.end()) damaged.push_back(name);
+  for (size_t i = 0; i < chunks.size(); ++i)
+    if (chunks[i])
+      for (const std::string& name : chunks[i]->damaged_files())
+        damaged.push_back((paths[i] / name).lexically_relative(dir).string());
+  return damaged;
+}
+
+// SHA256SUMS from the digests DIR's manifest records for the frames (each checked or computed as
+// it was moved in): written only when every frame is there and none was damaged.
+void write_checksums(const std::string& dir, const FarmCollection& c, const OutputFolder& out) {
   const fs::path file = fs::path(dir) / kFarmChecksumsName;
-  if (!c.missing.empty()) {
+  if (!c.missing.empty() || !c.damaged.empty()) {
     std::error_code ec;
     fs::remove(file, ec);
     return;
   }
   std::string text;
-  for (const std::string& name : c.files)
-    text += file_sha256((fs::path(dir) / name).string()) + "  " + name + "\n";
+  for (const std::string& name : c.files) text += out.file_digests().at(name) + "  " + name + "\n";
   write_text_file(file.string(), text);
 }
 
 }  // namespace
 
-void refuse_other_run(const std::string& dir, const std::string& digest) {
+void refuse_other_run(const std::string& dir, const std::string& digest,
+                      const std::vector<std::string>& replaceable) {
   const nlohmann::json m = read_manifest(dir);
   std::error_code ec;
-  if (!fs::exists(fs::path(dir) / kOutputManifestName, ec) || manifest_digest(m) == digest) return;
+  if (!fs::exists(fs::path(dir) / kOutputManifestName, ec) || manifest_digest(m) == digest ||
+      std::count(replaceable.begin(), replaceable.end(), manifest_digest(m)) > 0)
+    return;
   throw UserError(dir, "",
                   "a folder for this farm job's frames; its manifest (" +
                       std::string(kOutputManifestName) +
@@ -164,7 +199,7 @@ void refuse_other_run(const std::string& dir, const std::string& digest) {
 
 FarmCollection collect_farm(const std::string& dir, const FarmRecord& record,
                             const NoteSink& note) {
-  refuse_other_run(dir, record.digest());
+  refuse_other_run(dir, record.digest(), record.superseded);
   OutputFolderOptions options;
   options.wait = true;    // a render by hand into DIR finishes first
   options.resume = true;  // takes up what a killed collect had moved into DIR's staging folder
@@ -178,6 +213,7 @@ FarmCollection collect_farm(const std::string& dir, const FarmRecord& record,
   FarmCollection c;
   c.moved = move_chunks_in(out, chunks, paths, record.frames);
   out.commit();
+  c.damaged = damaged_frames(dir, out, chunks, paths);
   remove_collected(chunks, paths);
   std::set<int> present;
   for (const std::string& name : out.held_files()) {
@@ -187,7 +223,7 @@ FarmCollection collect_farm(const std::string& dir, const FarmRecord& record,
     present.insert(frame);
   }
   c.missing = missing_ranges(record.frames, present);
-  write_checksums(dir, c);
+  write_checksums(dir, c, out);
   return c;
 }
 

@@ -15,12 +15,14 @@
 #include "systems/runtime/scene/scene_loader.h"
 #include "systems/runtime/scene_runtime/frame_range.h"
 #include "systems/runtime/scene_runtime/render_identity.h"
+#include "systems/runtime/scene_runtime/run_identity.h"
 #include "systems/runtime/scene_runtime/scene_inputs.h"
 #include "tools/farm/farm_collect.h"
 #include "tools/farm/farm_record.h"
 #include "tools/farm/frame_chunks.h"
 #include "tools/farm/frames_video.h"
 #include "tools/farm/sbatch.h"
+#include "tools/farm/slurm_options.h"
 #include "tools/farm/slurm_script.h"
 
 namespace pyro {
@@ -91,6 +93,7 @@ void check_submit_request(const FarmSubmitRequest& a) {
                     "a scene file every node can read; the tasks cannot read standard input");
   if (a.depth && a.format != "exr")
     throw UserError("--depth", "", "--format exr: only EXR frames carry a depth channel");
+  check_farm_scheduler(a.scheduler);
   std::error_code ec;
   if (fs::exists(a.out, ec) && !fs::is_directory(a.out, ec))
     throw UserError(a.out, "--out", "expected a folder for the frames, found a file");
@@ -102,6 +105,18 @@ void check_submit_request(const FarmSubmitRequest& a) {
   if (!a.dry_run) require_sbatch();
 }
 
+// The identity each task's `pyro render` computes for the request's options on `scene`, read
+// from `scene_path`.
+nlohmann::json task_identity(const FarmSubmitRequest& a, const SceneDescription& scene,
+                             const std::string& scene_path) {
+  RuntimeOptions options = a.runtime;  // as `pyro render` sets them for the identity
+  options.readback = false;
+  options.width_override = a.width;
+  options.height_override = a.height;
+  prepare_scene_run(scene, options);  // the default flipbook baked before its folder is digested
+  return render_identity_json(scene, options, scene_path, a.depth);
+}
+
 FarmRecord new_record(const FarmSubmitRequest& a, const std::string& dir) {
   FarmRecord record;
   record.scene = fs::absolute(a.scene).lexically_normal().string();
@@ -110,20 +125,52 @@ FarmRecord new_record(const FarmSubmitRequest& a, const std::string& dir) {
       .reads(scene_inputs(record.scene, scene))
       .writes({dir, "--out", OutputShape::folder, render_output_kind()})
       .check();
-  RuntimeOptions options = a.runtime;  // as `pyro render` sets them for the identity
-  options.readback = false;
-  options.width_override = a.width;
-  options.height_override = a.height;
-  prepare_scene_run(scene, options);  // the default flipbook baked before its folder is digested
-  record.identity = render_identity_json(scene, options, record.scene, a.depth);
+  record.identity = task_identity(a, scene, record.scene);
   refuse_other_run(dir, record.digest());
   record.frames = parse_frame_range(a.frames, "--frames");
   record.chunk = a.chunk;
   record.pyro = this_program();
   record.render_options = a.render_options;
   record.partition = a.partition;
+  record.scheduler = a.scheduler;
   record.frames_per_second = scene.frames_per_second;
   return record;
+}
+
+// Checks that the job's tasks would render its identity now (see resubmit_farm); with
+// `overwrite`, makes the identity they would render the job's.
+void follow_scene_edits(FarmRecord& record, const FarmResubmitRequest& a, const NoteSink& note) {
+  const SceneDescription scene = load_scene(record.scene);
+  const nlohmann::json now = task_identity(a.task_request(record.render_options), scene, record.scene);
+  if (now.at("digest") == record.identity.at("digest")) return;
+  const std::string what =
+      identity_difference(record.identity.value("parts", nlohmann::json()), now.at("parts"));
+  if (!a.overwrite)
+    throw UserError(record.scene, "",
+                    "the scene, assets, settings and engine of the farm job in " + a.dir +
+                        "; " + what + " changed since `pyro farm submit`, so its tasks would "
+                        "render another run, which collect never takes (pass --overwrite to "
+                        "render the job's frames again as they are now, or restore what changed)");
+  if (note)
+    note(what + " changed since the job was submitted: rendering again every frame not yet "
+                "rendered as they are now; " + a.dir + "'s frames of the earlier version are "
+                "replaced as they are collected");
+  record.superseded.push_back(record.digest());
+  record.identity = now;
+  record.pyro = this_program();
+  record.frames_per_second = scene.frames_per_second;
+}
+
+// The refusal of a collection with damaged or missing frames, naming each.
+UserError incomplete_job(const std::string& dir, const FarmRecord& record, const FarmCollection& c) {
+  std::string damaged;
+  for (const std::string& name : c.damaged) damaged += (damaged.empty() ? "" : ", ") + name;
+  std::string what = "every frame of " + range_text(record.frames) + ", each with its recorded SHA-256";
+  if (!damaged.empty())
+    what += "; damaged frames (bytes differ from the SHA-256 recorded when rendered; removed): " +
+            damaged.substr(0, 800);
+  if (!c.missing.empty()) what += "; missing frames " + ranges_text(c.missing);
+  return UserError(dir, "", what + " (`pyro farm resubmit " + dir + "` renders them again)");
 }
 
 }  // namespace
@@ -155,11 +202,7 @@ std::string collect_farm_job(const FarmCollectRequest& a, const NoteSink& note) 
       .writes_file(a.video, "--video")
       .check();
   const FarmCollection c = collect_farm(a.dir, record, note);
-  if (!c.missing.empty())
-    throw UserError(a.dir, "",
-                    "every frame of " + range_text(record.frames) + "; missing frames " +
-                        ranges_text(c.missing) + " (`pyro farm resubmit " + a.dir +
-                        "` renders them again)");
+  if (!c.missing.empty() || !c.damaged.empty()) throw incomplete_job(a.dir, record, c);
   if (!a.video.empty())
     encode_frames_video(a.dir, c.files, a.video, record.frames_per_second, a.video_quality);
   return "collected frames " + range_text(record.frames) + " into " + a.dir + " (" +
@@ -168,20 +211,22 @@ std::string collect_farm_job(const FarmCollectRequest& a, const NoteSink& note) 
          (a.video.empty() ? "" : "; video " + a.video) + "\n";
 }
 
-std::string resubmit_farm(const std::string& dir_arg, bool dry_run, const NoteSink& note) {
-  const std::string dir = normalized_output_path(dir_arg).string();
+std::string resubmit_farm(const FarmResubmitRequest& a, const NoteSink& note) {
+  const std::string dir = normalized_output_path(a.dir).string();
   FarmRecord record = read_farm_record(dir);
+  follow_scene_edits(record, a, note);
   if (::access(record.pyro.c_str(), X_OK) != 0)
     throw UserError(farm_record_path(dir).string(), "/pyro",
                     "a pyro binary the tasks can run; " + record.pyro + " is not there");
-  if (!dry_run) require_sbatch();
+  if (!a.dry_run) require_sbatch();
   const std::vector<FrameRange> missing =
       missing_ranges(record.frames, finished_farm_frames(dir, record));
+  if (missing.empty() && !a.dry_run) write_farm_record(dir, record);  // a changed identity
   if (missing.empty())
     return "nothing to resubmit: every frame of " + range_text(record.frames) +
            " is finished (`pyro farm collect " + dir + "` moves them in)\n";
   note("resubmitting the missing frames " + ranges_text(missing));
-  return submit_chunks(record, dir, chunk_ranges(missing, record.chunk), dry_run);
+  return submit_chunks(record, dir, chunk_ranges(missing, record.chunk), a.dry_run);
 }
 
 }  // namespace pyro

@@ -70,6 +70,28 @@ FarmSubmission submission_from(const nlohmann::json& j, const std::string& point
   return s;
 }
 
+nlohmann::json scheduler_json(const FarmScheduler& s) {
+  return {{"time", s.time},
+          {"mem", s.mem},
+          {"cpus_per_task", s.cpus_per_task},
+          {"account", s.account},
+          {"sbatch_args", s.sbatch_args}};
+}
+
+// The scheduler options under /scheduler; none for a record written before they existed.
+FarmScheduler scheduler_from(const nlohmann::json& j, const std::string& file) {
+  using J = nlohmann::json;
+  FarmScheduler s;
+  if (!j.contains("scheduler")) return s;
+  s.time = field(j, "/scheduler/time", file, &J::is_string, "a time limit or \"\"").get<std::string>();
+  s.mem = field(j, "/scheduler/mem", file, &J::is_string, "a memory size or \"\"").get<std::string>();
+  s.cpus_per_task =
+      field(j, "/scheduler/cpus_per_task", file, &J::is_number_integer, "a CPU count").get<int>();
+  s.account = field(j, "/scheduler/account", file, &J::is_string, "an account or \"\"").get<std::string>();
+  s.sbatch_args = strings_from(j, "/scheduler/sbatch_args", file);
+  return s;
+}
+
 }  // namespace
 
 nlohmann::json farm_record_json(const FarmRecord& r) {
@@ -82,8 +104,10 @@ nlohmann::json farm_record_json(const FarmRecord& r) {
           {"pyro", r.pyro},
           {"render_options", r.render_options},
           {"partition", r.partition},
+          {"scheduler", scheduler_json(r.scheduler)},
           {"frames_per_second", r.frames_per_second},
-          {"submissions", submissions}};
+          {"submissions", submissions},
+          {"superseded", r.superseded}};
 }
 
 FarmRecord farm_record_from_json(const nlohmann::json& j, const std::string& file) {
@@ -99,8 +123,10 @@ FarmRecord farm_record_from_json(const nlohmann::json& j, const std::string& fil
   r.render_options = strings_from(j, "/render_options", file);
   r.partition =
       field(j, "/partition", file, &J::is_string, "a partition name or \"\"").get<std::string>();
+  r.scheduler = scheduler_from(j, file);
   r.frames_per_second =
       field(j, "/frames_per_second", file, &J::is_number, "the scene's fps").get<double>();
+  if (j.contains("superseded")) r.superseded = strings_from(j, "/superseded", file);
   const size_t n = field(j, "/submissions", file, &J::is_array, "the jobs submitted").size();
   for (size_t i = 0; i < n; ++i)
     r.submissions.push_back(submission_from(j, "/submissions/" + std::to_string(i), file));

@@ -21,6 +21,16 @@ struct FarmSubmission {
   std::vector<FrameRange> chunks;  // one per array task, in task order
 };
 
+// What the job asks of Slurm besides the partition (`pyro farm submit`'s scheduler options,
+// checked by tools/farm/slurm_options.h): empty or 0 leaves the cluster's default.
+struct FarmScheduler {
+  std::string time;     // the render tasks' time limit, in one of Slurm's formats
+  std::string mem;      // memory per render task, e.g. 4G
+  int cpus_per_task = 0;  // CPUs per render task, also its render and llvmpipe threads
+  std::string account;  // the account every job of the farm is charged to
+  std::vector<std::string> sbatch_args;  // passed to every sbatch of the job, as given
+};
+
 struct FarmRecord {
   std::string scene;  // absolute path: every node reads it there
   FrameRange frames;
@@ -29,8 +39,12 @@ struct FarmRecord {
   std::string pyro;         // absolute path of the binary the tasks and the collect job run
   std::vector<std::string> render_options;  // e.g. {"--width", "160", "--format", "png"}
   std::string partition;                    // empty: the cluster's default partition
+  FarmScheduler scheduler;
   double frames_per_second = 24.0;          // the scene's, for collect --video
   std::vector<FarmSubmission> submissions;
+  // The digests of the job's earlier identities (its scene or assets edited, then the job rendered
+  // again: `pyro farm resubmit --overwrite`): DIR's frames of those are this job's to replace.
+  std::vector<std::string> superseded;
 
   std::string digest() const { return identity.at("digest").get<std::string>(); }
 };

@@ -1,5 +1,7 @@
 #include "tools/farm/slurm_script.h"
 
+#include <algorithm>
+
 #include "tools/farm/frame_chunks.h"
 
 namespace pyro {
@@ -41,7 +43,27 @@ std::vector<std::string> common_sbatch_args(const FarmRecord& record, const std:
   std::vector<std::string> args = {"--parsable", "--job-name=" + name,
                                    "--output=" + logs + "/" + log_pattern};
   if (!record.partition.empty()) args.push_back("--partition=" + record.partition);
+  if (!record.scheduler.account.empty()) args.push_back("--account=" + record.scheduler.account);
   return args;
+}
+
+// What each render task asks for: its time, memory and CPUs.
+void add_task_resources(const FarmScheduler& s, std::vector<std::string>& args) {
+  if (!s.time.empty()) args.push_back("--time=" + s.time);
+  if (!s.mem.empty()) args.push_back("--mem=" + s.mem);
+  if (s.cpus_per_task > 0) args.push_back("--cpus-per-task=" + std::to_string(s.cpus_per_task));
+}
+
+// The threads of a task with --cpus-per-task N: N for llvmpipe's rasterizer (LP_NUM_THREADS,
+// read when the context is made) and N for the frame schedule (render --threads, unless the
+// render options give their own), rather than one per core of the whole node.
+std::string task_threads(const FarmRecord& record, std::string& options) {
+  const int n = record.scheduler.cpus_per_task;
+  if (n <= 0) return {};
+  const auto& o = record.render_options;
+  if (std::find(o.begin(), o.end(), "--threads") == o.end())
+    options += " " + shell_quote("--threads") + " " + shell_quote(std::to_string(n));
+  return "export LP_NUM_THREADS=" + std::to_string(n) + "\n";
 }
 
 }  // namespace
@@ -55,13 +77,14 @@ std::string render_array_script(const FarmRecord& record, const std::string& dir
   }
   std::string options;
   for (const std::string& o : record.render_options) options += " " + shell_quote(o);
+  const std::string threads = task_threads(record, options);
   return "#!/bin/bash\n"
          "# pyro farm: array task i renders the frames ranges[i] of the scene into its own output\n"
          "# folder, folders[i]; `pyro farm collect` moves them into the farm's folder. --resume "
          "keeps\n"
          "# what a killed or requeued run of the task had finished.\n"
          "set -eu\n" +
-         bash_array("ranges", ranges) + bash_array("folders", folders) +
+         threads + bash_array("ranges", ranges) + bash_array("folders", folders) +
          "i=${SLURM_ARRAY_TASK_ID:?this script runs as a task of a Slurm job array}\n"
          "exec " +
          shell_quote(record.pyro) + " render " + shell_quote(record.scene) +
@@ -81,6 +104,8 @@ std::vector<std::string> render_array_sbatch_args(const FarmRecord& record, cons
                                                   const std::string& script, int tasks) {
   std::vector<std::string> args =
       common_sbatch_args(record, dir, "pyro-render", "render-%A_%a.log");
+  add_task_resources(record.scheduler, args);
+  args.insert(args.end(), record.scheduler.sbatch_args.begin(), record.scheduler.sbatch_args.end());
   args.push_back("--array=0-" + std::to_string(tasks - 1));
   // A task whose node fails is queued again (and resumes its chunk) rather than lost.
   args.push_back("--requeue");
@@ -92,6 +117,7 @@ std::vector<std::string> collect_sbatch_args(const FarmRecord& record, const std
                                              const std::string& script,
                                              const std::string& array_job) {
   std::vector<std::string> args = common_sbatch_args(record, dir, "pyro-collect", "collect-%j.log");
+  args.insert(args.end(), record.scheduler.sbatch_args.begin(), record.scheduler.sbatch_args.end());
   args.push_back("--dependency=afterany:" + array_job);
   args.push_back(script);
   return args;

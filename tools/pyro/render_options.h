@@ -29,7 +29,7 @@ CLI::Option* add_enum_option(CLI::App* cmd, const std::string& name, std::functi
 }
 
 // Adds --stereo, --billboards, --particles, --sort-device, --shadows, --layer-scale, --frame-scale, --eye-order,
-// --interocular, --zero-parallax. The runtime's notes go to stderr.
+// --interocular, --zero-parallax, --threads. The runtime's notes go to stderr.
 inline void add_render_options(CLI::App* cmd, RuntimeOptions& o) {
   o.on_note = print_note;
   add_enum_option<StereoMode>(
@@ -75,6 +75,9 @@ inline void add_render_options(CLI::App* cmd, RuntimeOptions& o) {
          "--zero-parallax", [&o](float v) { o.zero_parallax_distance = v; },
          "View depth of the zero-parallax plane (default: the scene's)")
       ->check(CLI::Range(1e-4f, 1e6f));
+  cmd->add_option("--threads", o.threads,
+                  "Threads of the frame schedule (0: one per core); the frames are the same")
+      ->check(CLI::Range(0, 1024));
 }
 
 }  // namespace pyro::cli

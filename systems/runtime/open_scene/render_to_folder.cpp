@@ -71,6 +71,13 @@ void say_what_the_folder_held(const OutputFolder& folder, const FolderRenderRequ
   else if (folder.removed_leftovers() > 0)
     note("removed " + std::to_string(folder.removed_leftovers()) +
          " leftover(s) of killed runs from " + a.out);
+  if (!folder.damaged_files().empty()) {
+    std::string names;
+    for (const std::string& name : folder.damaged_files()) names += (names.empty() ? "" : ", ") + name;
+    note(std::to_string(folder.damaged_files().size()) + " frame file(s) of " + a.out +
+         " are damaged (their bytes differ from the SHA-256 its manifest records): " +
+         names.substr(0, 400) + "; none is kept (drawn again when in the range, else removed)");
+  }
   if (folder.replaced_files() > 0)
     note("replacing " + std::to_string(folder.replaced_files()) + " file(s) of " + a.out +
          ": it " + folder.replaced_because());
@@ -148,8 +155,9 @@ FolderRender render_to_folder(const FolderRenderRequest& a, const SceneDescripti
   const auto t0 = std::chrono::steady_clock::now();
   // The default flipbook baked (a note first) before the identity digests its folder.
   prepare_scene_run(scene, options);
-  OutputFolder folder(a.out, render_identity_json(scene, options, a.scene_path, a.depth).dump(),
-                      describe_identity_difference, a.folder);
+  nlohmann::json identity = render_identity_json(scene, options, a.scene_path, a.depth);
+  if (nlohmann::json source = scene_source(a.scene_path); !source.is_null()) identity["source"] = source;
+  OutputFolder folder(a.out, identity.dump(), describe_identity_difference, a.folder);
   // A quality target picks the layer scale, footprint size and time step once for the run,
   // recorded with it before anything is drawn.
   OpenSceneOptions open;

@@ -6,8 +6,8 @@
 // systems/runtime/scene_runtime/render_identity.h; engine/io/output_folder.h). Frames are
 // rendered into a temporary folder inside it and moved into place only when every frame has been
 // written: a failure (or a refusal) leaves it as it was. With OutputFolderOptions::resume, the
-// frames a killed run of the same identity finished, and those the folder already holds, are
-// kept and only the others drawn (still simulated from frame 0: the same bytes as an
+// frames a killed run of the same identity finished, and those the folder already holds with the
+// SHA-256 its manifest records, are kept and only the others drawn (still simulated from frame 0: the same bytes as an
 // uninterrupted run). A quality target (scene key quality.max_rmse) is picked once for the run
 // and recorded with it before anything is drawn; every range of the run draws with that pick.
 #include <string>

@@ -1,5 +1,8 @@
 #include "systems/runtime/scene_runtime/run_identity.h"
 
+#include <sys/stat.h>
+
+#include <filesystem>
 #include <vector>
 
 #include "engine/core/build_id.h"
@@ -54,6 +57,17 @@ RunIdentity run_identity(const SceneDescription& scene, const nlohmann::json& se
               {"engine", engine_identity(engine_version, digests)}};
   id.digest = sha256_hex(id.parts.dump());
   return id;
+}
+
+nlohmann::json scene_source(const std::string& scene_path) {
+  struct stat st {};
+  if (scene_path == "-" || ::stat(scene_path.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+    return nullptr;
+  std::error_code ec;
+  const std::filesystem::path canonical = std::filesystem::canonical(scene_path, ec);
+  return {{"path", ec ? std::filesystem::absolute(scene_path).lexically_normal().string()
+                      : canonical.string()},
+          {"file", std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino)}};
 }
 
 std::string identity_difference(const nlohmann::json& before, const nlohmann::json& now) {

@@ -28,6 +28,12 @@ struct RunIdentity {
 RunIdentity run_identity(const SceneDescription& scene, const nlohmann::json& settings,
                          const std::string& engine_version, DigestCache& digests);
 
+// The scene file a run was made from, as an output folder's manifest records it beside the
+// identity (not part of it): {"path": its canonical path, "file": "DEVICE:INODE"}. A render of an
+// edited scene into the folder of its earlier render replaces that render (OutputFolder). Null
+// for a scene that is no regular file (standard input, a pipe): nothing says it is the same.
+nlohmann::json scene_source(const std::string& scene_path);
+
 // What differs between two identities' parts, for a message: "the scene", "the asset at
 // /volumes/0", "the settings (width 64 -> 48)", "the engine"; "an identity pyro no longer
 // reads" when `before` is not one.

@@ -22,8 +22,10 @@ FarmRecord sample_farm_record() {
   r.pyro = "/shared/pyro/bin/pyro";
   r.render_options = {"--width", "160", "--depth"};
   r.partition = "render";
+  r.scheduler = {"1-00:00:00", "8G", 4, "proj", {"--qos=long"}};
   r.frames_per_second = 25.0;
   r.submissions.push_back({"1234", "1235", {{10, 19}, {20, 29}}});
+  r.superseded = {std::string(64, 'c')};
   return r;
 }
 
@@ -36,6 +38,25 @@ TEST(FarmRecord, ReadsBackWhatWasWritten) {
   EXPECT_EQ(farm_record_json(back), farm_record_json(r));
   EXPECT_EQ(back.digest(), std::string(64, 'a'));
   EXPECT_EQ(chunk_folder("/d", {20, 29}), std::filesystem::path("/d/.farm/chunks/20-29"));
+}
+
+TEST(FarmRecord, ARecordWithoutSchedulerOptionsReadsAsTheClustersDefaults) {
+  nlohmann::json j = farm_record_json(sample_farm_record());
+  j.erase("scheduler");
+  j.erase("superseded");
+  const FarmRecord r = farm_record_from_json(j, "farm.json");
+  EXPECT_EQ(r.scheduler.time, "");
+  EXPECT_EQ(r.scheduler.cpus_per_task, 0);
+  EXPECT_TRUE(r.scheduler.sbatch_args.empty());
+  EXPECT_TRUE(r.superseded.empty());
+  j = farm_record_json(sample_farm_record());
+  j["scheduler"]["cpus_per_task"] = "four";
+  try {
+    farm_record_from_json(j, "farm.json");
+    FAIL() << "a CPU count that is no number was read";
+  } catch (const UserError& e) {
+    EXPECT_EQ(e.place(), "/scheduler/cpus_per_task");
+  }
 }
 
 TEST(FarmRecord, ADamagedRecordNamesTheFileAndThePlace) {

@@ -87,6 +87,46 @@ TEST(SlurmScript, SbatchArgumentsNameTheArrayTheDependencyAndTheLogs) {
                                       "--dependency=afterany:77", "/f/.farm/collect-0.sh"}));
 }
 
+TEST(SlurmScript, SchedulerOptionsGoToTheRenderArrayAndWhereSensibleToCollect) {
+  FarmRecord r;
+  r.scheduler = {"2:00:00", "4G", 8, "proj", {"--qos=high", "--constraint=avx2"}};
+  const std::vector<std::string> render = render_array_sbatch_args(r, "/f", "/f/.farm/render-0.sh", 2);
+  EXPECT_EQ(render, (std::vector<std::string>{
+                        "--parsable", "--job-name=pyro-render",
+                        "--output=/f/.farm/logs/render-%A_%a.log", "--account=proj",
+                        "--time=2:00:00", "--mem=4G", "--cpus-per-task=8", "--qos=high",
+                        "--constraint=avx2", "--array=0-1", "--requeue", "/f/.farm/render-0.sh"}));
+  const std::vector<std::string> collect = collect_sbatch_args(r, "/f", "/f/.farm/collect-0.sh", "9");
+  EXPECT_EQ(collect, (std::vector<std::string>{"--parsable", "--job-name=pyro-collect",
+                                               "--output=/f/.farm/logs/collect-%j.log",
+                                               "--account=proj", "--qos=high", "--constraint=avx2",
+                                               "--dependency=afterany:9", "/f/.farm/collect-0.sh"}));
+}
+
+TEST(SlurmScript, CpusPerTaskSetTheTasksThreads) {
+  const fs::path tmp = test::scratch_dir("threads");
+  const fs::path args = tmp / "args.txt";
+  FarmRecord r = slurm_script_record(tmp, args);
+  r.scheduler.cpus_per_task = 6;
+  // The fake pyro also writes the llvmpipe thread count it was started with.
+  std::ofstream(r.pyro) << "#!/bin/sh\nprintf '%s\\n' \"$@\" \"LP=$LP_NUM_THREADS\" > "
+                        << shell_quote(args.string()) << "\n";
+  std::ofstream(tmp / "render.sh") << render_array_script(r, (tmp / "out").string(), {{0, 9}});
+  ASSERT_EQ(std::system(("SLURM_ARRAY_TASK_ID=0 bash " + shell_quote((tmp / "render.sh").string())).c_str()), 0);
+  const std::vector<std::string> lines = slurm_script_lines(args);
+  ASSERT_GE(lines.size(), 3u);
+  EXPECT_EQ(std::vector<std::string>(lines.end() - 3, lines.end()),
+            (std::vector<std::string>{"--threads", "6", "LP=6"}));
+  // Threads given as a render option are the task's own.
+  r.render_options = {"--threads", "2"};
+  std::ofstream(tmp / "render.sh") << render_array_script(r, (tmp / "out").string(), {{0, 9}});
+  ASSERT_EQ(std::system(("SLURM_ARRAY_TASK_ID=0 bash " + shell_quote((tmp / "render.sh").string())).c_str()), 0);
+  const std::vector<std::string> own = slurm_script_lines(args);
+  ASSERT_GE(own.size(), 3u);
+  EXPECT_EQ(std::vector<std::string>(own.end() - 3, own.end()),
+            (std::vector<std::string>{"--threads", "2", "LP=6"}));
+}
+
 TEST(SlurmScript, ShellQuotingSurvivesTheShell) {
   for (const std::string word :
        {"plain", "a b", "it's", "$(echo no)", "`x`", "a\\b", "\"q\"", ""}) {

@@ -1,7 +1,9 @@
 // A render's output folder is keyed on the run's content (systems/runtime/scene_runtime/run_identity.h):
-// an edited scene or asset is drawn again on --resume and counted, a folder holding another run
-// is refused naming what differs, --overwrite removes only that run's files, a reformatted scene
-// is the same run, and scenes read from pipes get the identity of what they say.
+// an edited scene or asset is drawn again on --resume and counted, an edited scene rendered again
+// into its own folder replaces its earlier render, a folder holding another run is refused naming
+// what differs, --overwrite removes only that run's files, a reformatted scene is the same run,
+// scenes read from pipes get the identity of what they say, and a frame whose bytes differ from
+// the SHA-256 the manifest records is never kept.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -61,6 +63,49 @@ TEST(PyroCliRunIdentity, AnEditedSceneIsDrawnAgainOnResumeAndCounted) {
     EXPECT_NE(read_bytes(out / f), old_frames.at(f)) << f << " is the old scene's";
     EXPECT_EQ(read_bytes(out / f), read_bytes(fresh / f)) << f << " differs from a fresh render";
   }
+}
+
+TEST(PyroCliRunIdentity, AnEditedSceneReplacesItsEarlierRenderInItsOwnFolder) {
+  const fs::path dir = test::scratch_dir("identity_rerender");
+  const fs::path scene = dir / "fog.json", out = dir / "out", fresh = dir / "fresh";
+  write_edited_scene("fog.json", scene, [](nlohmann::json&) {});
+  ASSERT_EQ(render_file(scene, out, "3").exit_code, 0);
+  // Saved by an editor that writes a new file and renames it over the old one.
+  write_edited_scene("fog.json", dir / "fog.json.new",
+                     [](nlohmann::json& j) { j["background"] = {0.1, 0.2, 0.3}; });
+  fs::rename(dir / "fog.json.new", scene);
+  const auto again = render_file(scene, out, "2");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("an earlier render of " + scene.string()), std::string::npos) << again.err;
+  EXPECT_NE(again.err.find("differs from this one in the scene"), std::string::npos) << again.err;
+  ASSERT_EQ(render_file(scene, fresh, "2").exit_code, 0);
+  EXPECT_EQ(contents(out), contents(fresh)) << "the earlier render's third frame goes too";
+
+  // Another scene file, or the folder holding something else, is refused as before.
+  write_edited_scene("fog.json", dir / "copy.json", [](nlohmann::json& j) { j["background"] = {0, 0, 1}; });
+  const auto other_file = render_file(dir / "copy.json", out, "2");
+  EXPECT_EQ(other_file.exit_code, 2) << other_file.err;
+  write_text_pyro_cli_run_identity(out / "notes.txt", "the artist's notes");
+  write_edited_scene("fog.json", scene, [](nlohmann::json& j) { j["background"] = {0.3, 0.2, 0.1}; });
+  const auto with_notes = render_file(scene, out, "2");
+  EXPECT_EQ(with_notes.exit_code, 2) << with_notes.err;
+  EXPECT_EQ(contents(out).at("frame_0000.png"), contents(fresh).at("frame_0000.png"))
+      << "a refusal changes nothing";
+}
+
+TEST(PyroCliRunIdentity, ADamagedOrSwappedFrameIsDrawnAgainOnResume) {
+  const fs::path dir = test::scratch_dir("identity_damaged_frame");
+  const fs::path out = dir / "out", fresh = dir / "fresh";
+  ASSERT_EQ(test::render("fog.json", out, "4", 32).exit_code, 0);
+  ASSERT_EQ(test::render("fog.json", fresh, "4", 32).exit_code, 0);
+  fs::resize_file(out / "frame_0001.png", fs::file_size(out / "frame_0001.png") / 2);
+  fs::copy_file(out / "frame_0000.png", out / "frame_0003.png", fs::copy_options::overwrite_existing);
+  const auto resumed = test::render("fog.json", out, "4", 32, {"--resume"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("2 frame file(s) of " + out.string() + " are damaged"), std::string::npos)
+      << resumed.err;
+  EXPECT_NE(resumed.err.find("resuming: 2 of 4"), std::string::npos) << resumed.err;
+  EXPECT_EQ(contents(out), contents(fresh)) << "every frame has the bytes of a fresh render";
 }
 
 TEST(PyroCliRunIdentity, AnAssetReplacedInPlaceIsDrawnAgainOnResume) {
