@@ -17,6 +17,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/content_digest.h"
 #include "engine/io/durable_file.h"
+#include "engine/io/folder_output_kind.h"
 #include "engine/io/io_error.h"
 
 namespace pyro {
@@ -89,19 +90,6 @@ bool same_source(const nlohmann::json& a, const nlohmann::json& b) {
     return a.contains(key) && b.contains(key) && a.at(key).is_string() && a.at(key) == b.at(key);
   };
   return a.is_object() && b.is_object() && (same("file") || same("path"));
-}
-
-// The entries of `out` that neither its manifest nor a run's staging names: what the folder holds
-// besides the runs pyro wrote there.
-std::vector<std::string> foreign_entries(const fs::path& out, const std::vector<std::string>& listed) {
-  std::vector<std::string> names;
-  std::error_code ec;
-  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name == kOutputManifestName || staging_owner(name) != 0) continue;
-    if (std::find(listed.begin(), listed.end(), name) == listed.end()) names.push_back(name);
-  }
-  return names;
 }
 
 struct CheckedFiles {
@@ -211,7 +199,7 @@ void OutputFolder::check_manifest(OutputFolderOptions options) {
                                : std::string();
     // An earlier render of the same scene file, alone in the folder, is this render's to replace.
     earlier_render = same_source(source_in(identity), source_in(id_now)) &&
-                     foreign_entries(out_, listed).empty();
+                     read_folder_output(out_, render_output_kind()).foreign.empty();
     why = "holds " + std::to_string(listed.size()) + " file(s) of " +
           (earlier_render ? "an earlier render" : "another run") + of +
           ", which differs from this one in " +

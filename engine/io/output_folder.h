@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/io/folder_output_kind.h"
 #include "engine/io/staging_folder.h"
 
 namespace pyro {
@@ -105,7 +106,7 @@ class OutputFolder {
 };
 
 // The manifest's file name inside an output folder.
-inline constexpr const char* kOutputManifestName = ".pyro_manifest.json";
+inline constexpr const char* kOutputManifestName = kFolderOutputManifest;
 // The record of a run's identity inside its staging folder.
 inline constexpr const char* kStagingRecordName = ".pyro_run.json";
 

@@ -152,11 +152,15 @@ void check_outputs_apart(const OutputPath& a, const OutputPath& b) {
   if (pa == pb || (ia && ib && *ia == *ib))
     throw UserError(b.path, b.option, "a path of its own; it is also " + a.option + "'s, and one "
                                       "output would replace the other");
-  for (const auto& [outer, inner] : {std::pair{&a, &b}, std::pair{&b, &a}})
-    if (outer->shape == OutputShape::folder && lies_inside(outer == &a ? pb : pa, outer == &a ? pa : pb))
-      throw UserError(inner->path, inner->option,
-                      "an output path outside \"" + outer->path + "\", which holds " + outer->option +
+  const auto refuse_inside = [](const OutputPath& outer, const fs::path& outer_path, const OutputPath& inner,
+                                 const fs::path& inner_path) {
+    if (outer.shape == OutputShape::folder && lies_inside(inner_path, outer_path))
+      throw UserError(inner.path, inner.option,
+                      "an output path outside \"" + outer.path + "\", which holds " + outer.option +
                           "'s output; the file would be taken for part of it");
+  };
+  refuse_inside(a, pa, b, pb);
+  refuse_inside(b, pb, a, pa);
 }
 
 bool skipped(const OutputPath& o) { return o.path.empty() || (o.stdout_allowed && o.path == "-"); }
