@@ -23,7 +23,7 @@ layout(std430, binding = 0) readonly buffer ParticleRecords { vec4 records[]; };
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
 #if LIT
 layout(std430, binding = 2) readonly buffer OthersDepth { vec4 others_depth[]; };
-uniform vec3 u_toward_sun;
+#include "lights.glsl"  // the key light
 flat out vec4 v_others_depth;
 flat out vec3 v_eye_offset;
 flat out vec3 v_sun_whitened;
@@ -81,7 +81,7 @@ void main() {
 #if LIT
   v_others_depth = others_depth[particle];
   v_eye_offset = u_eye - centre;
-  v_sun_whitened = whitening * u_toward_sun;
+  v_sun_whitened = whitening * key_toward();
 #endif
 
   mat4 t = u_view_projection * mat4(vec4(axis0 * (kExtent * scale.x), 0.0), vec4(axis1 * (kExtent * scale.y), 0.0),

@@ -23,9 +23,7 @@ flat in vec4 v_albedo_density;
 flat in vec4 v_others_depth;
 flat in vec3 v_self;  // tau0, 1 / s, 1 / (2 s^2)
 in vec3 v_offset;
-uniform vec3 u_toward_sun;  // unit
-uniform vec3 u_sun_color;
-uniform vec3 u_ambient;
+#include "lights.glsl"       // the media are lit by the key light and the ambient term
 uniform float u_self_shadow;  // 1: the particle shadows itself; 0: lit without shadows
 uniform float u_tail_polynomial[6];  // c_k of t^(2k+1), t = x / 3
 #endif
@@ -45,7 +43,7 @@ void main() {
   float footprint = textureLod(u_kernel, v_texcoord, 0.0).r;
 #if LIT
   float tau0 = v_self.x;
-  float d_par = dot(v_offset, u_toward_sun);
+  float d_par = dot(v_offset, key_toward());
   float d_perp2 = max(dot(v_offset, v_offset) - d_par * d_par, 0.0);
   float t = clamp(d_par * v_self.y, -3.0, 3.0) / 3.0, t2 = t * t;
   float p = u_tail_polynomial[5];
@@ -54,9 +52,9 @@ void main() {
   float tau_self = tau0 * exp(-d_perp2 * v_self.z) * tail;
   float tau = u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, v_offset) + tau_self);
 #if LIT == 2
-  vec3 light = u_sun_color * sun_scattering(v_view_cosine, max(tau, 0.0)) + u_ambient + v_fire;
+  vec3 light = key_radiance() * sun_scattering(v_view_cosine, max(tau, 0.0)) + ambient_light() + v_fire;
 #else
-  vec3 light = u_sun_color * exp(-max(tau, 0.0)) + u_ambient;
+  vec3 light = key_radiance() * exp(-max(tau, 0.0)) + ambient_light();
 #endif
   // The opacity of the Gaussian's column through this point, 1 - exp(-tau0 f), f the footprint
   // scaled to 1 at the centre: rho at the centre as in the unlit splats, and the exact opacity

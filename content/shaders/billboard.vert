@@ -31,14 +31,11 @@ out vec3 v_offset;        // the fragment's place on the billboard, from the cen
 #if LIT == 2
 flat out float v_view_cosine;  // mu: the sunlight's direction of travel . the way to the eye
 flat out vec3 v_fire;          // the fire lights' light scattered at the centre toward the eye
-uniform vec3 u_toward_sun;     // unit
 uniform vec4 u_scattering;     // Henyey-Greenstein g first (billboard.frag)
-// The fire's clustered point lights (components/fire_lights.h), world position and radius, and
-// intensity: each scatters I p_HG(mu, g) / max(d^2, r^2) toward the eye (the sun's convention,
-// whose light colour is its irradiance over 4 pi: systems/runtime/reference/lit_particle_reference.h).
-uniform int u_fire_light_count;
-uniform vec4 u_fire_lights[8];
-uniform vec3 u_fire_intensity[8];
+// The key light, and the fire's clustered point lights (lights.glsl), each of which scatters
+// I p_HG(mu, g) / max(d^2, r^2) toward the eye (the sun's convention, whose light colour is its
+// irradiance over 4 pi: systems/runtime/reference/lit_particle_reference.h).
+#include "lights.glsl"
 #include "henyey_greenstein.glsl"
 #endif
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
@@ -90,15 +87,12 @@ void main() {
 #if LIT == 2
   vec3 to_eye = u_eye - center;
   vec3 eye_way = length(to_eye) > 0.0 ? normalize(to_eye) : vec3(0.0);
-  v_view_cosine = length(to_eye) > 0.0 ? -dot(u_toward_sun, eye_way) : 1.0;
+  v_view_cosine = length(to_eye) > 0.0 ? -dot(key_toward(), eye_way) : 1.0;
   v_fire = vec3(0.0);
   float g = u_scattering.x;
-  for (int j = 0; j < u_fire_light_count; ++j) {
-    vec3 travel = center - u_fire_lights[j].xyz;
-    float d2 = dot(travel, travel);
-    float mu = d2 > 0.0 ? dot(travel, eye_way) * inversesqrt(d2) : 0.0;
-    float r2 = u_fire_lights[j].w * u_fire_lights[j].w;
-    v_fire += u_fire_intensity[j] * henyey_greenstein(mu, g) / max(d2, r2);
+  for (int j = 0; j < fire_light_count(); ++j) {
+    FireLightPath path = fire_light_path(j, center);
+    v_fire += fire_light(j, path, henyey_greenstein(fire_light_cosine(path, eye_way), g));
   }
 #endif
   gl_Position = u_view_projection * vec4(world, 1.0);

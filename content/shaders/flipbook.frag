@@ -13,9 +13,10 @@
 // A six-way flipbook (u_six_way: smoke baked under six lights, Unity VFX Graph's packing, A =
 // right/top/back + alpha, B = left/bottom/front + emissive; tools/bake/
 // six_way_basis.h) is relit here by Unity's blend (URP SixWayLighting.hlsl, SixWayLightBlend):
-// with w the unit vector towards the light in the fire's frame (x right, y up, z toward the
-// viewer), lighting = sum over the axes of w_axis^2 times the face on w_axis's side. The smoke's
-// colour is (light lighting + ambient + emissive) alpha, premultiplied: it is blended over.
+// with w the unit vector towards a sun in the fire's frame (x right, y up, z toward the viewer),
+// lighting = sum over the axes of w_axis^2 times the face on w_axis's side. The smoke's colour is
+// (sum over the suns of radiance lighting + ambient + emissive) alpha, premultiplied: it is
+// blended over. The suns and the ambient term are the scene's (lights.glsl).
 in vec3 v_uv_layer;
 in float v_intensity;
 in vec3 v_next_blend_scale;  // next layer, t, motion scale
@@ -25,9 +26,10 @@ layout(binding = 1) uniform sampler2DArray u_motion;  // RG: motion over one fra
 uniform bool u_has_motion;
 layout(binding = 2) uniform sampler2DArray u_six_way_b;  // left, bottom, front, emissive: linear
 uniform bool u_six_way;
-uniform vec3 u_towards_light;  // unit, the fire's frame
-uniform vec3 u_light_color;
-uniform vec3 u_ambient;
+uniform vec3 u_fire_right;   // the fire's frame in world space (components/flipbook_draw_list.h)
+uniform vec3 u_fire_up;
+uniform vec3 u_fire_toward;
+#include "lights.glsl"
 
 #include "highlight_rolloff.glsl"
 
@@ -35,11 +37,15 @@ layout(location = 0) out vec4 o_color;
 
 // Lightmap A (right, top, back, alpha) and B (left, bottom, front, emissive) relit.
 vec4 six_way_lit(vec4 a, vec4 b) {
-  const vec3 w = u_towards_light;
   const vec3 positive = vec3(a.r, a.g, b.b);  // right (+x), top (+y), front (+z)
   const vec3 negative = vec3(b.r, b.g, a.b);  // left (-x), bottom (-y), back (-z)
-  const float lighting = dot(w * w, mix(negative, positive, greaterThanEqual(w, vec3(0.0))));
-  const vec3 color = (u_light_color * lighting + u_ambient + vec3(b.a)) * v_intensity;
+  vec3 direct = vec3(0.0);
+  for (int i = 0; i < sun_count(); ++i) {
+    const vec3 t = toward_sun(i);
+    const vec3 w = vec3(dot(t, u_fire_right), dot(t, u_fire_up), dot(t, u_fire_toward));
+    direct += sun_radiance(i) * dot(w * w, mix(negative, positive, greaterThanEqual(w, vec3(0.0))));
+  }
+  const vec3 color = (direct + ambient_light() + vec3(b.a)) * v_intensity;
   return vec4(color * a.a, a.a);
 }
 

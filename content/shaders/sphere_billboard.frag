@@ -72,9 +72,13 @@ uniform float u_far;
 
 layout(binding = 3) uniform sampler1D u_blackbody;  // emitted radiance over [T_min, T_max]
 layout(binding = 4) uniform sampler2D u_detail;     // periodic noise slice in [0, 1], rg
-uniform vec3 u_light_view;      // direction the light travels, view space, unit
-uniform vec3 u_light_irradiance;  // E, linear rgb
-uniform vec3 u_ambient;
+// The key light and the ambient term (lights.glsl); E is the key light's radiance times the
+// shading's light scale.
+#include "lights.glsl"
+#if SHADING == 1
+flat in vec3 v_light_view;     // the way the key light travels, view space, unit
+#endif
+uniform float u_light_scale;
 uniform float u_albedo;
 uniform float u_g;
 uniform float u_detail_amplitude;
@@ -186,7 +190,7 @@ void main() {
 #else
   alpha = clamp(alpha * (1.0 + u_detail_amplitude * (2.0 * n - 1.0)), 0.0, 1.0);
   vec3 to_eye = -normalize(dir);
-  float mu = dot(u_light_view, to_eye);  // photon's direction before and after scattering
+  float mu = dot(v_light_view, to_eye);  // photon's direction before and after scattering
   float phase = cornette_shanks(mu, u_g);
   // Light's path inside the sphere, from the middle of the visible segment towards the light.
 #if PLANAR
@@ -195,18 +199,19 @@ void main() {
   float middle = 0.5 * (max(enter_depth, u_near) + min(leave_depth, scene_depth));
 #endif
   vec3 m = dir * middle - p;
-  float mb = dot(m, -u_light_view);
+  float mb = dot(m, -v_light_view);
   float chord = max(-mb + sqrt(max(mb * mb - dot(m, m) + r * r, 0.0)), 0.0);
 #if LIT == 1
   float light_d = sqrt(max(dot(m, m) - mb * mb, 0.0));  // the light's ray from the centre
   float own = tau * max(1.0 - light_d / r, 0.0) * chord;
   float light_depth = max(v_light.x + dot(v_light.yzw, m), 0.0) + own;
 #elif LIT == 2
-  float light_depth = exact_depth_to_light(dir * middle, -u_light_view);
+  float light_depth = exact_depth_to_light(dir * middle, -v_light_view);
 #else
   float light_depth = tau * chord;
 #endif
-  vec3 C = u_light_irradiance * phase * exp(-light_depth) + u_ambient;
+  precise vec3 irradiance = key_radiance() * u_light_scale;  // E
+  vec3 C = irradiance * phase * exp(-light_depth) + ambient_light();
 #if LIT == 1
   C += v_fire;
 #elif LIT == 2

@@ -35,11 +35,8 @@ layout(location = 3) in vec4 a_sprite;  // u_sprite 1: centre (target pixels), s
 // and its gradient (world space; turned into view space for the fragments).
 layout(location = 4) in vec4 a_light;
 flat out vec4 v_light;
-// The fire's clustered lights (view-space position and radius, intensity), scattered at the
-// centre toward the eye (fire_light.glsl): constant over the particle.
-uniform int u_fire_light_count;
-uniform vec4 u_fire_lights[8];
-uniform vec3 u_fire_intensity[8];
+// The fire's clustered lights (lights.glsl; here in view space), scattered at the centre toward
+// the eye (fire_light.glsl): constant over the particle.
 uniform float u_g;
 flat out vec3 v_fire;
 #include "cornette_shanks.glsl"
@@ -48,6 +45,15 @@ flat out vec3 v_fire;
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
+#ifndef SHADING
+#define SHADING 0
+#endif
+#if SHADING == 1 || LIT
+#include "lights.glsl"
+#endif
+#if SHADING == 1
+flat out vec3 v_light_view;  // the way the key light travels, view space, unit (dust and smoke)
+#endif
 uniform int u_sprite;          // 1: this draw's particles are point sprites; 0: quads
 // The target: u_viewport pixels from u_target_origin in the framebuffer (a cell of the media
 // atlas, or all of it). The GL viewport reaches u_guard pixels past the framebuffer on every side,
@@ -84,11 +90,21 @@ void main() {
   v_radius = r;
   v_color_tau = a_color_tau;
   v_medium = a_medium;
+#if SHADING == 1
+  v_light_view = key_travel_in(u_view);
+#endif
 #if LIT
   v_light = vec4(a_light.x, mat3(u_view) * a_light.yzw);
   v_fire = vec3(0.0);
-  for (int j = 0; j < u_fire_light_count; ++j)
-    v_fire += fire_light_inscattered(u_fire_lights[j], u_fire_intensity[j], p, -normalize(p), u_g);
+  for (int j = 0; j < fire_light_count(); ++j) {
+    // In view space as the CPU's maths (glm) rotates and moves it: sums in that order, unfused.
+    vec3 q = lights_fire_position[j].xyz;
+    precise vec4 v = u_view[0] * q.x + u_view[1] * q.y;
+    precise vec4 w = u_view[2] * q.z + u_view[3];
+    v = v + w;
+    vec4 light = vec4(v.xyz, lights_fire_position[j].w);
+    v_fire += fire_light_inscattered(light, lights_fire_intensity[j].rgb, p, -normalize(p), u_g);
+  }
 #endif
   if (u_sprite == 1) {
     gl_PointSize = a_sprite.z;

@@ -12,7 +12,7 @@
 #include "engine/gpu/shader_program.h"
 #include "engine/math/anisotropic_optical_depth.h"
 #include "systems/billboard_render/particle_blending.h"
-#include "systems/billboard_render/sun_uniforms.h"
+#include "systems/billboard_render/scattering_uniforms.h"
 
 namespace pyro {
 
@@ -71,8 +71,8 @@ void AnisotropicSplatRenderer::set_lighting(const AnisotropicLighting& lighting)
   glNamedBufferSubData(others_depth_.get(), 0, static_cast<GLsizeiptr>(given * sizeof(glm::vec4)),
                        lighting.others_depth.data());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, others_depth_.get());
-  set_sun_uniforms(*lit_program_, lighting.toward_sun, lighting.sun_color, lighting.ambient, lighting.self_shadow,
-                   lighting.scattering);
+  lighting.scene->bind();
+  set_scattering_uniforms(*lit_program_, lighting.self_shadow, lighting.scattering);
 }
 
 void AnisotropicSplatRenderer::draw(const CameraFrame& frame, const gpu::RenderTarget& target,

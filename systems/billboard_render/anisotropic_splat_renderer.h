@@ -20,13 +20,13 @@
 #include "engine/math/camera_math.h"
 #include "engine/math/scattering_octaves.h"
 #include "engine/particles/anisotropic_gaussian.h"
+#include "systems/lighting/light_buffer.h"
 
 namespace pyro {
 
 // The light of a lit frame (docs/lighting.md), as the Gaussian splats get it (SplatLighting).
 struct AnisotropicLighting {
-  glm::vec3 toward_sun{0.0f, 1.0f, 0.0f};  // unit
-  glm::vec3 sun_color{0.0f}, ambient{0.0f};
+  const LightBuffer* scene = nullptr;  // the scene's lights, which the renderer binds; required
   bool self_shadow = true;  // false: lit without shadows
   SunScattering scattering;
   // Per particle in the upload's order: the others' optical depth toward the sun at its centre

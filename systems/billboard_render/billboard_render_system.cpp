@@ -14,7 +14,6 @@
 #include "components/sort_device_choice.h"
 #include "components/view.h"
 #include "components/fire_lights.h"
-#include "components/scene_lighting.h"
 #include "components/shadow_settings.h"
 #include <glm/geometric.hpp>
 #include <optional>
@@ -23,6 +22,7 @@
 #include "systems/billboard_render/billboard_renderer.h"
 #include "systems/billboard_render/explosion_renderer.h"
 #include "systems/billboard_render/sphere_billboard_renderer.h"
+#include "systems/lighting/light_buffer.h"
 #include "systems/sorting/depth_sort.h"
 #include "systems/sorting/particle_shapes.h"
 
@@ -95,17 +95,15 @@ void draw_media(ecs::World& world, const EyeDrawLists& lists, const View& view, 
     explosion = &world.set_resource<ExplosionRenderer>(shading);
   const FrameClock* clock = world.try_resource<const FrameClock>();
   const double time = clock ? clock->time() : 0.0;
-  // The light phase's gathering; a world run without it is lit by the default light.
-  const SceneLighting* lit = world.try_resource<const SceneLighting>();
-  const SceneLighting lighting = lit ? *lit : SceneLighting{};
   // Lit media (a ShadowSettings resource): shadowed by the light phase's others' depth, or
   // exactly per fragment.
   const ShadowSettings* shadows = world.try_resource<const ShadowSettings>();
   const MediaLighting media_lighting = !shadows ? MediaLighting::unlit
                                        : shadows->exact_fragments ? MediaLighting::exact
                                                                   : MediaLighting::light_phase;
+  const LightBuffer& lights = world.resource<const LightBuffer>();
   for (size_t v = 0; v < views; ++v)
-    explosion->draw(lists.eyes[v], view.eyes[v], settings, lighting, time, *frame.eyes[v].media_atlas,
+    explosion->draw(lists.eyes[v], view.eyes[v], settings, lights, time, *frame.eyes[v].media_atlas,
                     frame.eyes[v].media_combined->width(), *frame.eyes[v].scene, media_lighting,
                     world.try_resource<const FireLights>());
 }
@@ -115,12 +113,8 @@ void draw_media(ecs::World& world, const EyeDrawLists& lists, const View& view, 
 std::optional<AnisotropicLighting> anisotropic_lighting(ecs::World& world) {
   const ShadowSettings* shadows = world.try_resource<const ShadowSettings>();
   if (!shadows) return std::nullopt;
-  const SceneLighting* lit = world.try_resource<const SceneLighting>();
-  const SceneLighting lighting = lit ? *lit : SceneLighting{};
   AnisotropicLighting a;
-  if (glm::length(lighting.sun_direction) > 0.0f) a.toward_sun = -glm::normalize(lighting.sun_direction);
-  a.sun_color = lighting.directional_lights > 0 ? lighting.sun_color : glm::vec3(0.0f);
-  a.ambient = lighting.ambient;
+  a.scene = &world.resource<const LightBuffer>();
   a.self_shadow = shadows->method != ShadowMethod::none;
   a.scattering = shadows->scattering;
   world.each<const AnisotropicCloud>([&](ecs::Entity e, const AnisotropicCloud& c) {
@@ -179,16 +173,11 @@ void measure_sort_devices(ecs::World& world, BillboardRenderer& renderer, const 
 std::optional<SplatLighting> splat_lighting(ecs::World& world, const EyeDrawLists& lists) {
   const ShadowSettings* shadows = world.try_resource<const ShadowSettings>();
   if (!shadows) return std::nullopt;
-  const SceneLighting* lit = world.try_resource<const SceneLighting>();
-  const SceneLighting lighting = lit ? *lit : SceneLighting{};
   SplatLighting s;
   s.lights = lists.lights;
-  if (glm::length(lighting.sun_direction) > 0.0f) s.toward_sun = -glm::normalize(lighting.sun_direction);
-  s.sun_color = lighting.directional_lights > 0 ? lighting.sun_color : glm::vec3(0.0f);
-  s.ambient = lighting.ambient;
+  s.scene = &world.resource<const LightBuffer>();
   s.self_shadow = shadows->method != ShadowMethod::none;
   s.scattering = shadows->scattering;
-  s.fire = world.try_resource<const FireLights>();
   return s;
 }
 
@@ -275,7 +264,7 @@ ecs::SystemDesc billboard_render_system() {
   return {.name = "billboard_render",
           .phase = ecs::Phase::render,
           .access = ecs::Access::of<
-              ecs::Reads<EyeDrawLists, View, RenderSettings, SceneLighting, FrameClock,
+              ecs::Reads<EyeDrawLists, View, RenderSettings, LightBuffer, FrameClock,
                          ExplosionShading, AnisotropicCloud, ParticleSet, ParticleKind, ParticleLight, SortScratch, ShadowSettings,
                          FireLights>,
               ecs::Writes<GpuFrame, SortDeviceChoice>, Renderers>(),

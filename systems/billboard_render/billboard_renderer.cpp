@@ -15,7 +15,7 @@
 #include "engine/math/gaussian_line_integral.h"
 #include "systems/billboard_render/particle_blending.h"
 #include "systems/billboard_render/parallel_copy.h"
-#include "systems/billboard_render/sun_uniforms.h"
+#include "systems/billboard_render/scattering_uniforms.h"
 
 namespace pyro {
 
@@ -154,24 +154,14 @@ void BillboardRenderer::upload(const DrawList& list, const std::vector<const Par
 }
 
 const gpu::Program& BillboardRenderer::lit_program(const SplatLighting& lighting) const {
-  const bool fire = lighting.fire && !lighting.fire->lights.empty();
+  const bool fire = lighting.scene->block().counts.y > 0;
   return fire || !(lighting.scattering == SunScattering{}) ? scattering_program_ : lit_program_;
 }
 
 void BillboardRenderer::set_lighting_uniforms(const SplatLighting& lighting) const {
   const gpu::Program& program = lit_program(lighting);
-  set_sun_uniforms(program, lighting.toward_sun, lighting.sun_color, lighting.ambient, lighting.self_shadow,
-                   lighting.scattering);
-  const int fires = lighting.fire ? std::min(int(lighting.fire->lights.size()), kMaxFireLights) : 0;
-  glUniform1i(gpu::uniform_location(program, "u_fire_light_count"), fires);
-  for (int j = 0; j < fires; ++j) {
-    const PointEmitter& l = lighting.fire->lights[size_t(j)];
-    const std::string at = "[" + std::to_string(j) + "]";
-    glUniform4f(gpu::uniform_location(program, ("u_fire_lights" + at).c_str()), float(l.position.x),
-                float(l.position.y), float(l.position.z), float(l.radius));
-    glUniform3f(gpu::uniform_location(program, ("u_fire_intensity" + at).c_str()), float(l.intensity.x),
-                float(l.intensity.y), float(l.intensity.z));
-  }
+  lighting.scene->bind();
+  set_scattering_uniforms(program, lighting.self_shadow, lighting.scattering);
   std::array<float, kTailPolynomialTerms> tail;
   for (size_t k = 0; k < tail.size(); ++k) tail[k] = float(tail_polynomial_[k]);
   glUniform1fv(gpu::uniform_location(program, "u_tail_polynomial"), GLsizei(tail.size()), tail.data());

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "components/draw_list.h"
-#include "components/fire_lights.h"
+#include "components/particle_light.h"
 #include "systems/runtime/scene/scene_description.h"
 #include "engine/gpu/buffer_range.h"
 #include "engine/gpu/gl_objects.h"
@@ -18,20 +18,20 @@
 #include "engine/gpu/mapped_ring.h"
 #include "systems/billboard_render/instance_buffer.h"  // UploadCost
 #include "systems/gpu_sorting/gpu_depth_sort.h"
+#include "systems/lighting/light_buffer.h"
 
 namespace pyro {
 
 enum class BillboardShading { kernel, trivial };
 
 // Lit media (docs/lighting.md): beside each pool the light phase's light for its particles
-// (components/particle_light.h; null: that pool's particles see the whole sun), and the sun.
+// (components/particle_light.h; null: that pool's particles see the whole sun), and the scene's
+// lights (the key light, the ambient term and the fire's point lights), which the renderer binds.
 struct SplatLighting {
   std::vector<const ParticleLight*> lights;
-  glm::vec3 toward_sun{0.0f, 1.0f, 0.0f};  // unit
-  glm::vec3 sun_color{0.0f}, ambient{0.0f};
+  const LightBuffer* scene = nullptr;  // required
   bool self_shadow = true;  // false: lit without shadows
   SunScattering scattering;  // the phase lobe and octaves (engine/math/scattering_octaves.h)
-  const FireLights* fire = nullptr;  // the fire's clustered point lights (none: no fire light)
 };
 
 // CPU time of the particle pass since the last reset_cost(): packing the particles and copying

@@ -85,20 +85,6 @@ glm::vec4 view_position_radius(const CameraFrame& frame, const PointEmitter& e) 
   return glm::vec4(glm::vec3(frame.view * glm::vec4(glm::vec3(e.position), 1.0f)), float(e.radius));
 }
 
-// The clustered fire lights as the lit dust and smoke programs' uniforms (LIT 1), in view space.
-void set_fire_light_uniforms(const gpu::Program& program, const FireLights* fire, const CameraFrame& frame) {
-  const int count = fire ? std::min(static_cast<int>(fire->lights.size()), kMaxFireLights) : 0;
-  glUniform1i(gpu::uniform_location(program, "u_fire_light_count"), count);
-  for (int j = 0; j < count; ++j) {
-    const PointEmitter& l = fire->lights[static_cast<size_t>(j)];
-    const std::string at = "[" + std::to_string(j) + "]";
-    glUniform4fv(gpu::uniform_location(program, ("u_fire_lights" + at).c_str()), 1,
-                 glm::value_ptr(view_position_radius(frame, l)));
-    glUniform3f(gpu::uniform_location(program, ("u_fire_intensity" + at).c_str()), float(l.intensity.x),
-                float(l.intensity.y), float(l.intensity.z));
-  }
-}
-
 }  // namespace
 
 void ExplosionRenderer::upload_casters(const DrawList& list, const CameraFrame& frame) {
@@ -123,7 +109,7 @@ void ExplosionRenderer::upload_fire_emitters(const FireLights* fire, const Camer
 }
 
 void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
-                             const RenderSettings& settings, const SceneLighting& lighting,
+                             const RenderSettings& settings, const LightBuffer& lights,
                              double time, const gpu::RenderTarget& atlas, int cell_width,
                              const gpu::RenderTarget& scene, MediaLighting media_lighting,
                              const FireLights* fire) {
@@ -148,8 +134,7 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
                              GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   }
   atlas.bind();
-  const glm::vec3 light = glm::normalize(glm::vec3(frame.view * glm::vec4(lighting.sun_direction, 0.0f)));
-  const glm::vec3 irradiance = lighting.sun_color * shading_.light_irradiance;
+  lights.bind();
   for (int m = 0; m < 3; ++m) {
     const DrawList& l = split_[m];
     if (l.size() == 0) continue;
@@ -164,9 +149,7 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     auto loc = [&](const char* name) { return gpu::uniform_location(program, name); };
     const glm::ivec2 cell(cell_width, atlas.height());
     set_sphere_billboard_depth_scale(program, cell, scene_width, scene_height);
-    glUniform3fv(loc("u_light_view"), 1, glm::value_ptr(light));
-    glUniform3fv(loc("u_light_irradiance"), 1, glm::value_ptr(irradiance));
-    glUniform3fv(loc("u_ambient"), 1, glm::value_ptr(lighting.ambient));
+    glUniform1f(loc("u_light_scale"), shading_.light_irradiance);
     glUniform1f(loc("u_detail_frequency"), shading_.detail_frequency);
     glUniform4f(loc("u_fire"), shading_.fire_t_min, shading_.fire_t_max, shading_.fire_scale, shading_.fire_bias);
     glUniform1f(loc("u_fire_detail_range"), shading_.fire_detail_range);
@@ -180,7 +163,6 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
       glUniform1i(loc("u_caster_count"), static_cast<GLint>(list.size()));
       glUniform1i(loc("u_fire_emitter_count"), fire ? static_cast<GLint>(fire->emitters.size()) : 0);
     }
-    if (!is_fire && media_lighting == MediaLighting::light_phase) set_fire_light_uniforms(program, fire, frame);
     const GLuint vao = instances_[m].upload(l, true);
     glBindVertexArray(vao);
     // Each medium in its cell of the atlas (the scissor keeps it there).

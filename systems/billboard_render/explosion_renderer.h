@@ -10,7 +10,7 @@
 #include "components/explosion_shading.h"
 #include "components/fire_lights.h"
 #include "components/render_settings.h"
-#include "components/scene_lighting.h"
+#include "systems/lighting/light_buffer.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
@@ -35,10 +35,11 @@ class ExplosionRenderer {
   // cell m of `atlas` (components/gpu_frame.h), `cell_width` columns wide.
   // `scene` holds the opaque scene's colour and depth (the spherical shader clips against its
   // full-resolution depth; planar billboards are depth tested against a point-sampled copy).
-  // `media_lighting` light_phase needs list.light. Lit, dust and smoke also scatter `fire`'s
-  // light (may be null: none): its clustered lights, or with exact every emitter.
+  // `media_lighting` light_phase needs list.light. Lit, dust and smoke are lit by `lights`' key
+  // light and ambient term and scatter the fire's light: the block's clustered lights, or with
+  // exact every emitter of `fire` (may be null: none).
   void draw(const DrawList& list, const CameraFrame& frame, const RenderSettings& settings,
-            const SceneLighting& lighting, double time, const gpu::RenderTarget& atlas,
+            const LightBuffer& lights, double time, const gpu::RenderTarget& atlas,
             int cell_width, const gpu::RenderTarget& scene,
             MediaLighting media_lighting = MediaLighting::unlit, const FireLights* fire = nullptr);
   const ExplosionShading& shading() const { return shading_; }

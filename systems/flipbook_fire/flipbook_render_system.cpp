@@ -8,12 +8,12 @@
 #include "components/flipbook_fire.h"
 #include "components/frame_clock.h"
 #include "components/gpu_frame.h"
-#include "components/scene_lighting.h"
 #include "components/view.h"
 #include "engine/ecs/world.h"
 #include "engine/math/flipbook_sequence.h"
 #include "systems/flipbook_fire/flipbook_geometry.h"
 #include "systems/flipbook_fire/flipbook_renderer.h"
+#include "systems/lighting/light_buffer.h"
 
 namespace pyro {
 
@@ -56,14 +56,10 @@ void draw_flipbook_fires(ecs::World& world) {
   const FlipbookDrawList* list = world.try_resource<const FlipbookDrawList>();
   if (!renderer || !view || !list || list->fires.empty()) return;
   GpuFrame& targets = world.resource<GpuFrame>();
-  const SceneLighting* scene_light = world.try_resource<const SceneLighting>();
-  const SceneLighting lighting = scene_light ? *scene_light : SceneLighting{};
+  const LightBuffer& lights = world.resource<const LightBuffer>();
   for (size_t v = 0; v < view->eyes.size() && v < targets.eyes.size(); ++v)
-    for (const FlipbookDrawList::Fire& f : list->fires) {
-      const FlipbookLight light =
-          flipbook_light(lighting.sun_direction, lighting.sun_color, lighting.ambient, f.frame);
-      renderer->draw(f.quads, f.texture, f.blend, light, view->eyes[v], *targets.eyes[v].scene);
-    }
+    for (const FlipbookDrawList::Fire& f : list->fires)
+      renderer->draw(f.quads, f.texture, f.blend, f.frame, lights, view->eyes[v], *targets.eyes[v].scene);
 }
 
 }  // namespace
@@ -82,7 +78,7 @@ ecs::SystemDesc flipbook_orient_system() {
 ecs::SystemDesc flipbook_render_system() {
   return {.name = "flipbook_render",
           .phase = ecs::Phase::render,
-          .access = ecs::Access::of<ecs::Reads<FlipbookDrawList, View, SceneLighting>,
+          .access = ecs::Access::of<ecs::Reads<FlipbookDrawList, View, LightBuffer>,
                                     ecs::Writes<GpuFrame, FlipbookRenderer>>(),
           .run = draw_flipbook_fires,
           // The opaque pass clears and fills the scene targets this pass blends into.

@@ -49,22 +49,6 @@ gpu::Texture frame_array(const std::vector<std::vector<uint8_t>>& layers, int wi
 
 }  // namespace
 
-FlipbookLight flipbook_light(const glm::vec3& sun_direction, const glm::vec3& sun_color,
-                             const glm::vec3& ambient, const FireFrame& frame) {
-  FlipbookLight light;
-  light.ambient = ambient;
-  const float length = glm::length(sun_direction);
-  if (!(length > 0.0f)) {
-    light.color = glm::vec3(0.0f);
-    return light;
-  }
-  const glm::vec3 towards = -sun_direction / length;
-  light.towards_light = {glm::dot(towards, frame.right), glm::dot(towards, frame.up),
-                         glm::dot(towards, frame.toward)};
-  light.color = sun_color;
-  return light;
-}
-
 FlipbookRenderer::FlipbookRenderer()
     : program_(gpu::load_program("flipbook.vert", "flipbook.frag")),
       buffer_(gpu::make_buffer()),
@@ -109,7 +93,7 @@ int FlipbookRenderer::add_flipbook(const FlipbookFrames& frames) {
 }
 
 void FlipbookRenderer::draw(const std::vector<FlipbookQuad>& quads, int texture, FlipbookBlend blend,
-                            const FlipbookLight& light, const CameraFrame& view,
+                            const FireFrame& fire, const LightBuffer& lights, const CameraFrame& view,
                             const gpu::RenderTarget& target) {
   if (quads.empty()) return;
   if (texture < 0 || static_cast<size_t>(texture) >= flipbooks_.size())
@@ -161,9 +145,10 @@ void FlipbookRenderer::draw(const std::vector<FlipbookQuad>& quads, int texture,
   if (book.has_motion) glBindTextureUnit(1, book.motion.get());
   if (book.six_way) {
     glBindTextureUnit(2, book.six_way_b.get());
-    glUniform3fv(gpu::uniform_location(program_, "u_towards_light"), 1, glm::value_ptr(light.towards_light));
-    glUniform3fv(gpu::uniform_location(program_, "u_light_color"), 1, glm::value_ptr(light.color));
-    glUniform3fv(gpu::uniform_location(program_, "u_ambient"), 1, glm::value_ptr(light.ambient));
+    lights.bind();
+    glUniform3fv(gpu::uniform_location(program_, "u_fire_right"), 1, glm::value_ptr(fire.right));
+    glUniform3fv(gpu::uniform_location(program_, "u_fire_up"), 1, glm::value_ptr(fire.up));
+    glUniform3fv(gpu::uniform_location(program_, "u_fire_toward"), 1, glm::value_ptr(fire.toward));
   }
   glBindVertexArray(vao_.get());
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(count));

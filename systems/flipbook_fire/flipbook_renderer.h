@@ -20,30 +20,19 @@
 #include "systems/flipbook_fire/flipbook_folder.h"
 #include "engine/math/camera_math.h"
 #include "systems/flipbook_fire/flipbook_geometry.h"
+#include "systems/lighting/light_buffer.h"
 
 namespace pyro {
-
-// The light a six-way flipbook is drawn under.
-struct FlipbookLight {
-  glm::vec3 towards_light{0.0f, 0.0f, 1.0f};  // unit, in the fire's frame: x right, y up, z toward the viewer
-  glm::vec3 color{1.0f};                      // the light's colour times its intensity
-  glm::vec3 ambient{0.0f};
-};
-
-// The scene's sun in a fire's frame (components/flipbook_draw_list.h): towards the light is
-// minus its travel direction, normalised (a zero direction gives no directional light).
-FlipbookLight flipbook_light(const glm::vec3& sun_direction, const glm::vec3& sun_color,
-                             const glm::vec3& ambient, const FireFrame& frame);
 
 class FlipbookRenderer {
  public:
   FlipbookRenderer();
   // Uploads a flipbook's frames; returns the index that FlipbookFire::texture refers to.
   int add_flipbook(const FlipbookFrames& frames);
-  // Blends one fire's quads (back to front) into `target` as seen from `view`; `light` lights a
-  // six-way flipbook (others ignore it).
-  void draw(const std::vector<FlipbookQuad>& quads, int texture, FlipbookBlend blend,
-            const FlipbookLight& light, const CameraFrame& view, const gpu::RenderTarget& target);
+  // Blends one fire's quads (back to front) into `target` as seen from `view`. A six-way
+  // flipbook is relit by `lights` (bound here) in the fire's frame `fire`; others ignore both.
+  void draw(const std::vector<FlipbookQuad>& quads, int texture, FlipbookBlend blend, const FireFrame& fire,
+            const LightBuffer& lights, const CameraFrame& view, const gpu::RenderTarget& target);
 
  private:
   gpu::Program program_;

@@ -10,13 +10,8 @@ namespace pyro {
 SceneLighting combine_lights(const std::vector<DirectionalLight>& directional,
                              const std::vector<AmbientLight>& ambient) {
   SceneLighting lighting;
-  lighting.directional_lights = static_cast<int>(directional.size());
-  if (directional.empty()) {
-    lighting.sun_color = glm::vec3(0.0f);
-  } else {
-    lighting.sun_direction = directional.front().direction;
-    lighting.sun_color = directional.front().color * directional.front().intensity;
-  }
+  lighting.suns.clear();
+  for (const DirectionalLight& d : directional) lighting.suns.emplace_back(d.direction, d.color * d.intensity);
   if (ambient.empty()) lighting.ambient = glm::vec3(0.0f);
   for (size_t i = 0; i < ambient.size(); ++i)
     lighting.ambient = i == 0 ? ambient[i].color : lighting.ambient + ambient[i].color;

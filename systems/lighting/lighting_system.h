@@ -1,6 +1,7 @@
 #pragma once
 // The lighting phase (ecs::Phase::light): gathers the light entities (DirectionalLight,
-// AmbientLight) into the SceneLighting resource that the render systems read. It runs once per
+// AmbientLight) into the SceneLighting resource, which the light block (light_block.h) packs
+// for the renderers. It runs once per
 // frame, before the camera phase, so a stereo pair is lit once for both eyes.
 #include <vector>
 
@@ -12,10 +13,11 @@
 
 namespace pyro {
 
-// What the renderers use of lights given in order: the first directional light is the sun (its
-// colour scaled by its intensity), and the ambient colours add up (the first copied, so that one
-// light passes through unchanged). Without directional lights the sun is black; without ambient
-// ones, so is the ambient term. The importer lights a scene's VDB volumes with the same.
+// The lights given in order as the renderers use them: every directional light a sun (its colour
+// scaled by its intensity; the first is the key light, which casts the shadows), and the ambient
+// colours added up (the first copied, so that one light passes through unchanged). Without
+// directional lights there is no sun; without ambient ones the ambient term is black. The
+// importer lights a scene's VDB volumes with the same.
 SceneLighting combine_lights(const std::vector<DirectionalLight>& directional,
                              const std::vector<AmbientLight>& ambient);
 

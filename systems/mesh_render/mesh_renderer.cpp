@@ -82,15 +82,20 @@ float background_alpha(const RenderSettings& settings) { return settings.transpa
 
 // Everything the opaque image depends on, as numbers.
 std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
-                               const RenderSettings& settings, const SceneLighting& lighting,
-                               const gpu::RenderTarget& target, const ShadowVolume* shadows,
-                               const FireLights* fire) {
+                               const RenderSettings& settings, const LightBuffer& lights,
+                               const gpu::RenderTarget& target, const ShadowVolume* shadows) {
   std::vector<float> k;
   auto put = [&](const float* v, size_t n) { k.insert(k.end(), v, v + n); };
   put(glm::value_ptr(frame.view_projection), 16);
-  put(glm::value_ptr(lighting.sun_direction), 3);
-  put(glm::value_ptr(lighting.sun_color), 3);
-  put(glm::value_ptr(lighting.ambient), 3);
+  // The light block, word by word (its integers as floats: counts are small).
+  const LightBlock& block = lights.block();
+  put(&block.ambient.x, 4);
+  for (int i = 0; i < 4; ++i) k.push_back(static_cast<float>(block.counts[i]));
+  put(&block.sun_toward[0].x, 4 * kMaxSuns);
+  put(&block.sun_travel[0].x, 4 * kMaxSuns);
+  put(&block.sun_radiance[0].x, 4 * kMaxSuns);
+  put(&block.fire_position[0].x, 4 * kMaxFireLights);
+  put(&block.fire_intensity[0].x, 4 * kMaxFireLights);
   put(glm::value_ptr(settings.background), 3);
   k.push_back(background_alpha(settings));
   k.push_back(static_cast<float>(target.width()));
@@ -103,10 +108,6 @@ std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const
     k.push_back(static_cast<float>(shadows->version & 0xFFFFFFu));
     k.push_back(static_cast<float>((shadows->version >> 24) & 0xFFFFFFu));
   }
-  if (fire)
-    for (const PointEmitter& l : fire->lights)
-      for (double v : {l.position.x, l.position.y, l.position.z, l.radius, l.intensity.x, l.intensity.y, l.intensity.z})
-        k.push_back(static_cast<float>(v));
   for (const MeshInstance& m : instances) {
     const uint64_t id = m.geometry ? m.geometry->id : 0;  // exactly, as two halves
     k.push_back(static_cast<float>(id & 0xFFFFFFu));
@@ -117,19 +118,6 @@ std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const
   return k;
 }
 
-// The fire lights of a program compiled for them (mesh.frag's FIRE_LIGHTS).
-void set_fire_light_uniforms(const gpu::Program& program, const FireLights* fire) {
-  const int count = fire ? std::min(static_cast<int>(fire->lights.size()), kMaxFireLights) : 0;
-  for (int j = 0; j < count; ++j) {
-    const PointEmitter& l = fire->lights[static_cast<size_t>(j)];
-    const std::string at = "[" + std::to_string(j) + "]";
-    glUniform4f(gpu::uniform_location(program, ("u_fire_lights" + at).c_str()), float(l.position.x),
-                float(l.position.y), float(l.position.z), float(l.radius));
-    glUniform3f(gpu::uniform_location(program, ("u_fire_intensity" + at).c_str()), float(l.intensity.x),
-                float(l.intensity.y), float(l.intensity.z));
-  }
-}
-
 void copy_image(GLuint from, GLuint to, const gpu::RenderTarget& target) {
   glCopyImageSubData(from, GL_TEXTURE_2D, 0, 0, 0, 0, to, GL_TEXTURE_2D, 0, 0, 0, 0,
                      target.width(), target.height(), 1);
@@ -138,10 +126,9 @@ void copy_image(GLuint from, GLuint to, const gpu::RenderTarget& target) {
 }  // namespace
 
 void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
-                        const RenderSettings& settings, const SceneLighting& lighting,
-                        const gpu::RenderTarget& target, const ShadowVolume* shadows,
-                        const FireLights* fire) {
-  std::vector<float> inputs = draw_inputs(instances, frame, settings, lighting, target, shadows, fire);
+                        const RenderSettings& settings, const LightBuffer& lights,
+                        const gpu::RenderTarget& target, const ShadowVolume* shadows) {
+  std::vector<float> inputs = draw_inputs(instances, frame, settings, lights, target, shadows);
   Drawn& last = drawn_[target.serial()];
   if (last.color && last.inputs == inputs) {
     if (target.binds() != last.binds) {
@@ -153,7 +140,7 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
     last.binds = target.binds();
     return;
   }
-  draw_meshes(instances, frame, settings, lighting, target, shadows, fire);
+  draw_meshes(instances, frame, settings, lights, target, shadows);
   ++meshes_drawn_;
   const glm::ivec3 shape(target.width(), target.height(), static_cast<int>(target.format()));
   if (!last.color || last.shape != shape) {
@@ -188,8 +175,8 @@ void MeshRenderer::leave_state(bool meshes, const RenderSettings& settings,
 
 void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
                                const CameraFrame& frame, const RenderSettings& settings,
-                               const SceneLighting& lighting, const gpu::RenderTarget& target,
-                               const ShadowVolume* shadows, const FireLights* fire) {
+                               const LightBuffer& lights, const gpu::RenderTarget& target,
+                               const ShadowVolume* shadows) {
   target.bind();
   glClearColor(settings.background.x, settings.background.y, settings.background.z,
                background_alpha(settings));
@@ -204,19 +191,14 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
   // An sRGB target is written by the shader's own encoding, cheaper than GL's on llvmpipe
   // (engine/math/color.h, linear_to_srgb_polynomial); the clear above was encoded by GL.
   const bool encode = target.format() == GL_SRGB8_ALPHA8;
-  const int fire_lights = fire ? std::min(static_cast<int>(fire->lights.size()), kMaxFireLights) : 0;
-  const gpu::Program& program = program_for(encode, fire_lights);
+  const gpu::Program& program = program_for(encode, lights.block().counts.y);
   const GLboolean srgb_writes = glIsEnabled(GL_FRAMEBUFFER_SRGB);
   if (encode) glDisable(GL_FRAMEBUFFER_SRGB);
   glUseProgram(program.get());
   glUniformMatrix4fv(gpu::uniform_location(program, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(frame.view_projection));
-  const glm::vec3 light = glm::normalize(lighting.sun_direction);
-  glUniform3fv(gpu::uniform_location(program, "u_light_direction"), 1, glm::value_ptr(light));
-  glUniform3fv(gpu::uniform_location(program, "u_light_color"), 1, glm::value_ptr(lighting.sun_color));
-  glUniform3fv(gpu::uniform_location(program, "u_ambient"), 1, glm::value_ptr(lighting.ambient));
+  lights.bind();
   bind_shadows(program, shadows);
-  set_fire_light_uniforms(program, fire);
   const GLint model = gpu::uniform_location(program, "u_model");
   const GLint rotation = gpu::uniform_location(program, "u_rotation");
   const GLint albedo = gpu::uniform_location(program, "u_albedo");

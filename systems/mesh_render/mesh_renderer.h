@@ -7,15 +7,14 @@
 
 #include <glm/vec3.hpp>
 
-#include "components/fire_lights.h"
 #include "components/mesh_instance.h"
 #include "components/render_settings.h"
-#include "components/scene_lighting.h"
 #include "components/shadow_volume.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
 #include "engine/mesh/mesh_data.h"
+#include "systems/lighting/light_buffer.h"
 
 namespace pyro {
 
@@ -28,12 +27,11 @@ class MeshRenderer {
   // drawn into it since (RenderTarget::binds(): particles in layers), else that image's colour
   // and depth are copied back (particles blended into it): the same bytes for a fraction of the
   // cost. The opaque scene of a still camera is drawn once. `shadows` (may be null or empty: no
-  // shadows): the particle media's optical depth toward the sun, which dims its light. `fire`
-  // (may be null or empty): the explosion's fire lights, which light it too.
+  // shadows): the particle media's optical depth toward the key light, which dims its light.
+  // `lights` (bound here): every sun, the ambient term and the explosion's fire lights.
   void draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
-            const RenderSettings& settings, const SceneLighting& lighting,
-            const gpu::RenderTarget& target, const ShadowVolume* shadows = nullptr,
-            const FireLights* fire = nullptr);
+            const RenderSettings& settings, const LightBuffer& lights,
+            const gpu::RenderTarget& target, const ShadowVolume* shadows = nullptr);
   // How many of the draws so far drew the meshes, and how many copied the last image back (the
   // others found it in place).
   int meshes_drawn() const { return meshes_drawn_; }
@@ -51,8 +49,8 @@ class MeshRenderer {
   // Releases the buffers of geometry that no instance of `instances` uses.
   void release_unused(const std::vector<MeshInstance>& instances);
   void draw_meshes(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
-                   const RenderSettings& settings, const SceneLighting& lighting,
-                   const gpu::RenderTarget& target, const ShadowVolume* shadows, const FireLights* fire);
+                   const RenderSettings& settings, const LightBuffer& lights,
+                   const gpu::RenderTarget& target, const ShadowVolume* shadows);
   // Sets the shadow uniforms of `program`, uploading `shadows` when it changed.
   void bind_shadows(const gpu::Program& program, const ShadowVolume* shadows);
   // The GL state a draw leaves, set again after a copy.

@@ -37,9 +37,7 @@ std::vector<std::pair<uint32_t, std::pair<const ParticlePool*, ParticleLight*>>>
   return sets;
 }
 
-bool sunlit(const SceneLighting& lighting) {
-  return lighting.directional_lights > 0 && glm::length(lighting.sun_direction) > 0.0f;
-}
+bool sunlit(const SceneLighting& lighting) { return lighting.key_shines(); }
 
 bool sphere_casters(ecs::World& world) {
   const RenderSettings* settings = world.try_resource<const RenderSettings>();
@@ -116,8 +114,8 @@ double mean_scale(const AnisotropicGaussian& g) {
 // Lights every particle from `depth` (see particle_light), set by set in entity-index order, then
 // the anisotropic clouds.
 template <class Depth>
-void write_particle_light(ecs::World& world, const glm::vec3& sun_direction, Depth&& depth) {
-  const glm::dvec3 toward_sun = -glm::normalize(glm::dvec3(sun_direction));
+void write_particle_light(ecs::World& world, const glm::vec3& key_travel, Depth&& depth) {
+  const glm::dvec3 toward_sun = -glm::normalize(glm::dvec3(key_travel));
   const bool spheres = sphere_casters(world);
   const auto each_particle = [](std::size_t n, auto&& light) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kParticlesPerTask),
@@ -165,7 +163,7 @@ void run_shadow_map(ecs::World& world) {
   const bool receivers = world.size<MeshInstance>() > 0;
   const bool wanted = sunlit(lighting) && settings->method != ShadowMethod::none && (particles_use_it || receivers);
   if (wanted) {
-    build_opacity_shadow_map(shadow_casters(world), glm::dvec3(lighting.sun_direction),
+    build_opacity_shadow_map(shadow_casters(world), glm::dvec3(lighting.key()->travel),
                              {settings->map_size, settings->map_slices}, volume);
   } else if (!volume.empty()) {
     const uint64_t version = volume.version + 1;
@@ -177,7 +175,7 @@ void run_shadow_map(ecs::World& world) {
     write_unshadowed_light(world);
     return;
   }
-  write_particle_light(world, lighting.sun_direction,
+  write_particle_light(world, lighting.key()->travel,
                        [&](const glm::dvec3& p) { return double(sample_optical_depth(volume, glm::vec3(p))); });
 }
 
@@ -189,8 +187,8 @@ void run_shadow_rays(ecs::World& world) {
     write_unshadowed_light(world);
     return;
   }
-  const ShadowRayIndex index(shadow_casters(world), glm::dvec3(lighting.sun_direction));
-  write_particle_light(world, lighting.sun_direction,
+  const ShadowRayIndex index(shadow_casters(world), glm::dvec3(lighting.key()->travel));
+  write_particle_light(world, lighting.key()->travel,
                        [&](const glm::dvec3& p) { return index.optical_depth_to_light(p); });
 }
 

@@ -147,8 +147,9 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
       // lit media ("shadows") the light phase lights them every frame, so the particles keep
       // their albedo (no sun, ambient 1: albedo x (0 T + 1)).
       const SceneLighting lighting = combine_lights(scene.directional_lights, scene.ambient_lights);
-      opt.medium.light_direction = glm::dvec3(lighting.sun_direction);
-      opt.medium.light_color = scene.shadows ? glm::dvec3(0.0) : glm::dvec3(lighting.sun_color);
+      // The key light (a scene without suns keeps the default direction, its light black).
+      opt.medium.light_direction = glm::dvec3(lighting.key() ? lighting.key()->travel : SunLight{}.travel);
+      opt.medium.light_color = scene.shadows ? glm::dvec3(0.0) : glm::dvec3(lighting.key_radiance());
       opt.medium.ambient = scene.shadows ? glm::dvec3(1.0) : glm::dvec3(lighting.ambient);
       opt.medium.background = glm::dvec3(scene.background);
       opt.tau_tolerance = tau_tolerance_for_error(v.error);

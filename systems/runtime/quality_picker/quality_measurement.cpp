@@ -101,8 +101,8 @@ std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, i
     sunless->draw_frame(f);
     const SceneLighting& lighting = particles.world().resource<const SceneLighting>();
     ReferenceSun sun;
-    sun.travel = glm::dvec3(lighting.sun_direction);
-    sun.color = glm::dvec3(lighting.directional_lights > 0 ? lighting.sun_color : glm::vec3(0.0f));
+    sun.travel = glm::dvec3(lighting.key() ? lighting.key()->travel : SunLight{}.travel);
+    sun.color = glm::dvec3(lighting.key_radiance());
     sun.ambient = glm::dvec3(lighting.ambient);
     if (const auto* shadows = particles.world().try_resource<const ShadowSettings>())
       sun.scattering = shadows->scattering;

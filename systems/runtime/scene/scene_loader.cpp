@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "components/light_block.h"
 #include "components/stereo_camera.h"
 #include "engine/core/file_kind.h"
 #include "engine/core/long_json_string.h"
@@ -747,6 +748,9 @@ SceneDescription read_scene(ObjectReader& r) {
     s.ambient_lights.clear();
     r.objects("lights", "an object describing a light",
               [&](ObjectReader& l, std::size_t) { read_light_source(l, s); });
+    if (s.directional_lights.size() > size_t(kMaxSuns))
+      r.at("lights").fail("expected at most " + std::to_string(kMaxSuns) + " directional lights, found " +
+                          std::to_string(s.directional_lights.size()));
   }
   std::string schema;  // "$schema": the file's JSON Schema, for editors; nothing for the engine
   r.string("$schema", schema);

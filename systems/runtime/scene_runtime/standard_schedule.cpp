@@ -15,6 +15,8 @@
 #include "systems/flipbook_fire/flipbook_render_system.h"
 #include "systems/lighting/fire_lights.h"
 #include "systems/lighting/light_animation.h"
+#include "systems/lighting/light_block.h"
+#include "systems/lighting/light_buffer.h"
 #include "systems/lighting/lighting_system.h"
 #include "systems/mesh_render/mesh_render_system.h"
 #include "systems/output/frame_readback_system.h"
@@ -29,9 +31,9 @@ std::vector<ecs::SystemDesc> standard_systems(bool readback) {
       cloud_emitter_system(),   emitter_system(),          cloud_drift_system(),
       light_animation_system(), volume_sequence_system(),
       animation_system(),       lighting_system(),         shadow_map_system(),
-      shadow_ray_system(),      fire_light_system(),       camera_orbit_system(),
-      stereo_camera_system(),   sorting_system(),          flipbook_orient_system(),
-      mesh_render_system(),     flipbook_render_system(),  billboard_render_system(),
+      shadow_ray_system(),      fire_light_system(),       light_block_system(),
+      camera_orbit_system(),    stereo_camera_system(),    sorting_system(),
+      flipbook_orient_system(), light_upload_system(),     mesh_render_system(),     flipbook_render_system(),  billboard_render_system(),
       composite_system()};
   if (readback) systems.push_back(frame_readback_system());
   order_after_volume_sequence(systems);

@@ -1,9 +1,11 @@
-// The lighting phase on hand-built worlds: the first directional light by entity index is the
-// sun (its colour times its intensity, its direction as given), the ambient lights add up, and
-// a world without lights is dark.
+// The lighting phase on hand-built worlds: every directional light is a sun in entity-index
+// order (its colour times its intensity, its direction as given and toward it normalised), the
+// first the key light; the ambient lights add up; a world without lights is dark.
 #include "systems/lighting/lighting_system.h"
 
 #include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
 
 #include "components/ambient_light.h"
 #include "components/directional_light.h"
@@ -21,9 +23,13 @@ TEST(LightingSystem, TheFirstDirectionalLightIsTheSunAndAmbientLightsAdd) {
   system.setup(world);
   ecs::run_system_once(system, world);
   const SceneLighting& l = world.resource<SceneLighting>();
-  EXPECT_EQ(l.directional_lights, 2);
-  EXPECT_EQ(l.sun_direction, glm::vec3(0.0f, -2.0f, 0.0f)) << "as given, not normalised";
-  EXPECT_EQ(l.sun_color, glm::vec3(2.0f, 1.0f, 0.5f));
+  ASSERT_EQ(l.suns.size(), 2u);
+  EXPECT_EQ(l.key(), &l.suns[0]);
+  EXPECT_EQ(l.suns[0].travel, glm::vec3(0.0f, -2.0f, 0.0f)) << "as given, not normalised";
+  EXPECT_EQ(l.suns[0].toward, glm::vec3(0.0f, 1.0f, 0.0f));
+  EXPECT_EQ(l.suns[0].radiance, glm::vec3(2.0f, 1.0f, 0.5f));
+  EXPECT_EQ(l.suns[1].toward, glm::vec3(-1.0f, 0.0f, 0.0f));
+  EXPECT_EQ(l.suns[1].radiance, glm::vec3(9.0f, 9.0f, 9.0f));
   EXPECT_EQ(l.ambient, glm::vec3(0.6f, 0.45f, 0.425f));
 }
 
@@ -34,16 +40,20 @@ TEST(LightingSystem, OneLightPassesThroughUnchanged) {
   world.emplace<DirectionalLight>(world.create(), sun);
   world.emplace<AmbientLight>(world.create(), sky);
   const SceneLighting l = gather_lighting(world);
-  EXPECT_EQ(l.sun_direction, sun.direction);
-  EXPECT_EQ(l.sun_color, sun.color);
+  ASSERT_EQ(l.suns.size(), 1u);
+  EXPECT_EQ(l.suns[0].travel, sun.direction);
+  EXPECT_EQ(l.suns[0].toward, -glm::normalize(sun.direction));
+  EXPECT_EQ(l.suns[0].radiance, sun.color);
   EXPECT_EQ(l.ambient, sky.color);
 }
 
 TEST(LightingSystem, AWorldWithoutLightsIsDark) {
   ecs::World world;
   const SceneLighting l = gather_lighting(world);
-  EXPECT_EQ(l.directional_lights, 0);
-  EXPECT_EQ(l.sun_color, glm::vec3(0.0f));
+  EXPECT_TRUE(l.suns.empty());
+  EXPECT_EQ(l.key(), nullptr);
+  EXPECT_EQ(l.key_radiance(), glm::vec3(0.0f));
+  EXPECT_FALSE(l.key_shines());
   EXPECT_EQ(l.ambient, glm::vec3(0.0f));
 }
 

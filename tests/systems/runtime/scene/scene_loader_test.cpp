@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <string>
 
+#include "components/light_block.h"
 #include "engine/core/user_error.h"
 
 namespace pyro {
@@ -231,6 +232,13 @@ TEST(SceneLoader, LightsAreCheckedLikeEveryOtherKey) {
   expect_error_scene_loader(R"({"lights": [{"type": "ambient", "direction": [0, -1, 0]}]})", "/lights/0/direction", {"unknown key"});
   expect_error_scene_loader(R"({"lights": [{"type": "directional", "direction": [0, 0, 0]}]})", "/lights/0/direction", {"non-zero"});
   expect_error_scene_loader(R"({"lights": [{"type": "directional", "intensity": -1}]})", "/lights/0/intensity", {"found -1"});
+  // The light block holds kMaxSuns suns: one more is refused at load, any ambient lights are not.
+  std::string suns;
+  for (int i = 0; i < kMaxSuns; ++i) suns += R"({"type": "directional"}, {"type": "ambient"}, )";
+  EXPECT_EQ(parse_scene(R"({"lights": [)" + suns + R"({"type": "ambient"}]})", kSceneLoaderFile).directional_lights.size(),
+            size_t(kMaxSuns));
+  expect_error_scene_loader(R"({"lights": [)" + suns + R"({"type": "directional"}]})", "/lights",
+                            {"at most 16 directional lights, found 17"});
 }
 
 TEST(SceneLoader, ShadowsScatteringSetsTheLobeAndOctaves) {

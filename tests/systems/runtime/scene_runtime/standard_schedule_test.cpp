@@ -46,6 +46,11 @@ TEST_P(StandardSchedule, DeclarationsHoldAndEveryConflictIsOrdered) {
   EXPECT_LT(at("lighting"), at("stereo_camera"));
   EXPECT_LT(at("stereo_camera"), at("sorting"));
   EXPECT_LT(at("stereo_camera"), at("flipbook_orient"));
+  // One light block a frame, packed after every light is known and on the GPU before any draw.
+  EXPECT_LT(at("fire_lights"), at("light_block"));
+  EXPECT_LT(at("lighting"), at("light_block"));
+  EXPECT_LT(at("light_upload"), at("mesh_render"));
+  EXPECT_LT(at("light_upload"), at("billboard_render"));
   for (const ecs::SystemDesc& s : schedule.systems()) {
     // GL work only in the render, composite and output phases, all of it on the GL thread.
     EXPECT_EQ(s.main_thread, s.phase >= ecs::Phase::render) << s.name;
