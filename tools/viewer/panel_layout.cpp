@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace pyro {
 
@@ -29,23 +30,43 @@ PanelRect fit_frame(const PanelRect& area, int frame_width, int frame_height) {
           h};
 }
 
+namespace {
+
+// Max-min fair shares of `spare` in whole pixels: from the smallest want up, each gets what it
+// wants or an equal share of what is left, whichever is less.
+std::vector<float> fair_shares(const std::vector<float>& wants, float spare) {
+  std::vector<size_t> order(wants.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return wants[a] < wants[b]; });
+  std::vector<float> shares(wants.size(), 0.0f);
+  float left = spare;
+  for (size_t k = 0; k < order.size(); ++k) {
+    shares[order[k]] = std::min(wants[order[k]], std::floor(left / float(order.size() - k)));
+    left -= shares[order[k]];
+  }
+  return shares;
+}
+
+}  // namespace
+
 std::vector<PanelRect> stack_panels(const PanelRect& column, const std::vector<ColumnPanel>& panels,
                                     float gap) {
-  float headers = 0, bodies = 0;
+  float headers = 0;
+  std::vector<float> bodies;
   for (const ColumnPanel& p : panels) {
     headers += p.header;
-    if (p.expanded) bodies += std::max(0.0f, p.wanted - p.header);
+    bodies.push_back(p.expanded ? std::max(0.0f, std::floor(p.wanted - p.header)) : 0.0f);
   }
   if (!panels.empty()) headers += gap * float(panels.size() - 1);
-  const float spare = std::max(0.0f, column.height - headers);
-  const float share = bodies > spare ? spare / bodies : 1.0f;
+  const std::vector<float> shares = fair_shares(bodies, std::max(0.0f, column.height - headers));
   const float bottom = column.y + column.height;
   std::vector<PanelRect> rects;
   float y = column.y;
-  for (const ColumnPanel& p : panels) {
-    const float body = p.expanded ? std::floor(std::max(0.0f, p.wanted - p.header) * share) : 0.0f;
+  for (size_t i = 0; i < panels.size(); ++i) {
     const float top = std::min(y, bottom);
-    rects.push_back({column.x, top, column.width, std::min(p.header + body, bottom - top)});
+    rects.push_back(
+        {column.x, top, column.width, std::min(panels[i].header + shares[i], bottom - top)});
     y = top + rects.back().height + gap;
   }
   return rects;

@@ -46,9 +46,10 @@ struct ColumnPanel {
 };
 
 // The panels top to bottom in `column`, `gap` apart: collapsed ones as their headers; expanded
-// ones share the height the headers leave, each up to its wanted height (in proportion to the
-// body it wants when they do not all fit). Every rectangle lies inside the column, below the one
-// before it, in whole pixels.
+// ones share the height the headers leave, each up to its wanted height. When their bodies do not
+// all fit, the shares are fair: from the smallest body up, each gets what it wants or an equal
+// share of what is left, whichever is less (so a short panel is whole before a long one grows).
+// Every rectangle lies inside the column, below the one before it, in whole pixels.
 std::vector<PanelRect> stack_panels(const PanelRect& column, const std::vector<ColumnPanel>& panels,
                                     float gap);
 

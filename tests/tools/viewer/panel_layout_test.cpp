@@ -82,24 +82,26 @@ TEST(PanelLayout, CollapsedPanelsAreHeadersUnderTheExpandedOnes) {
   EXPECT_EQ(r[3], (PanelRect{320, 160, 360, kHeader}));
 }
 
-TEST(PanelLayout, ExpandedPanelsShareWhatTheHeadersLeaveInProportion) {
-  const PanelRect column{0, 0, 360, 270};
-  // Headers and gaps: 4 * 27 + 3 * 2 = 114, leaving 156 for bodies that want 73 + 493 + 273 + 113
-  // = 952: each body gets 156/952 of what it wants, rounded down.
-  const std::vector<PanelRect> r = stack_panels(
-      column,
-      {{kHeader, 100, true}, {kHeader, 520, true}, {kHeader, 300, true}, {kHeader, 140, true}},
-      kGap);
+TEST(PanelLayout, ExpandedPanelsShareWhatTheHeadersLeaveFairly) {
+  const std::vector<ColumnPanel> all = {
+      {kHeader, 100, true}, {kHeader, 520, true}, {kHeader, 300, true}, {kHeader, 140, true}};
+  // Headers and gaps: 4 * 27 + 3 * 2 = 114. In a 500-pixel column that leaves 386 for bodies
+  // that want 73, 493, 273 and 113. From the smallest: 73 (less than 386 / 4), then
+  // min(113, 313 / 3) = 104, min(273, 209 / 2) = 104, and the 105 left.
+  std::vector<PanelRect> r = stack_panels({0, 0, 360, 500}, all, kGap);
   ASSERT_EQ(r.size(), 4u);
-  const float share = 156.0f / 952.0f;
-  EXPECT_EQ(r[0].height, kHeader + std::floor(73 * share));
-  EXPECT_EQ(r[1].height, kHeader + std::floor(493 * share));
-  EXPECT_EQ(r[2].height, kHeader + std::floor(273 * share));
-  EXPECT_EQ(r[3].height, kHeader + std::floor(113 * share));
-  expect_stacked_inside(r, column);
+  EXPECT_EQ(r[0], (PanelRect{0, 0, 360, 100}));
+  EXPECT_EQ(r[1], (PanelRect{0, 102, 360, kHeader + 105}));
+  EXPECT_EQ(r[2], (PanelRect{0, 236, 360, kHeader + 104}));
+  EXPECT_EQ(r[3], (PanelRect{0, 369, 360, kHeader + 104}));
+  expect_stacked_inside(r, {0, 0, 360, 500});
+  // In 270 pixels, 156 left: 39 each, every body wanting more than that.
+  r = stack_panels({0, 0, 360, 270}, all, kGap);
+  for (const PanelRect& p : r) EXPECT_EQ(p.height, kHeader + 39);
+  expect_stacked_inside(r, {0, 0, 360, 270});
   // What fits is given in full: the stereo panel alone.
   const std::vector<PanelRect> one = stack_panels(
-      column,
+      {0, 0, 360, 270},
       {{kHeader, 100, false}, {kHeader, 520, false}, {kHeader, 300, false}, {kHeader, 140, true}},
       kGap);
   EXPECT_EQ(one[3], (PanelRect{0, 87, 360, 140}));
