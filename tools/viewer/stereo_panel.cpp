@@ -13,7 +13,7 @@ StereoRequest draw_stereo_panel(StereoMode mode, const nlohmann::json& tree, Doc
   StereoRequest request;
   const DockedPart part = begin_docked_panel("Stereo", panel);
   if (part == DockedPart::body) {
-    ImGui::PushItemWidth(-ImGui::GetFontSize() * 11.5f);  // room for "zero_parallax_distance"
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 12.5f);  // room for "zero_parallax_distance"
     const std::string current(name_of(mode));
     if (ImGui::BeginCombo("mode", current.c_str())) {
       for (const auto& entry : enum_names(mode))
