@@ -22,6 +22,14 @@ PanelColumn::PanelColumn(bool inspector_expanded) {
   (*this)[ViewerPanel::inspector].expanded = inspector_expanded;
 }
 
+void PanelColumn::expand(const std::string& name) {
+  for (size_t i = 0; i < count; ++i) {
+    std::string lower = panel_name(ViewerPanel(i));
+    lower[0] = char(lower[0] - 'A' + 'a');
+    if (lower == name) panels_[i].expanded = true;
+  }
+}
+
 void PanelColumn::place(const PanelRect& column, const std::array<float, count>& wanted,
                         float header) {
   std::vector<ColumnPanel> stack;

@@ -5,6 +5,7 @@
 // reports where it put them (pyro view --json, "layout").
 #include <array>
 #include <cstddef>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,10 @@ class PanelColumn {
   // Places the panels in `column` for this frame: `wanted`, the height each would like expanded
   // (in ViewerPanel's order); `header`, a collapsed panel's height.
   void place(const PanelRect& column, const std::array<float, count>& wanted, float header);
+
+  // Expands the panel of that name (lower case: "status", "inspector", "profiler", "stereo"); any
+  // other name, none.
+  void expand(const std::string& name);
 
   DockedPanel& operator[](ViewerPanel p) { return panels_[size_t(p)]; }
   const DockedPanel& operator[](ViewerPanel p) const { return panels_[size_t(p)]; }

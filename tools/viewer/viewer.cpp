@@ -82,6 +82,7 @@ class Viewer {
         document_(SceneDocument::open(o_.scene)),
         inspector_(o_.inspect),
         panels_(!o_.inspect.empty()) {
+    for (const std::string& name : o_.expand) panels_.expand(name);
     settings_.stereo = o_.runtime.stereo_mode;
     settings_.billboards = o_.runtime.alignment.value_or(scene_.render.billboards);
     settings_.layer_scale = o_.runtime.layer_scale.value_or(scene_.render.layer_scale);

@@ -49,6 +49,7 @@ struct ViewerOptions {
   std::string screenshot;      // PNG of the window after the last frame (or when closed)
   bool overlay = true;         // the panels (status, inspector, profiler, stereo)
   std::string inspect;         // a JSON pointer the inspector opens at, e.g. "/clouds/0"
+  std::vector<std::string> expand;  // panels that start expanded: status, inspector, profiler, stereo
   RuntimeOptions runtime;      // stereo mode, billboards, layer scale: the keys change them later
   std::vector<ViewerEdit> edits;
   std::vector<ViewerPress> presses;

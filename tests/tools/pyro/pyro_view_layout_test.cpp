@@ -3,7 +3,8 @@
 // pauses at once, saves the window with its panels, hides them (O) and saves it again: the two
 // images differ exactly where a panel is drawn. By default the panels cover at most a third of
 // the window, lie inside it and inside the rectangles the viewer reports (--json "layout"), do not
-// overlap one another, and leave the scene's frame whole at its own size.
+// overlap one another, and leave the scene's frame whole at its own size; with every panel
+// expanded (--expand) they still lie apart, inside the window and off the frame.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,13 +32,15 @@ struct PanelShots {
   nlohmann::json summary;
 };
 
-PanelShots panel_shots(const std::string& scene, const fs::path& dir) {
+PanelShots panel_shots(const std::string& scene, const fs::path& dir,
+                       const std::vector<std::string>& more = {}) {
   // Space at frame 0 pauses before the first step: every frame shows the same image.
-  const auto r = test::run_pyro_with(
-      test::xvfb_launcher(),
-      {"view", scene, "--frames", "8", "--press-at", "0:SPACE", "--screenshot-at",
-       "5:" + (dir / "shown.png").string(), "--press-at", "6:O", "--screenshot-at",
-       "7:" + (dir / "hidden.png").string(), "--json"});
+  std::vector<std::string> args = {"view", scene, "--frames", "8", "--press-at", "0:SPACE",
+                                   "--screenshot-at", "5:" + (dir / "shown.png").string(),
+                                   "--press-at", "6:O", "--screenshot-at",
+                                   "7:" + (dir / "hidden.png").string(), "--json"};
+  args.insert(args.end(), more.begin(), more.end());
+  const auto r = test::run_pyro_with(test::xvfb_launcher(), args);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   PanelShots shots;
   if (r.exit_code != 0) return shots;
@@ -82,9 +85,10 @@ bool inside_some(const std::vector<LayoutRect>& rects, int x, int y) {
   return false;
 }
 
-// The reported rectangles: inside the window, apart from each other and from the frame, a third
-// of the window at most, and every pixel a panel changed inside one of them.
-void expect_reported_layout_holds(const PanelShots& s, int frame_width, int frame_height) {
+// The reported rectangles: inside the window, apart from each other and from the frame, at most
+// `max_share` of the window, and every pixel a panel changed inside one of them.
+void expect_reported_layout_holds(const PanelShots& s, int frame_width, int frame_height,
+                                  double max_share) {
   ASSERT_TRUE(s.summary.contains("layout")) << "the summary reports no panel layout";
   const nlohmann::json& layout = s.summary["layout"];
   const LayoutRect window{0, 0, double(s.shown.width), double(s.shown.height)};
@@ -102,7 +106,7 @@ void expect_reported_layout_holds(const PanelShots& s, int frame_width, int fram
     area += (r.x1 - r.x0) * (r.y1 - r.y0);
   }
   EXPECT_EQ(panels.size(), 4u) << layout.dump();
-  EXPECT_LE(area, (window.x1 * window.y1) / 3.0) << layout.dump();
+  EXPECT_LE(area, window.x1 * window.y1 * max_share) << layout.dump();
   size_t stray = 0;
   for (int y = 0; y < s.shown.height; ++y)
     for (int x = 0; x < s.shown.width; ++x)
@@ -124,7 +128,7 @@ void expect_panels_leave_the_scene(const std::string& scene, int frame_width, in
   std::printf("%dx%d frame, %dx%d window: panels drew %.1f%% of it\n", frame_width, frame_height,
               s.shown.width, s.shown.height, 100.0 * share);
   EXPECT_LE(share, 1.0 / 3.0) << "the panels changed " << 100.0 * share << "% of the window";
-  expect_reported_layout_holds(s, frame_width, frame_height);
+  expect_reported_layout_holds(s, frame_width, frame_height, 1.0 / 3.0);
 }
 
 TEST(PyroViewLayout, PanelsCoverAThirdAtMostOfTheWindowOfATallSmallFrame) {
@@ -133,6 +137,23 @@ TEST(PyroViewLayout, PanelsCoverAThirdAtMostOfTheWindowOfATallSmallFrame) {
 
 TEST(PyroViewLayout, PanelsCoverAThirdAtMostOfTheWindowOfAWideSmallFrame) {
   expect_panels_leave_the_scene(content_path("templates/fog.json"), 480, 270);
+}
+
+// Every panel expanded (--expand) in the lower of the two windows: they share the column, still
+// inside the window, apart and off the frame; each is more than its header.
+TEST(PyroViewLayout, ExpandedPanelsShareTheColumnWithoutOverlapping) {
+  if (!test::have_xvfb_run())
+    GTEST_SKIP() << "xvfb-run is not installed (tools/install-deps.sh installs xvfb)";
+  const fs::path dir = test::scratch_dir("panels_expanded");
+  const PanelShots s = panel_shots(content_path("templates/fog.json"), dir,
+                                   {"--expand", "status", "--expand", "inspector", "--expand",
+                                    "profiler", "--expand", "stereo"});
+  ASSERT_FALSE(s.shown.pixels.empty());
+  expect_reported_layout_holds(s, 480, 270, 1.0);
+  for (const nlohmann::json& p : s.summary["layout"]["panels"]) {
+    EXPECT_TRUE(p["expanded"].get<bool>()) << p.dump();
+    EXPECT_GT(p["height"].get<double>(), 40.0) << p.dump();
+  }
 }
 
 }  // namespace

@@ -213,6 +213,9 @@ TEST(PyroView, ArgumentMistakesExitTwoBeforeAnyWindowOpens) {
                                        (dir / "no_such_folder" / "shot.png").string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--screenshot"), std::string::npos) << r.err;
+  r = test::run_pyro_with(no_display, {"view", scene, "--expand", "sidebar"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--expand"), std::string::npos) << r.err;
   r = test::run_pyro_with(no_display, {"view", scene, "--press-at", "3:F5"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--press-at"), std::string::npos) << r.err;
