@@ -1,7 +1,8 @@
 // pyro view SCENE [--width W] [--height H] [--frames N] [--screenshot FILE] [--no-overlay]
 //                 [--replace-at FRAME:FILE ...] [--press-at FRAME:KEY ...]
 //                 [--set-at FRAME:/POINTER=VALUE ...] [--undo-at FRAME ...]
-//                 [--screenshot-at FRAME:FILE ...] [--save-as FILE] [--inspect POINTER] [--json]
+//                 [--screenshot-at FRAME:FILE ...] [--save-as FILE] [--inspect POINTER]
+//                 [--expand PANEL ...] [--json]
 //                 [render options]
 //
 // Parses the options and the scripted edits and presses, then runs the viewer
@@ -44,6 +45,7 @@ struct ViewArgs {
   std::vector<std::string> screenshot_at;
   std::string save_as;
   std::string inspect;
+  std::vector<std::string> expand;
   RuntimeOptions runtime;
 };
 
@@ -156,6 +158,7 @@ void run_view(const ViewArgs& a) {
   if (!a.inspect.empty() && a.inspect[0] != '/')
     throw UserError(a.inspect, "--inspect", "expected a JSON pointer, e.g. /clouds/0");
   options.inspect = a.inspect;
+  options.expand = a.expand;
   options.scene = a.scene;
   options.width = a.width;
   options.height = a.height;
@@ -203,6 +206,10 @@ void add_view_command(CLI::App& app) {
                   "Repeatable; for tests and demos");
   cmd->add_option("--inspect", args->inspect,
                   "POINTER: open the inspector at this entity or key, e.g. /clouds/0");
+  cmd->add_option("--expand", args->expand,
+                  "PANEL: start with this panel expanded (status, inspector, profiler, stereo; the "
+                  "status is, and the inspector with --inspect). Repeatable")
+      ->check(CLI::IsMember({"status", "inspector", "profiler", "stereo"}));
   cmd->add_option("--set-at", args->set_at,
                   "FRAME:/POINTER=VALUE: at that frame, set the scene's value at the JSON pointer, as "
                   "the inspector does (VALUE is JSON; a bare word is a string). Repeatable; a value "

@@ -269,13 +269,11 @@ void draw_scene_keys(const ParameterTable& table, const json& tree, const std::v
 }
 
 InspectorRequest InspectorPanel::draw(const json& tree, const ParameterTable& table,
-                                      const InspectorStatus& status) {
+                                      const InspectorStatus& status, DockedPanel& panel) {
   InspectorRequest request;
   focus_pointer() = focus_;
-  const float s = ImGui::GetIO().FontGlobalScale;
-  ImGui::SetNextWindowPos(ImVec2(8 * s, 8 * s), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(380 * s, 520 * s), ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Inspector")) {
+  const DockedPart part = begin_docked_panel("Inspector", panel);
+  if (part == DockedPart::body) {
     draw_status(status, request, save_as_path_);
     ImGui::Separator();
     draw_table(table, tree, {}, tree, request, true);
@@ -289,7 +287,7 @@ InspectorRequest InspectorPanel::draw(const json& tree, const ParameterTable& ta
       ImGui::TreePop();
     }
   }
-  ImGui::End();
+  end_docked_panel(part);
   return request;
 }
 

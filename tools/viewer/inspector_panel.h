@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/io/parameter_table.h"
+#include "tools/viewer/docked_panel.h"
 #include "tools/viewer/inspector_edit.h"
 
 namespace pyro {
@@ -45,9 +46,10 @@ class InspectorPanel {
   // `focus`: a JSON pointer (e.g. "/clouds/0") whose nodes open when first shown; empty: none.
   explicit InspectorPanel(std::string focus = {}) : focus_(std::move(focus)) {}
 
-  // Draws the panel for `tree` (the document's JSON) described by `table` (the scene's keys).
+  // Draws the panel at its place in the column for `tree` (the document's JSON) described by
+  // `table` (the scene's keys).
   InspectorRequest draw(const nlohmann::json& tree, const ParameterTable& table,
-                        const InspectorStatus& status);
+                        const InspectorStatus& status, DockedPanel& panel);
 
  private:
   std::string focus_;

@@ -32,12 +32,10 @@ void particle_table(const ProfilerView& v) {
 
 }  // namespace
 
-ProfilerRequest draw_profiler_panel(const ProfilerView& v) {
+ProfilerRequest draw_profiler_panel(const ProfilerView& v, DockedPanel& panel) {
   ProfilerRequest request;
-  const float s = ImGui::GetIO().FontGlobalScale;
-  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 368 * s, 8 * s), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360 * s, 300 * s), ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Profiler")) {
+  const DockedPart part = begin_docked_panel("Profiler", panel);
+  if (part == DockedPart::body) {
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 9.0f);  // room for the longest system name
     ImGui::Text("%.1f fps, %.2f ms per frame, frame %llu", v.fps, v.frame_ms, (unsigned long long)v.frame);
     particle_table(v);
@@ -53,7 +51,7 @@ ProfilerRequest draw_profiler_panel(const ProfilerView& v) {
     }
     ImGui::PopItemWidth();
   }
-  ImGui::End();
+  end_docked_panel(part);
   return request;
 }
 

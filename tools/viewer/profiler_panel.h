@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "systems/runtime/scene_runtime/particle_counts.h"
+#include "tools/viewer/docked_panel.h"
 #include "tools/viewer/frame_time_history.h"
 
 namespace pyro {
@@ -26,6 +27,6 @@ struct ProfilerRequest {
   bool toggle_gpu_profiling = false;
 };
 
-ProfilerRequest draw_profiler_panel(const ProfilerView& view);
+ProfilerRequest draw_profiler_panel(const ProfilerView& view, DockedPanel& panel);
 
 }  // namespace pyro

@@ -9,15 +9,11 @@
 
 namespace pyro {
 
-StereoRequest draw_stereo_panel(StereoMode mode, const nlohmann::json& tree) {
+StereoRequest draw_stereo_panel(StereoMode mode, const nlohmann::json& tree, DockedPanel& panel) {
   StereoRequest request;
-  const float s = ImGui::GetIO().FontGlobalScale;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  // Under the profiler, in the right-hand column the status bar leaves free.
-  ImGui::SetNextWindowPos(ImVec2(display.x - 368 * s, 316 * s), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360 * s, 140 * s), ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Stereo")) {
-    ImGui::PushItemWidth(-ImGui::GetFontSize() * 11.5f);  // room for "zero_parallax_distance"
+  const DockedPart part = begin_docked_panel("Stereo", panel);
+  if (part == DockedPart::body) {
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 12.5f);  // room for "zero_parallax_distance"
     const std::string current(name_of(mode));
     if (ImGui::BeginCombo("mode", current.c_str())) {
       for (const auto& entry : enum_names(mode))
@@ -28,7 +24,7 @@ StereoRequest draw_stereo_panel(StereoMode mode, const nlohmann::json& tree) {
     draw_scene_keys(stereo_keys(), tree, {"camera", "stereo"}, request.keys);
     ImGui::PopItemWidth();
   }
-  ImGui::End();
+  end_docked_panel(part);
   return request;
 }
 

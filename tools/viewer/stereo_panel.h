@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "components/render_settings.h"
+#include "tools/viewer/docked_panel.h"
 #include "tools/viewer/inspector_panel.h"
 
 namespace pyro {
@@ -16,6 +17,6 @@ struct StereoRequest {
   InspectorRequest keys;  // an edit of camera.stereo
 };
 
-StereoRequest draw_stereo_panel(StereoMode mode, const nlohmann::json& tree);
+StereoRequest draw_stereo_panel(StereoMode mode, const nlohmann::json& tree, DockedPanel& panel);
 
 }  // namespace pyro

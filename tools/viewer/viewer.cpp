@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "components/camera.h"
 #include "components/camera_orbit.h"
@@ -28,6 +30,8 @@
 #include "systems/runtime/scene_runtime/scene_runtime.h"
 #include "tools/viewer/frame_time_history.h"
 #include "tools/viewer/inspector_panel.h"
+#include "tools/viewer/panel_column.h"
+#include "tools/viewer/panel_layout.h"
 #include "tools/viewer/profiler_panel.h"
 #include "tools/viewer/scene_reloader.h"
 #include "tools/viewer/status_panel.h"
@@ -44,6 +48,17 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The panels' font and widget scale (1: 13-pixel text).
+constexpr float kGuiScale = 1.0f;
+
+// The window opens at the frame's size beside the panel column (panel_layout.h); with the panels
+// off (--no-overlay), at the frame's own size.
+WindowSize opening_size(const ViewerOptions& o, const SceneDescription& s) {
+  const int width = output_width(o.width > 0 ? o.width : s.width, o.runtime.stereo_mode);
+  const int height = o.height > 0 ? o.height : s.height;
+  return viewer_window_size(width, height, o.overlay ? panel_column_width(kGuiScale) : 0.0f);
+}
+
 CameraPose pose_of(const SceneDescription& s) {
   return {s.camera.position, s.camera.target, s.camera.up};
 }
@@ -59,14 +74,15 @@ class Viewer {
   Viewer(const ViewerOptions& options, SceneDescription scene)
       : o_(options),
         scene_(std::move(scene)),
-        window_(output_width(o_.width > 0 ? o_.width : scene_.width, o_.runtime.stereo_mode),
-                o_.height > 0 ? o_.height : scene_.height,
+        window_(opening_size(o_, scene_).width, opening_size(o_, scene_).height,
                 "pyro view - " + o_.scene + " - " + key_help_title()),
-        gui_(window_.glfw_window(), 1.0f),
+        gui_(window_.glfw_window(), kGuiScale),
         controller_(pose_of(scene_)),
         reloader_(stamp_file(o_.scene)),
         document_(SceneDocument::open(o_.scene)),
-        inspector_(o_.inspect) {
+        inspector_(o_.inspect),
+        panels_(!o_.inspect.empty()) {
+    for (const std::string& name : o_.expand) panels_.expand(name);
     settings_.stereo = o_.runtime.stereo_mode;
     settings_.billboards = o_.runtime.alignment.value_or(scene_.render.billboards);
     settings_.layer_scale = o_.runtime.layer_scale.value_or(scene_.render.layer_scale);
@@ -190,6 +206,7 @@ class Viewer {
                         {"edits", edits_applied_},
                         {"modified", document_.modified()},
                         {"assets", asset_counters_json()},
+                        {"layout", layout_json()},
                         {"renderer", window_.description()}};
     if (quality_) j["quality"] = quality_pick_summary(*quality_);
     return j;
@@ -277,6 +294,7 @@ class Viewer {
 
   void reload_failed(const FileStamp& stamp, const std::string& message) {
     reloader_.failed(stamp, frame_, message);
+    panels_[ViewerPanel::status].expanded = true;  // where the message is
     note("reload failed, keeping the last good scene: " + message);
   }
 
@@ -297,6 +315,7 @@ class Viewer {
       settings_ = previous;
       layer_scale_chosen_ = chosen_before;
       notice_ = e.what();
+      panels_[ViewerPanel::status].expanded = true;
     }
   }
 
@@ -309,6 +328,7 @@ class Viewer {
       if (!action) continue;
       const ViewerSettings previous = settings_;
       const ViewerEffect effect = apply_action(settings_, *action);
+      if (settings_.help && !previous.help) panels_[ViewerPanel::status].expanded = true;
       if (effect.quit) quit_ = true;
       if (effect.toggle_camera_mode) controller_.toggle_mode();
       if (effect.reload_scene) reload_requested_ = true;
@@ -499,27 +519,65 @@ class Viewer {
     return info;
   }
 
-  // The panels: status (rates, modes, a failed reload's message, the keys), inspector, profiler
-  // and stereo. What they ask for is applied at the start of the next frame.
+  // The panels, in their column: status (rates, modes, a failed reload's message, the keys),
+  // inspector, profiler and stereo. What they ask for is applied at the start of the next frame.
   void draw_panels() {
-    draw_status_panel(overlay_lines(status_info(), 400));
+    const OverlayInfo info = status_info();
+    const PanelRect column = window_split(window_units()).column;
+    const std::vector<OverlayLine> lines = overlay_lines(info, status_panel_columns(column.width));
+    place_panels(column, lines.size(), !info.help && info.error.empty());
+    draw_status_panel(overlay_header(info), lines, panels_[ViewerPanel::status]);
     InspectorStatus status = inspector_status_;
     status.file = document_.path();
     status.modified = document_.modified();
     status.can_undo = document_.can_undo();
     status.can_redo = document_.can_redo();
-    requests_.push_back(inspector_.draw(document_.tree(), scene_keys(), status));
-    StereoRequest stereo = draw_stereo_panel(settings_.stereo, document_.tree());
+    requests_.push_back(
+        inspector_.draw(document_.tree(), scene_keys(), status, panels_[ViewerPanel::inspector]));
+    StereoRequest stereo =
+        draw_stereo_panel(settings_.stereo, document_.tree(), panels_[ViewerPanel::stereo]);
     requests_.push_back(std::move(stereo.keys));
     if (stereo.mode) {
       const ViewerSettings previous = settings_;
       settings_.stereo = *stereo.mode;
       pending_rebuild_ = previous;
     }
-    if (draw_profiler_panel(profiler_view()).toggle_gpu_profiling) {
+    if (draw_profiler_panel(profiler_view(), panels_[ViewerPanel::profiler]).toggle_gpu_profiling) {
       gpu_profiling_ = !gpu_profiling_;
       pending_rebuild_ = settings_;
     }
+  }
+
+  // This frame's places in `column`: each panel asks for the height it would like expanded. The
+  // status asks for its lines, up to a quarter of the column unless they show the key help or an
+  // error; the inspector, whose tree is long, for the whole column.
+  void place_panels(const PanelRect& column, size_t status_lines, bool status_capped) {
+    const float header = docked_panel_header_height();
+    float status = status_panel_height(status_lines);
+    if (status_capped) status = std::min(status, std::max(header, std::floor(column.height / 4)));
+    panels_.place(column, {status, column.height, 300 * kGuiScale, 140 * kGuiScale}, header);
+  }
+
+  // The window's size in the units the panels are laid out in (GLFW's screen coordinates).
+  std::pair<float, float> window_units() const {
+    int w = 0, h = 0;
+    glfwGetWindowSize(window_.glfw_window(), &w, &h);
+    return {float(w), float(h)};
+  }
+
+  // The frame's part and the panels' column of a window `size` (window_units()) wide and high.
+  // The column stays while O hides the panels, so that the frame keeps its place; a window opened
+  // without panels (--no-overlay) makes room for them when O shows them.
+  WindowSplit window_split(std::pair<float, float> size) const {
+    const bool column = o_.overlay || settings_.overlay;
+    return split_window(size.first, size.second, column ? panel_column_width(kGuiScale) : 0.0f);
+  }
+
+  // Where the panels were last placed and the frame drawn, for --json (window pixels).
+  nlohmann::json layout_json() const {
+    return {{"view", panel_rect_json(view_)},
+            {"panels", panels_.to_json()},
+            {"shown", settings_.overlay}};
   }
 
   ProfilerView profiler_view() {
@@ -536,13 +594,19 @@ class Viewer {
     return v;
   }
 
-  // The runtime's output, letterboxed into the window, then the panels.
+  // The runtime's output beside the panels' column, scaled to fit its part, then the panels.
   void present() {
     window_.make_current();
     const int ww = window_.framebuffer_width(), wh = window_.framebuffer_height();
+    const std::pair<float, float> units = window_units();
+    const float r = units.first > 0 ? float(ww) / units.first : 1.0f;  // 1 but on scaled displays
+    const PanelRect area = window_split(units).view;
+    const gpu::RenderTarget& out = runtime_->output_target();
+    view_ = fit_frame({area.x * r, area.y * r, area.width * r, area.height * r}, out.width(),
+                      out.height());
     {
       const SrgbWritesOff bytes;
-      present_letterboxed(runtime_->output_target(), ww, wh);
+      present_frame(out, view_, ww, wh);
     }
     if (!settings_.overlay) return;
     gui_.begin_frame();
@@ -569,6 +633,8 @@ class Viewer {
   std::unique_ptr<SceneRuntime> runtime_;
   std::optional<QualityPick> quality_;  // the pick runtime_ runs with (scene key quality.max_rmse)
   InspectorPanel inspector_;
+  PanelColumn panels_;
+  PanelRect view_;  // where the frame was last drawn
   InspectorStatus inspector_status_;
   std::vector<InspectorRequest> requests_;
   std::optional<ViewerSettings> pending_rebuild_;  // the settings before a panel changed them

@@ -1,7 +1,7 @@
 #pragma once
 // The interactive viewer (pyro view): a GLFW window (engine/gpu/window_context.h) whose context
-// the scene runtime renders with; each frame the runtime's output is letterboxed into the window
-// (window_image.h) and the overlay drawn over it. The logic lives in window-free files with
+// the scene runtime renders with; each frame the runtime's output is drawn into the window
+// (window_image.h) beside the panels' column (panel_layout.h, panel_column.h). The logic lives in window-free files with
 // their own tests: the keys (viewer_keys.h), what they change (viewer_settings.h), the camera
 // (engine/math/view_controller.h), hot reload (scene_reloader.h) and the overlay's text
 // (viewer_overlay.h); this module and engine_window are the only code that links GLFW.
@@ -49,6 +49,7 @@ struct ViewerOptions {
   std::string screenshot;      // PNG of the window after the last frame (or when closed)
   bool overlay = true;         // the panels (status, inspector, profiler, stereo)
   std::string inspect;         // a JSON pointer the inspector opens at, e.g. "/clouds/0"
+  std::vector<std::string> expand;  // panels that start expanded: status, inspector, profiler, stereo
   RuntimeOptions runtime;      // stereo mode, billboards, layer scale: the keys change them later
   std::vector<ViewerEdit> edits;
   std::vector<ViewerPress> presses;

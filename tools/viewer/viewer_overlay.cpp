@@ -48,6 +48,13 @@ std::vector<std::string> wrap_text(const std::string& text, int columns) {
   return lines;
 }
 
+std::string overlay_header(const OverlayInfo& info) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "Status  %.1f fps  frame %llu%s", info.fps, info.frame,
+                info.paused ? "  PAUSED" : "");
+  return buf;
+}
+
 std::vector<OverlayLine> overlay_lines(const OverlayInfo& info, int columns) {
   std::vector<OverlayLine> out;
   const auto add = [&](const std::string& text, bool error) {

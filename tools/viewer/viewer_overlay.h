@@ -32,4 +32,8 @@ std::vector<std::string> wrap_text(const std::string& text, int columns);
 
 std::vector<OverlayLine> overlay_lines(const OverlayInfo& info, int columns);
 
+// One line for the status panel's header, seen while the panel is collapsed: "Status  30.0 fps
+// frame 12" (and "  PAUSED").
+std::string overlay_header(const OverlayInfo& info);
+
 }  // namespace pyro

@@ -9,14 +9,13 @@ namespace pyro {
 SrgbWritesOff::SrgbWritesOff() { glDisable(GL_FRAMEBUFFER_SRGB); }
 SrgbWritesOff::~SrgbWritesOff() { glEnable(GL_FRAMEBUFFER_SRGB); }
 
-void present_letterboxed(const gpu::RenderTarget& out, int ww, int wh) {
+void present_frame(const gpu::RenderTarget& out, const PanelRect& place, int ww, int wh) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, ww, wh);
   glClearColor(0.05f, 0.05f, 0.05f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  const double scale = std::min(double(ww) / out.width(), double(wh) / out.height());
-  const int w = int(out.width() * scale + 0.5), h = int(out.height() * scale + 0.5);
-  const int x0 = (ww - w) / 2, y0 = (wh - h) / 2;
+  const int w = int(place.width), h = int(place.height);
+  const int x0 = int(place.x), y0 = wh - int(place.y) - h;  // GL's rows count from the bottom
   glBlitNamedFramebuffer(out.framebuffer(), 0, 0, 0, out.width(), out.height(), x0, y0, x0 + w,
                          y0 + h, GL_COLOR_BUFFER_BIT,
                          w == out.width() && h == out.height() ? GL_NEAREST : GL_LINEAR);

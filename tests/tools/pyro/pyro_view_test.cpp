@@ -5,6 +5,7 @@
 // display: exit 3 and a message saying how to run it. Argument mistakes: exit 2 before any window.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -79,14 +80,21 @@ TEST(PyroView, RendersTheExplosionUnderXvfbAndMatchesTheHeadlessRender) {
     worst = std::max(worst, std::abs(int(ref.pixels[i]) - int(shot.pixels[i])));
   EXPECT_LE(worst, 2) << "the window shows the runtime's output byte for byte (same driver)";
 
-  // With the panels: the inspector's translucent dark window covers the left of the view.
+  // With the panels: the window holds the frame's part, at least as wide as the panels' column
+  // (360), beside the column, and at least 240 high: 720 x 240. The frame is scaled to fit its
+  // part, twice its size, centred (x 20 to 340), with nothing over it; the panels are drawn in
+  // the column.
   const auto o = test::run_pyro_with(
       xvfb_launcher(), {"view", scene, "--width", "160", "--height", "120", "--frames", "30",
-                        "--screenshot", (dir / "overlay.png").string()});
+                        "--screenshot", (dir / "overlay.png").string(), "--json"});
   ASSERT_EQ(o.exit_code, 0) << o.err;
   const PngImage with_overlay = read_png((dir / "overlay.png").string());
-  ASSERT_EQ(with_overlay.width, 160);
-  EXPECT_LT(mean(with_overlay, 20, 30, 60, 60), 0.6 * mean(shot, 20, 30, 60, 60));
+  ASSERT_EQ(with_overlay.width, 720);
+  ASSERT_EQ(with_overlay.height, 240);
+  const auto view = test::last_json_line(o.out)["layout"]["view"];
+  EXPECT_EQ(view, nlohmann::json({{"x", 20}, {"y", 0}, {"width", 320}, {"height", 240}}));
+  EXPECT_NEAR(mean(with_overlay, 20 + 40, 60, 20 + 120, 120), mean(shot, 20, 30, 60, 60), 4.0);
+  EXPECT_GT(std::abs(mean(with_overlay, 360, 0, 720, 30) - 13.0), 4.0) << "no panel header at the column's top";
 }
 
 TEST(PyroView, HotReloadReportsBrokenEditsAndAppliesTheGoodOne) {
@@ -205,6 +213,9 @@ TEST(PyroView, ArgumentMistakesExitTwoBeforeAnyWindowOpens) {
                                        (dir / "no_such_folder" / "shot.png").string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--screenshot"), std::string::npos) << r.err;
+  r = test::run_pyro_with(no_display, {"view", scene, "--expand", "sidebar"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--expand"), std::string::npos) << r.err;
   r = test::run_pyro_with(no_display, {"view", scene, "--press-at", "3:F5"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--press-at"), std::string::npos) << r.err;

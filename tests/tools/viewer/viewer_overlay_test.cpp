@@ -67,6 +67,13 @@ TEST(ViewerOverlay, LinesShowRateCountsModesAndSystemTimes) {
   EXPECT_NE(overlay_lines(paused, 80)[0].text.find("PAUSED"), std::string::npos);
 }
 
+TEST(ViewerOverlay, TheHeaderCarriesRateFrameAndPause) {
+  OverlayInfo i = sample();
+  EXPECT_EQ(overlay_header(i), "Status  42.5 fps  frame 120");
+  i.paused = true;
+  EXPECT_EQ(overlay_header(i), "Status  42.5 fps  frame 120  PAUSED");
+}
+
 TEST(ViewerOverlay, AReloadErrorIsShownWrappedInTheErrorColour) {
   OverlayInfo i = sample();
   i.error = "/tmp/scene.json: at /output/fps: expected a number > 0, found -30";
