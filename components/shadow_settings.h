@@ -41,6 +41,9 @@ struct ShadowSettings {
   // sphere_billboard.frag, LIT 2), whatever `method`: the truth
   // that `pyro bench explosion-shadows` measures the methods against. Not in the scene format.
   bool exact_fragments = false;
+  // The meshes' shadow (components/mesh_shadow.h): texels across the light on the grid's longer
+  // side, which is fitted to the meshes that cast (not the ground planes).
+  int mesh_map_size = 1024;
 
   bool operator==(const ShadowSettings&) const = default;
 };

@@ -33,6 +33,7 @@ shot() {
 }
 
 shot fog fog 30 480 360
+shot fog_lit fog 30 480 360 --shadows map
 shot mist mist 30 480 360
 shot clouds clouds 30 480 360
 shot clouds_lit clouds 30 480 360 --shadows map

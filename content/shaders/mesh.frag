@@ -2,7 +2,10 @@
 // Lambertian surface under the scene's lights (lights.glsl): every directional light plus the
 // ambient term, in linear RGB. With u_shadowed, the key light is dimmed by the particle media's
 // transmittance exp(-tau), tau read from the light phase's opacity shadow map (systems/shadowing/
-// opacity_shadow_map.h), trilinearly.
+// opacity_shadow_map.h), trilinearly; with u_mesh_shadowed, also by the meshes' own shadow
+// (systems/shadowing/mesh_shadow_map.h): the depth test z - bias <= the casters' depth, filtered
+// over the four nearest texels by GL, the bias one texel's depth plus its slope (tan theta) across
+// a texel, so that a caster does not shadow its own lit faces.
 // FIRE_LIGHTS n (n > 0): the explosion's n fire lights light it too (components/fire_lights.h):
 // point sources of intensity I, irradiance I cos(theta) / max(D^2, r^2), reflected as albedo / pi
 // (a define, so the loop unrolls with constant indices: on llvmpipe a uniform count costs more).
@@ -25,6 +28,10 @@ uniform vec3 u_albedo;
 uniform int u_shadowed;
 uniform sampler3D u_shadow_map;    // optical depth toward the light
 uniform mat4 u_world_to_shadow;    // world position -> the map's texture coordinates
+uniform int u_mesh_shadowed;
+uniform sampler2DShadow u_mesh_shadow;    // the casters' depth along the light
+uniform mat4 u_mesh_shadow_transform;     // world position -> its texture coordinates and depth
+uniform float u_mesh_shadow_texel_depth;  // a texel's side in its depth units
 
 layout(location = 0) out vec4 o_color;
 
@@ -36,6 +43,12 @@ void main() {
     float lambert = max(dot(n, toward_sun(i)), 0.0);
     if (i == 0 && u_shadowed != 0)
       lambert *= exp(-texture(u_shadow_map, (u_world_to_shadow * vec4(v_world, 1.0)).xyz).r);
+    if (i == 0 && u_mesh_shadowed != 0 && lambert > 0.0) {
+      float cosine = dot(n, toward_sun(i));
+      float slope = min(sqrt(max(1.0 - cosine * cosine, 0.0)) / max(cosine, 1e-3), 8.0);
+      vec3 t = (u_mesh_shadow_transform * vec4(v_world, 1.0)).xyz;
+      lambert *= textureLod(u_mesh_shadow, vec3(t.xy, t.z - (1.0 + slope) * u_mesh_shadow_texel_depth), 0.0);
+    }
     direct += sun_radiance(i) * lambert;
   }
   vec3 c = u_albedo * (ambient_light() + direct);

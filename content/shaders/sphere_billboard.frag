@@ -57,6 +57,11 @@ uniform int u_caster_count;
 // Every fire particle: view-space position and radius, then its intensity.
 layout(std430, binding = 6) readonly buffer FireEmitters { vec4 u_fire_emitters[]; };
 uniform int u_fire_emitter_count;
+// The meshes' shadow (systems/shadowing/mesh_shadow_map.h), sampled per fragment.
+uniform int u_mesh_shadowed;
+uniform sampler2DShadow u_mesh_shadow;
+uniform mat4 u_mesh_shadow_transform;     // view position -> its texture coordinates and depth
+uniform float u_mesh_shadow_texel_depth;  // a texel's side in its depth units
 #endif
 #if LIT == 1
 flat in vec3 v_fire;    // the clustered fire lights' in-scattered radiance at the centre
@@ -120,6 +125,13 @@ float exact_depth_to_light(vec3 x, vec3 toward_light) {
 #endif
 
 #if LIT == 2
+// How much of the key light passes the meshes to view-space point x (one texel's depth of bias).
+float mesh_visibility(vec3 x) {
+  if (u_mesh_shadowed == 0) return 1.0;
+  vec3 t = (u_mesh_shadow_transform * vec4(x, 1.0)).xyz;
+  return textureLod(u_mesh_shadow, vec3(t.xy, t.z - u_mesh_shadow_texel_depth), 0.0);
+}
+
 // The fire's in-scattered radiance at view-space point x (before the albedo), seen along to_eye:
 // every fire particle (fire_light.glsl).
 vec3 fire_inscattered(vec3 x, vec3 to_eye, float g) {
@@ -206,7 +218,7 @@ void main() {
   float own = tau * max(1.0 - light_d / r, 0.0) * chord;
   float light_depth = max(v_light.x + dot(v_light.yzw, m), 0.0) + own;
 #elif LIT == 2
-  float light_depth = exact_depth_to_light(dir * middle, -v_light_view);
+  float light_depth = exact_depth_to_light(dir * middle, -v_light_view) - log(max(mesh_visibility(dir * middle), 1.12535175e-7));
 #else
   float light_depth = tau * chord;
 #endif

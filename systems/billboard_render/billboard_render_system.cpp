@@ -14,6 +14,7 @@
 #include "components/sort_device_choice.h"
 #include "components/view.h"
 #include "components/fire_lights.h"
+#include "components/mesh_shadow.h"
 #include "components/shadow_settings.h"
 #include <glm/geometric.hpp>
 #include <optional>
@@ -105,7 +106,7 @@ void draw_media(ecs::World& world, const EyeDrawLists& lists, const View& view, 
   for (size_t v = 0; v < views; ++v)
     explosion->draw(lists.eyes[v], view.eyes[v], settings, lights, time, *frame.eyes[v].media_atlas,
                     frame.eyes[v].media_combined->width(), *frame.eyes[v].scene, media_lighting,
-                    world.try_resource<const FireLights>());
+                    world.try_resource<const FireLights>(), world.try_resource<const MeshShadow>());
 }
 
 // Lit media (a ShadowSettings resource): the anisotropic clouds' light, their ParticleLights
@@ -266,7 +267,7 @@ ecs::SystemDesc billboard_render_system() {
           .access = ecs::Access::of<
               ecs::Reads<EyeDrawLists, View, RenderSettings, LightBuffer, FrameClock,
                          ExplosionShading, AnisotropicCloud, ParticleSet, ParticleKind, ParticleLight, SortScratch, ShadowSettings,
-                         FireLights>,
+                         FireLights, MeshShadow>,
               ecs::Writes<GpuFrame, SortDeviceChoice>, Renderers>(),
           .run = draw_billboards,
           .setup = make_particle_renderer,

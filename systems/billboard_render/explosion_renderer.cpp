@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
 
 #include "components/particle_medium.h"
 #include "engine/gpu/gpu_pass_timer.h"
@@ -112,7 +113,7 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
                              const RenderSettings& settings, const LightBuffer& lights,
                              double time, const gpu::RenderTarget& atlas, int cell_width,
                              const gpu::RenderTarget& scene, MediaLighting media_lighting,
-                             const FireLights* fire) {
+                             const FireLights* fire, const MeshShadow* mesh_shadow) {
   const int scene_width = scene.width(), scene_height = scene.height();
   const float clear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearNamedFramebufferfv(atlas.framebuffer(), GL_COLOR, 0, clear);
@@ -162,6 +163,7 @@ void ExplosionRenderer::draw(const DrawList& list, const CameraFrame& frame,
     if (!is_fire && media_lighting == MediaLighting::exact) {
       glUniform1i(loc("u_caster_count"), static_cast<GLint>(list.size()));
       glUniform1i(loc("u_fire_emitter_count"), fire ? static_cast<GLint>(fire->emitters.size()) : 0);
+      mesh_shadow_.bind(program, mesh_shadow, glm::inverse(frame.view));
     }
     const GLuint vao = instances_[m].upload(l, true);
     glBindVertexArray(vao);

@@ -11,6 +11,7 @@
 #include "components/fire_lights.h"
 #include "components/render_settings.h"
 #include "systems/lighting/light_buffer.h"
+#include "systems/lighting/mesh_shadow_texture.h"
 #include "engine/gpu/gl_objects.h"
 #include "engine/gpu/render_target.h"
 #include "engine/math/camera_math.h"
@@ -37,11 +38,13 @@ class ExplosionRenderer {
   // full-resolution depth; planar billboards are depth tested against a point-sampled copy).
   // `media_lighting` light_phase needs list.light. Lit, dust and smoke are lit by `lights`' key
   // light and ambient term and scatter the fire's light: the block's clustered lights, or with
-  // exact every emitter of `fire` (may be null: none).
+  // exact every emitter of `fire` (may be null: none), and with exact the meshes' shadow
+  // `mesh_shadow` per fragment (may be null; the light phase puts it in list.light otherwise).
   void draw(const DrawList& list, const CameraFrame& frame, const RenderSettings& settings,
             const LightBuffer& lights, double time, const gpu::RenderTarget& atlas,
             int cell_width, const gpu::RenderTarget& scene,
-            MediaLighting media_lighting = MediaLighting::unlit, const FireLights* fire = nullptr);
+            MediaLighting media_lighting = MediaLighting::unlit, const FireLights* fire = nullptr,
+            const MeshShadow* mesh_shadow = nullptr);
   const ExplosionShading& shading() const { return shading_; }
 
  private:
@@ -57,6 +60,7 @@ class ExplosionRenderer {
   gpu::Buffer casters_, emitters_;
   GLsizeiptr casters_bytes_ = 0, emitters_bytes_ = 0;
   gpu::Texture blackbody_, detail_;
+  MeshShadowTexture mesh_shadow_;
   DetailNoise detail_volume_;
   float detail_time_ = -1.0f;
 };

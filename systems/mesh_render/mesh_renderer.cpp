@@ -83,7 +83,8 @@ float background_alpha(const RenderSettings& settings) { return settings.transpa
 // Everything the opaque image depends on, as numbers.
 std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                                const RenderSettings& settings, const LightBuffer& lights,
-                               const gpu::RenderTarget& target, const ShadowVolume* shadows) {
+                               const gpu::RenderTarget& target, const ShadowVolume* shadows,
+                               const MeshShadow* mesh_shadow) {
   std::vector<float> k;
   auto put = [&](const float* v, size_t n) { k.insert(k.end(), v, v + n); };
   put(glm::value_ptr(frame.view_projection), 16);
@@ -108,6 +109,12 @@ std::vector<float> draw_inputs(const std::vector<MeshInstance>& instances, const
     k.push_back(static_cast<float>(shadows->version & 0xFFFFFFu));
     k.push_back(static_cast<float>((shadows->version >> 24) & 0xFFFFFFu));
   }
+  const bool mesh_shadowed = mesh_shadow && !mesh_shadow->empty();
+  k.push_back(mesh_shadowed ? 1.0f : 0.0f);
+  if (mesh_shadowed) {
+    k.push_back(static_cast<float>(mesh_shadow->version & 0xFFFFFFu));
+    k.push_back(static_cast<float>((mesh_shadow->version >> 24) & 0xFFFFFFu));
+  }
   for (const MeshInstance& m : instances) {
     const uint64_t id = m.geometry ? m.geometry->id : 0;  // exactly, as two halves
     k.push_back(static_cast<float>(id & 0xFFFFFFu));
@@ -127,8 +134,9 @@ void copy_image(GLuint from, GLuint to, const gpu::RenderTarget& target) {
 
 void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                         const RenderSettings& settings, const LightBuffer& lights,
-                        const gpu::RenderTarget& target, const ShadowVolume* shadows) {
-  std::vector<float> inputs = draw_inputs(instances, frame, settings, lights, target, shadows);
+                        const gpu::RenderTarget& target, const ShadowVolume* shadows,
+                        const MeshShadow* mesh_shadow) {
+  std::vector<float> inputs = draw_inputs(instances, frame, settings, lights, target, shadows, mesh_shadow);
   Drawn& last = drawn_[target.serial()];
   if (last.color && last.inputs == inputs) {
     if (target.binds() != last.binds) {
@@ -140,7 +148,7 @@ void MeshRenderer::draw(const std::vector<MeshInstance>& instances, const Camera
     last.binds = target.binds();
     return;
   }
-  draw_meshes(instances, frame, settings, lights, target, shadows);
+  draw_meshes(instances, frame, settings, lights, target, shadows, mesh_shadow);
   ++meshes_drawn_;
   const glm::ivec3 shape(target.width(), target.height(), static_cast<int>(target.format()));
   if (!last.color || last.shape != shape) {
@@ -176,7 +184,7 @@ void MeshRenderer::leave_state(bool meshes, const RenderSettings& settings,
 void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
                                const CameraFrame& frame, const RenderSettings& settings,
                                const LightBuffer& lights, const gpu::RenderTarget& target,
-                               const ShadowVolume* shadows) {
+                               const ShadowVolume* shadows, const MeshShadow* mesh_shadow) {
   target.bind();
   glClearColor(settings.background.x, settings.background.y, settings.background.z,
                background_alpha(settings));
@@ -199,6 +207,7 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
                      glm::value_ptr(frame.view_projection));
   lights.bind();
   bind_shadows(program, shadows);
+  mesh_shadow_.bind(program, mesh_shadow);
   const GLint model = gpu::uniform_location(program, "u_model");
   const GLint rotation = gpu::uniform_location(program, "u_rotation");
   const GLint albedo = gpu::uniform_location(program, "u_albedo");

@@ -15,6 +15,7 @@
 #include "engine/math/camera_math.h"
 #include "engine/mesh/mesh_data.h"
 #include "systems/lighting/light_buffer.h"
+#include "systems/lighting/mesh_shadow_texture.h"
 
 namespace pyro {
 
@@ -27,11 +28,13 @@ class MeshRenderer {
   // drawn into it since (RenderTarget::binds(): particles in layers), else that image's colour
   // and depth are copied back (particles blended into it): the same bytes for a fraction of the
   // cost. The opaque scene of a still camera is drawn once. `shadows` (may be null or empty: no
-  // shadows): the particle media's optical depth toward the key light, which dims its light.
+  // shadows): the particle media's optical depth toward the key light, which dims its light;
+  // `mesh_shadow` (may be null or empty): the meshes' own shadow from the key light.
   // `lights` (bound here): every sun, the ambient term and the explosion's fire lights.
   void draw(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
             const RenderSettings& settings, const LightBuffer& lights,
-            const gpu::RenderTarget& target, const ShadowVolume* shadows = nullptr);
+            const gpu::RenderTarget& target, const ShadowVolume* shadows = nullptr,
+            const MeshShadow* mesh_shadow = nullptr);
   // How many of the draws so far drew the meshes, and how many copied the last image back (the
   // others found it in place).
   int meshes_drawn() const { return meshes_drawn_; }
@@ -50,7 +53,7 @@ class MeshRenderer {
   void release_unused(const std::vector<MeshInstance>& instances);
   void draw_meshes(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                    const RenderSettings& settings, const LightBuffer& lights,
-                   const gpu::RenderTarget& target, const ShadowVolume* shadows);
+                   const gpu::RenderTarget& target, const ShadowVolume* shadows, const MeshShadow* mesh_shadow);
   // Sets the shadow uniforms of `program`, uploading `shadows` when it changed.
   void bind_shadows(const gpu::Program& program, const ShadowVolume* shadows);
   // The GL state a draw leaves, set again after a copy.
@@ -76,6 +79,7 @@ class MeshRenderer {
   gpu::Texture shadow_texture_;
   glm::ivec3 shadow_size_{0};
   uint64_t shadow_version_ = ~uint64_t(0);
+  MeshShadowTexture mesh_shadow_;
 };
 
 }  // namespace pyro

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>
 
+#include "engine/math/light_space_texture.h"
 #include "engine/math/shadow_ray_index.h"
 
 namespace pyro {
@@ -46,15 +47,7 @@ MapFrame fit_frame(const std::vector<ShadowCaster>& gs, const glm::dvec3& light_
 }
 
 glm::mat4 world_to_texture(const MapFrame& f) {
-  const double su = f.nu * f.du, sv = f.nv * f.du, sw = f.nw * f.dw;
-  glm::mat4 m(0.0f);
-  for (int a = 0; a < 3; ++a) {
-    m[a][0] = float(f.u[a] / su);
-    m[a][1] = float(f.v[a] / sv);
-    m[a][2] = float(f.w[a] / sw);
-  }
-  m[3] = glm::vec4(float(-f.u0 / su), float(-f.v0 / sv), float(-f.w0 / sw), 1.0f);
-  return m;
+  return light_space_texture(f.u, f.v, f.w, {f.u0, f.v0, f.w0}, {f.nu * f.du, f.nv * f.du, f.nw * f.dw});
 }
 
 // One particle's optical depth added to the texel columns of rows [j_begin, j_end): where a

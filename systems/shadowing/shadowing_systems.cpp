@@ -12,6 +12,7 @@
 
 #include "components/anisotropic_cloud.h"
 #include "components/mesh_instance.h"
+#include "components/mesh_shadow.h"
 #include "components/particle_light.h"
 #include "components/particle_set.h"
 #include "components/render_settings.h"
@@ -19,6 +20,7 @@
 #include "components/shadow_settings.h"
 #include "components/shadow_volume.h"
 #include "engine/math/shadow_ray_index.h"
+#include "systems/shadowing/mesh_shadow_map.h"
 #include "systems/shadowing/opacity_shadow_map.h"
 
 namespace pyro {
@@ -111,11 +113,25 @@ double mean_scale(const AnisotropicGaussian& g) {
   return std::cbrt(double(g.scale.x) * double(g.scale.y) * double(g.scale.z));
 }
 
-// Lights every particle from `depth` (see particle_light), set by set in entity-index order, then
-// the anisotropic clouds.
+// The meshes' shadow as an optical depth (mesh_shadow_depth); 0 without mesh shadows.
+double mesh_optical_depth(const MeshShadow* meshes, const glm::dvec3& p) {
+  return meshes && !meshes->empty() ? mesh_shadow_depth(*meshes, glm::vec3(p)) : 0.0;
+}
+
+// Lights every particle from the media's optical depth `depth` (see particle_light) and the
+// meshes' shadow at its centre, set by set in entity-index order, then the anisotropic clouds.
+// The meshes' depth is a step at a shadow's edge: it joins the particle's depth, not its
+// gradient, so a particle is in the shadow by how much of the light its centre loses (a
+// gradient across the step would cut the splat with a hard line).
 template <class Depth>
 void write_particle_light(ecs::World& world, const glm::vec3& key_travel, Depth&& depth) {
   const glm::dvec3 toward_sun = -glm::normalize(glm::dvec3(key_travel));
+  const MeshShadow* meshes = world.try_resource<const MeshShadow>();
+  const auto lit = [&](const ShadowCaster& c, double h) {
+    glm::vec4 light = particle_light(c, h, toward_sun, depth);
+    light.x += float(mesh_optical_depth(meshes, c.c));
+    return light;
+  };
   const bool spheres = sphere_casters(world);
   const auto each_particle = [](std::size_t n, auto&& light) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kParticlesPerTask),
@@ -128,7 +144,7 @@ void write_particle_light(ecs::World& world, const glm::vec3& key_travel, Depth&
     ParticleLight& light = *set.second;
     light.others_depth.resize(p.size());
     each_particle(p.size(), [&](std::size_t i) {
-      light.others_depth[i] = particle_light(caster_of(p, i, spheres), double(p.radius[i]) / 3.0, toward_sun, depth);
+      light.others_depth[i] = lit(caster_of(p, i, spheres), double(p.radius[i]) / 3.0);
     });
   }
   for (const auto& [index, cloud] : lit_clouds(world)) {
@@ -136,7 +152,7 @@ void write_particle_light(ecs::World& world, const glm::vec3& key_travel, Depth&
     ParticleLight& light = *cloud.second;
     light.others_depth.resize(gs.size());
     each_particle(gs.size(), [&](std::size_t i) {
-      light.others_depth[i] = particle_light(ShadowCaster(gs[i]), mean_scale(gs[i]), toward_sun, depth);
+      light.others_depth[i] = lit(ShadowCaster(gs[i]), mean_scale(gs[i]));
     });
   }
 }
@@ -198,20 +214,21 @@ ecs::SystemDesc shadow_map_system() {
   return {.name = "shadow_map",
           .phase = ecs::Phase::light,
           .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, RenderSettings, ParticleSet, AnisotropicCloud,
-                                               MeshInstance>,
+                                               MeshInstance, MeshShadow>,
                                     ecs::Writes<ShadowVolume, ParticleLight>>(),
           .run = run_shadow_map,
           .setup =
               [](ecs::World& world) {
                 if (!world.has_resource<ShadowVolume>()) world.set_resource<ShadowVolume>();
               },
-          .after = {"lighting"}};
+          .after = {"lighting", "mesh_shadow"}};
 }
 
 ecs::SystemDesc shadow_ray_system() {
   return {.name = "shadow_rays",
           .phase = ecs::Phase::light,
-          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, RenderSettings, ParticleSet, AnisotropicCloud>,
+          .access = ecs::Access::of<ecs::Reads<ShadowSettings, SceneLighting, RenderSettings, ParticleSet, AnisotropicCloud,
+                                               MeshShadow>,
                                     ecs::Writes<ParticleLight>>(),
           .run = run_shadow_rays,
           .after = {"shadow_map"}};

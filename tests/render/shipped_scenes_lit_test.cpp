@@ -1,8 +1,9 @@
 // Every shipped scene renders, with its own lighting and shadows, the frame of its reference:
 // frame 12 at 96x72 (`pyro render content/scenes/NAME.json --frames 12:12 --width 96 --height
 // 72`), against tests/render/shipped_scenes_lit/NAME.png, which the same command rendered with the
-// engine of commit f0a0a4c. A change that should not change the pixels (moving code between
-// folders, splitting a function) keeps these bytes. On the machine that rendered them the frames are byte-identical
+// engine of the commit that last changed that scene's look (`git log` on the file names it). A
+// change that should not change the pixels (moving code between folders, splitting a function)
+// keeps these bytes. On the machine that rendered them the frames are byte-identical
 // (the test prints whether they are; tools/compare_renders.sh checks every frame against any other
 // checkout); llvmpipe's code follows the CPU it runs on, so elsewhere the values are held to
 // within two levels of 255 with at most 0.5% of them differing at all, as for the frames of

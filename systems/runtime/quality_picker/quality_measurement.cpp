@@ -11,6 +11,7 @@
 #include "components/fire_lights.h"
 #include "components/frame_image.h"
 #include "components/gpu_frame.h"
+#include "components/mesh_shadow.h"
 #include "components/particle_set.h"
 #include "components/scene_lighting.h"
 #include "components/shadow_settings.h"
@@ -21,6 +22,7 @@
 #include "systems/runtime/reference/anisotropic_reference.h"
 #include "systems/runtime/reference/lit_particle_reference.h"
 #include "systems/runtime/reference/particle_reference.h"
+#include "systems/shadowing/mesh_shadow_map.h"
 #include "systems/runtime/reference/world_snapshot.h"
 #include "systems/runtime/scene_runtime/scene_runtime.h"
 
@@ -107,6 +109,11 @@ std::vector<RgbImage> particle_scene_references(const SceneDescription& scene, i
     if (const auto* shadows = particles.world().try_resource<const ShadowSettings>())
       sun.scattering = shadows->scattering;
     if (const auto* fire = particles.world().try_resource<const FireLights>()) sun.point_lights = fire->lights;
+    if (const auto* meshes = particles.world().try_resource<const MeshShadow>(); meshes && !meshes->empty()) {
+      sun.mesh_depth = [meshes](const glm::dvec3& p) { return mesh_shadow_depth(*meshes, glm::vec3(p)); };
+      // A surface point read back from the depth buffer, on a face at any slant: 4 texels of bias.
+      sun.mesh_surface_depth = [meshes](const glm::dvec3& p) { return mesh_shadow_depth(*meshes, glm::vec3(p), 4.0); };
+    }
     if (!fitted.empty()) {
       const RgbImage shadowed =
           shadowed_opaque_reference(anisotropic_casters(fitted), camera, sun, behind, rgb_of(sunless->image()), stop);

@@ -149,8 +149,8 @@ RgbImage render_lit_anisotropic_reference_over(const std::vector<AnisotropicGaus
   return render_particles(particles, camera, behind, stop, threads, max_piece_depth,
                           [&](double a, double b, const glm::dvec3& w) {
                             const glm::dvec3 mid = eye + 0.5 * (a + b) * w;
-                            return sun.color * sun_scattering(sun.scattering, -glm::dot(travel, w),
-                                                              index.optical_depth_to_light(mid)) +
+                            const double tau = index.optical_depth_to_light(mid) + sun.mesh_depth_at(mid);
+                            return sun.color * sun_scattering(sun.scattering, -glm::dot(travel, w), tau) +
                                    sun.ambient;
                           });
 }

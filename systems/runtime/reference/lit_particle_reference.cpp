@@ -64,7 +64,7 @@ RgbImage shadowed_opaque_reference(std::vector<ShadowCaster> casters, const Came
       const double t = stop[static_cast<size_t>(y) * camera.width + x];
       if (!std::isfinite(t)) continue;
       const glm::dvec3 p = eye + t * pixel_ray_direction(camera, x + 0.5, y + 0.5);
-      const double transmittance = std::exp(-index.optical_depth_to_light(p));
+      const double transmittance = std::exp(-index.optical_depth_to_light(p) - sun.mesh_surface_depth_at(p));
       for (int c = 0; c < 3; ++c)
         out.at(x, y)[c] = float(sunless.at(x, y)[c] + transmittance * (sunlit.at(x, y)[c] - sunless.at(x, y)[c]));
     }
@@ -100,7 +100,8 @@ RgbImage render_lit_particles_reference_over(const ParticlePool& p, const Camera
           [&](size_t i) { return albedo[i]; }, glm::dvec3(back[0], back[1], back[2]), max_piece_depth,
           [&](double a, double b) {
             const glm::dvec3 mid = eye + 0.5 * (a + b) * w;
-            return sun.color * sun_scattering(sun.scattering, mu, index.optical_depth_to_light(mid)) + sun.ambient +
+            const double tau = index.optical_depth_to_light(mid) + sun.mesh_depth_at(mid);
+            return sun.color * sun_scattering(sun.scattering, mu, tau) + sun.ambient +
                    point_light_scattering(sun, mid, -w);
           });
       float* px = img.at(x, y);

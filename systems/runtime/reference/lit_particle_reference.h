@@ -14,6 +14,7 @@
 // Opaque surfaces: the GL render of the opaque scene with the sun (`sunlit`) and without it
 // (`sunless`) give each pixel's sun term, sunlit - sunless; the surface point the pixel's ray
 // meets (at `stop`) keeps exp(-tau_sun) of it.
+#include <functional>
 #include <vector>
 
 #include "engine/math/camera_math.h"
@@ -33,6 +34,14 @@ struct ReferenceSun {
   // Point lights (the fire's, components/fire_lights.h): each adds I p_HG(mu, g) / max(d^2, r^2)
   // to L(x), mu between its light's way at x and the way to the eye. Unshadowed, as the splats'.
   std::vector<PointEmitter> point_lights;
+  // The meshes' shadow as an optical depth toward the sun at a point in a medium, and at a point
+  // on a surface (a larger bias: the surface may be a caster's own face), added to the
+  // particles' (the light phase's mesh shadow grid, systems/shadowing/mesh_shadow_map.h); none:
+  // no meshes cast.
+  std::function<double(const glm::dvec3&)> mesh_depth, mesh_surface_depth;
+
+  double mesh_depth_at(const glm::dvec3& p) const { return mesh_depth ? mesh_depth(p) : 0.0; }
+  double mesh_surface_depth_at(const glm::dvec3& p) const { return mesh_surface_depth ? mesh_surface_depth(p) : 0.0; }
 };
 
 // The opaque scene with the media's shadows: sunless + exp(-tau_sun(p)) (sunlit - sunless), p the

@@ -166,6 +166,7 @@ void read_shadows(ObjectReader& r, ShadowSettings& s) {
   r.choice("method", s.method);
   r.integer("map_size", s.map_size);
   r.integer("map_slices", s.map_slices);
+  r.integer("mesh_map_size", s.mesh_map_size);
   r.integer("fire_lights", s.fire_lights);
   r.object("scattering", [&](ObjectReader& sc) { read_scattering(sc, s.scattering); });
 }

@@ -20,6 +20,7 @@
 #include "systems/lighting/lighting_system.h"
 #include "systems/mesh_render/mesh_render_system.h"
 #include "systems/output/frame_readback_system.h"
+#include "systems/shadowing/mesh_shadow_map.h"
 #include "systems/shadowing/shadowing_systems.h"
 #include "systems/sorting/depth_sort.h"
 #include "systems/volume_sequence/volume_sequence_system.h"
@@ -30,7 +31,7 @@ std::vector<ecs::SystemDesc> standard_systems(bool readback) {
   std::vector<ecs::SystemDesc> systems = {
       cloud_emitter_system(),   emitter_system(),          cloud_drift_system(),
       light_animation_system(), volume_sequence_system(),
-      animation_system(),       lighting_system(),         shadow_map_system(),
+      animation_system(),       lighting_system(),         mesh_shadow_system(),      shadow_map_system(),
       shadow_ray_system(),      fire_light_system(),       light_block_system(),
       camera_orbit_system(),    stereo_camera_system(),    sorting_system(),
       flipbook_orient_system(), light_upload_system(),     mesh_render_system(),     flipbook_render_system(),  billboard_render_system(),

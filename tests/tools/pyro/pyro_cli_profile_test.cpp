@@ -110,7 +110,7 @@ TEST(PyroCliProfile, ProfileJsonHasEverySystemAndTheExplosionsParticles) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = test::last_json_line(r.out);
   const std::set<std::string> expected = {"cloud_emitter", "emitter", "cloud_drift", "animation",
-                                          "light_animation", "lighting", "light_block", "light_upload",
+                                          "light_animation", "lighting", "mesh_shadow", "light_block", "light_upload",
                                           "camera_orbit", "stereo_camera", "sorting", "mesh_render",
                                           "billboard_render", "composite",
                                           // scheduled in every scene, idle without fires
