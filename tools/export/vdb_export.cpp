@@ -78,11 +78,11 @@ void fix_voxel_size(ExportRun& run, const std::vector<MediaSample>& samples, int
   const VoxelSizeChoice choice = choose_voxel_size(samples, kChoiceHeadroom * run.o.error, run.o.max_voxels);
   if (!choice.fits)
     throw UserError(run.o.scene, "--error",
-                    format_text("an error target the grid can meet within %llu voxels: frame %d's media need voxels "
-                                "finer than %g for a column opacity error of %g (measured %.4g at %g); raise --error "
-                                "or give --voxel-size",
-                                (unsigned long long)run.o.max_voxels, frame, choice.voxel, run.o.error,
-                                choice.error.opacity_max, choice.voxel));
+                    format_text("an error target a grid of at most %llu voxels can meet: at the finest voxel size "
+                                "that fits frame %d's media, %g, the column opacity error is %.4g, over the target %g; raise "
+                                "--error or give --voxel-size",
+                                (unsigned long long)run.o.max_voxels, frame, choice.voxel, choice.error.opacity_max,
+                                run.o.error));
   run.tries += choice.tries;
   if (again) run.sizes.push_back({{"from_frame", frame}, {"voxel_size", choice.voxel}});
   run.voxel = choice.voxel;
