@@ -27,6 +27,7 @@ void add_pyro_commands(CLI::App& app) {
   add_analyze_commands(app);
   add_bench_commands(app);
   add_import_command(app);
+  add_export_vdb_command(app);
   add_profile_command(app);
   add_quality_command(app);
   add_view_command(app);

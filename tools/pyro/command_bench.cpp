@@ -231,6 +231,7 @@ void add_bench_commands(CLI::App& app) {
   add_bench_multiple_scattering_command(*bench);
   add_bench_cycles_command(*bench);
   add_bench_explosion_shadows_command(*bench);
+  add_bench_export_vdb_command(*bench);
 
   for (const auto add : {add_bench_ecs, add_bench_sort, add_bench_scale, add_bench_import_cases, add_bench_render, add_bench_johnson, add_bench_layers,
                          add_bench_table1, add_bench_soak})

@@ -8,6 +8,7 @@ void add_render_command(CLI::App& app);
 void add_analyze_commands(CLI::App& app);
 void add_bench_commands(CLI::App& app);
 void add_import_command(CLI::App& app);
+void add_export_vdb_command(CLI::App& app);  // command_export_vdb.cpp
 // `pyro bake-flipbook` and `pyro analyze flipbook-pattern` (command_flipbook.cpp).
 void add_flipbook_commands(CLI::App& app, CLI::App& analyze);
 // `pyro analyze six-way`, registered by add_flipbook_commands (command_six_way.cpp).
@@ -32,6 +33,7 @@ void add_bench_relight_command(CLI::App& bench);       // command_bench_relight.
 void add_bench_multiple_scattering_command(CLI::App& bench);  // command_bench_multiple_scattering.cpp
 void add_bench_cycles_command(CLI::App& bench);       // command_bench_cycles.cpp
 void add_bench_explosion_shadows_command(CLI::App& bench);  // command_bench_explosion_shadows.cpp
+void add_bench_export_vdb_command(CLI::App& bench);  // command_bench_export_vdb.cpp
 
 // Subcommands of `pyro analyze`, registered by add_analyze_commands.
 void add_analyze_projection_error_command(CLI::App& analyze);  // command_analyze_alignment.cpp

@@ -115,6 +115,7 @@ const std::map<std::string, std::vector<std::string>>& cheap_json_runs() {
       {"quality", {"quality", test::scene_path("fog.json"), "--max-rmse", "0.5", "--width", "16", "--height", "16",
                    "--no-verify", "--no-cache"}},
       {"import-vdb", {"import-vdb", content_path("volumes/sample_cloud.vdb"), "--list"}},
+      {"export-vdb", {"export-vdb", test::scene_path("fog.json"), "--out", "{dir}/vdb", "--voxel-size", "0.3"}},
       {"chart", {"chart", "footprint", "--out", "{dir}/chart", "--csv-only"}},
       {"analyze footprint", {"analyze", "footprint", "--size", "8"}},
       {"analyze projection-error", {"analyze", "projection-error", "--cx", "0", "--cy", "0", "--cz", "-5",
@@ -152,6 +153,8 @@ const std::map<std::string, std::vector<std::string>>& cheap_json_runs() {
                                      "--directions", "1", "--samples", "2", "--width", "8", "--height", "8"}},
       {"bench cycles", {"bench", "cycles", content_path("volumes/sample_cloud.vdb"), "--directions", "1",
                         "--samples", "2", "--width", "8", "--height", "8", "--blender", "/bin/false"}},
+      {"bench export-vdb", {"bench", "export-vdb", test::scene_path("fog.json"), "--voxel-size", "0.3",
+                            "--import-error", "0.5", "--width", "8", "--height", "8"}},
       {"bench explosion-shadows", {"bench", "explosion-shadows", content_path("scenes/explosion.json"), "--width", "16",
                                    "--height", "16", "--frames", "1", "--error-frames", "1"}},
   };

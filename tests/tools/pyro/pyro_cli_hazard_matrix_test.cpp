@@ -79,6 +79,8 @@ std::vector<Command> commands() {
          return Args{"import-vdb", in_fixture(f, "cloud.vdb"), "--out", o, "--width", "16", "--height", "16"}; }, "cloud.vdb", ""},
       {"import-vdb SEQUENCE", Shape::folder, [](const fs::path& f, const std::string& o) {
          return Args{"import-vdb", in_fixture(f, "in.pyroseq"), "--out", o + ".pyroseq"}; }, "", "in.pyroseq"},
+      {"export-vdb", Shape::folder, [](const fs::path& f, const std::string& o) {
+         return Args{"export-vdb", in_fixture(f, "scene.json"), "--out", o}; }, "scene.json", "flame"},
       {"farm submit", Shape::folder, [](const fs::path& f, const std::string& o) {
          return Args{"farm", "submit", in_fixture(f, "scene.json"), "--out", o, "--frames", "2", "--chunk", "1", "--dry-run"}; }, "scene.json", "flame"},
       {"new", Shape::file, [](const fs::path&, const std::string& o) {

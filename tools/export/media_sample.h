@@ -1,0 +1,27 @@
+#pragma once
+// One particle of a frame's media as the VDB export sees it: its extinction field (a clamped
+// Gaussian, a sphere of the explosion's model or an anisotropic Gaussian: engine/math/shadow_caster.h,
+// the same three shapes the light phase integrates), with the colour and temperature it carries.
+#include <glm/vec3.hpp>
+
+#include "engine/math/shadow_caster.h"
+
+namespace pyro {
+
+struct MediaSample {
+  ShadowCaster field;
+  glm::vec3 color{1.0f};     // linear RGB, the particle's own (ParticlePool r, g, b)
+  float temperature = 0.0f;  // kelvin (ParticlePool::temperature; 0 when it has none)
+  bool fire = false;         // a fire particle (ParticleMedium::fire)
+  double detail = 1.0;       // its finest length: a Gaussian's smallest standard deviation, r / 3
+};
+
+// The extinction (per world unit) of `s` at world point `p`: the clamped Gaussian's
+// k exp(-|p - c|^2 / (2 s^2)) inside its cube, the ellipsoid's k exp(-m^2 / 2) for m <= 3, or the
+// sphere's k g(|p - c| / r) (engine/math/sphere_field.h), whose projection is the billboards'.
+double extinction_at(const MediaSample& s, const glm::dvec3& p);
+
+// The half side of the axis-aligned box outside which `s` holds nothing.
+double sample_reach(const MediaSample& s);
+
+}  // namespace pyro
