@@ -16,9 +16,11 @@
 
 namespace pyro {
 
-// How far a particle's cube reaches from its centre in any direction, in standard deviations:
-// its half-diagonal, 3 sqrt 3 (what a projection of it across a light can cover).
-inline constexpr double kGaussianCubeReach = 3.0 * 1.7320508075688772;
+// The particle's cube, the support of the clamped Gaussian: its half-width in standard
+// deviations, and how far it reaches from its centre in any direction, its half-diagonal
+// 3 sqrt 3 (what a projection of it across a light can cover).
+inline constexpr double kGaussianCubeHalfWidth = 3.0;
+inline constexpr double kGaussianCubeReach = kGaussianCubeHalfWidth * 1.7320508075688772;
 
 struct ClampedGaussian {
   glm::dvec3 c{0.0};

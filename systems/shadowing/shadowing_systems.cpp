@@ -27,7 +27,7 @@ namespace pyro {
 
 namespace {
 
-constexpr std::size_t kParticlesPerTask = 4096;
+constexpr std::size_t kParticlesPerTask = 1024;
 
 // The world's lit particle sets in entity-index order.
 std::vector<std::pair<uint32_t, std::pair<const ParticlePool*, ParticleLight*>>> lit_sets(ecs::World& world) {
