@@ -21,6 +21,16 @@ inline constexpr EnumName<ShadowMethod> shadow_method_names[] = {
     {ShadowMethod::none, "none"}, {ShadowMethod::shadow_map, "map"}, {ShadowMethod::rays, "rays"}};
 constexpr const auto& enum_names(ShadowMethod) { return shadow_method_names; }
 
+// Where a Gaussian splat's sunlight (its own shadow across it, the others' depth and its slope)
+// is evaluated (content/shaders/splat_sunlight.glsl): at each fragment, or at the centre and one
+// standard deviation either side along the billboard's axes, as a plane the fragments interpolate
+// (a fragment's cost then the unlit one's and an exponential; `pyro chart shadows`,
+// docs/lighting.md).
+enum class SplatSunlight : uint8_t { fragments, vertices };
+inline constexpr EnumName<SplatSunlight> splat_sunlight_names[] = {{SplatSunlight::fragments, "fragments"},
+                                                                   {SplatSunlight::vertices, "vertices"}};
+constexpr const auto& enum_names(SplatSunlight) { return splat_sunlight_names; }
+
 struct ShadowSettings {
   // The defaults: the cheapest setting within 0.015 of the exact-shadow reference on the shipped
   // clouds and fog (`pyro chart shadows`, docs/lighting.md).
@@ -44,6 +54,8 @@ struct ShadowSettings {
   // The meshes' shadow (components/mesh_shadow.h): texels across the light on the grid's longer
   // side, which is fitted to the meshes that cast (not the ground planes).
   int mesh_map_size = 1024;
+  // Gaussian splats' sunlight: per fragment, or a plane across each billboard from its corners.
+  SplatSunlight splat_sunlight = SplatSunlight::fragments;
 
   bool operator==(const ShadowSettings&) const = default;
 };

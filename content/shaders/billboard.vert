@@ -28,15 +28,29 @@ flat out vec4 v_others_depth;
 flat out vec3 v_self;     // tau0 = -ln(1 - rho), 1 / s (s = radius / 3), 1 / (2 s^2)
 out vec3 v_offset;        // the fragment's place on the billboard, from the centre (world units)
 #endif
+#ifndef SUNLIGHT_AT_VERTICES
+#define SUNLIGHT_AT_VERTICES 0
+#endif
+#if LIT
+// The key light, and (LIT 2) the fire's clustered point lights (lights.glsl), each of which
+// scatters I p_HG(mu, g) / max(d^2, r^2) toward the eye (the sun's convention, whose light colour
+// is its irradiance over 4 pi: systems/runtime/reference/lit_particle_reference.h).
+#include "lights.glsl"
+#endif
 #if LIT == 2
 flat out float v_view_cosine;  // mu: the sunlight's direction of travel . the way to the eye
 flat out vec3 v_fire;          // the fire lights' light scattered at the centre toward the eye
-uniform vec4 u_scattering;     // Henyey-Greenstein g first (billboard.frag)
-// The key light, and the fire's clustered point lights (lights.glsl), each of which scatters
-// I p_HG(mu, g) / max(d^2, r^2) toward the eye (the sun's convention, whose light colour is its
-// irradiance over 4 pi: systems/runtime/reference/lit_particle_reference.h).
-#include "lights.glsl"
-#include "henyey_greenstein.glsl"
+uniform vec4 u_scattering;     // Henyey-Greenstein g; the octaves' a, b, c (billboard.frag)
+uniform int u_octaves;         // 1: single scattering
+#include "sun_scattering.glsl"
+#endif
+#if SUNLIGHT_AT_VERTICES
+// The sun's light at the corner (splat_sunlight.glsl) as the plane through its value at the
+// centre whose slopes along the billboard's axes are the secants over one standard deviation
+// either side: the fragments between get it interpolated, and the fragment shader's cost is the
+// unlit one's and one exponential.
+out float v_sunlight;
+#include "splat_sunlight.glsl"
 #endif
 layout(std430, binding = 1) readonly buffer DrawOrder { uint draw_order[]; };
 uniform uvec2 u_order_stride_offset;
@@ -88,6 +102,20 @@ void main() {
   vec3 to_eye = u_eye - center;
   vec3 eye_way = length(to_eye) > 0.0 ? normalize(to_eye) : vec3(0.0);
   v_view_cosine = length(to_eye) > 0.0 ? -dot(key_toward(), eye_way) : 1.0;
+#else
+  float v_view_cosine = 1.0;
+#endif
+#if SUNLIGHT_AT_VERTICES
+  vec3 along_right = right * s, along_up = up * s;
+  float at_centre = splat_sunlight(vec3(0.0), v_others_depth, v_self, v_view_cosine);
+  float across_right = splat_sunlight(along_right, v_others_depth, v_self, v_view_cosine) -
+                       splat_sunlight(-along_right, v_others_depth, v_self, v_view_cosine);
+  float across_up = splat_sunlight(along_up, v_others_depth, v_self, v_view_cosine) -
+                    splat_sunlight(-along_up, v_others_depth, v_self, v_view_cosine);
+  // corner * radius is 3 s along each axis: the secant over 2 s, times 3 s.
+  v_sunlight = at_centre + 1.5 * (across_right * corner.x + across_up * corner.y);
+#endif
+#if LIT == 2
   v_fire = vec3(0.0);
   float g = u_scattering.x;
   for (int j = 0; j < fire_light_count(); ++j) {

@@ -178,6 +178,7 @@ std::optional<SplatLighting> splat_lighting(ecs::World& world, const EyeDrawList
   s.lights = lists.lights;
   s.scene = &world.resource<const LightBuffer>();
   s.self_shadow = shadows->method != ShadowMethod::none;
+  s.sunlight = shadows->splat_sunlight;
   s.scattering = shadows->scattering;
   return s;
 }

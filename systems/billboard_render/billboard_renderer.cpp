@@ -155,7 +155,13 @@ void BillboardRenderer::upload(const DrawList& list, const std::vector<const Par
 
 const gpu::Program& BillboardRenderer::lit_program(const SplatLighting& lighting) const {
   const bool fire = lighting.scene->block().counts.y > 0;
-  return fire || !(lighting.scattering == SunScattering{}) ? scattering_program_ : lit_program_;
+  const bool scattering = fire || !(lighting.scattering == SunScattering{});
+  if (lighting.sunlight == SplatSunlight::fragments) return scattering ? scattering_program_ : lit_program_;
+  std::optional<gpu::Program>& program = scattering ? scattering_vertex_program_ : lit_vertex_program_;
+  if (!program)
+    program.emplace(gpu::load_program("billboard.vert", "billboard.frag",
+                                      {scattering ? "LIT 2" : "LIT 1", "SUNLIGHT_AT_VERTICES 1"}));
+  return *program;
 }
 
 void BillboardRenderer::set_lighting_uniforms(const SplatLighting& lighting) const {

@@ -3,10 +3,12 @@
 // mapped buffer the particles are read from, and the programs (the real one and a trivial one used as a fill-rate
 // baseline by `pyro bench render`).
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "components/draw_list.h"
 #include "components/particle_light.h"
+#include "components/shadow_settings.h"
 #include "systems/runtime/scene/scene_description.h"
 #include "engine/gpu/buffer_range.h"
 #include "engine/gpu/gl_objects.h"
@@ -31,6 +33,7 @@ struct SplatLighting {
   std::vector<const ParticleLight*> lights;
   const LightBuffer* scene = nullptr;  // required
   bool self_shadow = true;  // false: lit without shadows
+  SplatSunlight sunlight = SplatSunlight::fragments;  // where the sunlight is evaluated
   SunScattering scattering;  // the phase lobe and octaves (engine/math/scattering_octaves.h)
 };
 
@@ -77,8 +80,10 @@ class BillboardRenderer {
  private:
   FootprintTable table_;
   // lit_program_: single isotropic scattering of the sun (LIT 1); scattering_program_: the
-  // scattering lobe and octaves, and the fire lights (LIT 2).
+  // scattering lobe and octaves, and the fire lights (LIT 2). Their sunlight at the vertices
+  // (SplatSunlight::vertices) is compiled on first use.
   gpu::Program kernel_program_, trivial_program_, lit_program_, scattering_program_;
+  mutable std::optional<gpu::Program> lit_vertex_program_, scattering_vertex_program_;
   gpu::Texture kernel_texture_;
   // The lit program's self-shadow: gaussian_tail_polynomial's coefficients.
   std::array<double, kTailPolynomialTerms> tail_polynomial_ = gaussian_tail_polynomial();

@@ -20,7 +20,8 @@ namespace pyro {
 namespace {
 
 // The settings charted: lit without shadows, the exact rays, and the map at each size (slices
-// half its texels across).
+// half its texels across); the shadowed ones with the splats' sunlight per fragment and at the
+// vertices (without shadows the two are the same light).
 std::vector<ShadowSettings> shadow_candidates(const std::vector<int>& map_sizes) {
   std::vector<ShadowSettings> out;
   ShadowSettings s;
@@ -34,12 +35,18 @@ std::vector<ShadowSettings> shadow_candidates(const std::vector<int>& map_sizes)
     s.map_slices = std::max(4, size / 2);
     out.push_back(s);
   }
+  for (size_t k = 1, shadowed = out.size(); k < shadowed; ++k) {
+    s = out[k];
+    s.splat_sunlight = SplatSunlight::vertices;
+    out.push_back(s);
+  }
   return out;
 }
 
 std::string setting_name(const ShadowSettings& s) {
-  if (s.method != ShadowMethod::shadow_map) return std::string(name_of(s.method));
-  return "map " + std::to_string(s.map_size) + "x" + std::to_string(s.map_slices);
+  const std::string sunlight = s.splat_sunlight == SplatSunlight::vertices ? " sunlight at vertices" : "";
+  if (s.method != ShadowMethod::shadow_map) return std::string(name_of(s.method)) + sunlight;
+  return "map " + std::to_string(s.map_size) + "x" + std::to_string(s.map_slices) + sunlight;
 }
 
 // Milliseconds a frame of the light phase's shadow systems, the mean over `frames` frames.
@@ -79,7 +86,9 @@ ChartTable chart_shadows(const ShadowsChartOptions& o) {
       "exp(-tau) of the exact optical depth";
   t.notes = {"none: lit by the sun without shadows; rays: exact transmittance at each particle "
              "(engine/math/shadow_ray_index.h); map SxK: opacity shadow map of S texels across and K "
-             "slices (Kim & Neumann 2001), which the ground reads under every method",
+             "slices (Kim & Neumann 2001), which the ground reads under every method; sunlight at "
+             "vertices: the splats' sunlight a plane across each billboard (content/shaders/"
+             "splat_sunlight.glsl), otherwise each fragment's own",
              "shadow_ms: the light phase's shadow systems alone, per frame"};
   t.extra_columns = {"shadow_ms", "particles"};
   for (const std::string& file : scenes) {
@@ -92,6 +101,7 @@ ChartTable chart_shadows(const ShadowsChartOptions& o) {
     const RgbImage reference = particle_scene_references(scene, o.width, o.height, {0}).at(0);
     for (ShadowSettings s : shadow_candidates(o.map_sizes)) {
       s.scattering = shipped.scattering;
+      s.mesh_map_size = shipped.mesh_map_size;
       scene.shadows = s;
       RuntimeOptions ro;
       ro.width_override = o.width;
@@ -99,7 +109,8 @@ ChartTable chart_shadows(const ShadowsChartOptions& o) {
       ChartTable::Row row;
       row.label = stem + " " + setting_name(s);
       row.front = stem;
-      row.group = std::string(name_of(s.method));
+      row.group = std::string(name_of(s.method)) +
+                  (s.splat_sunlight == SplatSunlight::vertices ? " (sunlight at vertices)" : "");
       row.time = median_ms_per_frame(scene, ro, o.frames);
       ro.readback = true;
       // as written (no quality pick): images the shadow setting the chart sets

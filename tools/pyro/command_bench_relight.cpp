@@ -1,5 +1,6 @@
 // pyro bench relight FILE [--fitted] [--directions N] [--error E] [--grid NAME] [--width W] [--height H]
-//                         [--frames N] [--shadows map|rays|none] [--json]
+//                         [--frames N] [--shadows map|rays|none] [--splat-sunlight fragments|vertices]
+//                         [--json]
 // An OpenVDB grid imported once and relit from N sun directions by the light phase
 // (tools/bench/bench_relight.h).
 #include <cstdio>
@@ -55,6 +56,9 @@ void add_bench_relight_command(CLI::App& bench) {
   cmd->add_option("--frames", o.frames, "Timed frames, relit and unlit (default 16)")->check(CLI::Range(1, 100000));
   add_enum_option<ShadowMethod>(
       cmd, "--shadows", [&o](ShadowMethod m) { o.shadows.method = m; }, "Shadow method (default: map)");
+  add_enum_option<SplatSunlight>(
+      cmd, "--splat-sunlight", [&o](SplatSunlight s) { o.shadows.splat_sunlight = s; },
+      "Where the splats' sunlight is evaluated (default: the scene format's default)");
   cmd->add_flag("--fitted", o.fitted,
                 "Relight the anisotropic Gaussians import-vdb fits, instead of the octree's isotropic particles");
   cmd->add_flag("--json", args->json, "Print a JSON summary");

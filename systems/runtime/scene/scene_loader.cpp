@@ -161,12 +161,13 @@ void read_scattering(ObjectReader& r, SunScattering& s) {
 }
 
 // "shadows": lit media, {"method": "rays" | "map" | "none", "map_size", "map_slices",
-// "fire_lights", "scattering"}.
+// "mesh_map_size", "splat_sunlight": "fragments" | "vertices", "fire_lights", "scattering"}.
 void read_shadows(ObjectReader& r, ShadowSettings& s) {
   r.choice("method", s.method);
   r.integer("map_size", s.map_size);
   r.integer("map_slices", s.map_slices);
   r.integer("mesh_map_size", s.mesh_map_size);
+  r.choice("splat_sunlight", s.splat_sunlight);
   r.integer("fire_lights", s.fire_lights);
   r.object("scattering", [&](ObjectReader& sc) { read_scattering(sc, s.scattering); });
 }

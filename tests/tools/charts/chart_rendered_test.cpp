@@ -64,10 +64,12 @@ TEST(ChartShadows, EverySettingAgainstTheReferenceWithShadowsHelp) {
   o.height = 48;
   o.frames = 1;
   const ChartTable t = chart_shadows(o);
-  ASSERT_EQ(t.rows.size(), 4u);  // none, rays, two maps
+  ASSERT_EQ(t.rows.size(), 7u);  // none, rays, two maps; rays and the maps with sunlight at vertices
   EXPECT_EQ(t.rows[0].group, "none");
   EXPECT_EQ(t.rows[1].group, "rays");
   EXPECT_EQ(t.rows[3].label, "clouds map 64x32");
+  EXPECT_EQ(t.rows[6].label, "clouds map 64x32 sunlight at vertices");
+  EXPECT_EQ(t.rows[6].group, "map (sunlight at vertices)");
   for (const auto& r : t.rows) {
     EXPECT_EQ(r.extra[1], 1500.0) << r.label;  // the clouds' particles
     EXPECT_GT(r.time, 0.0) << r.label;
@@ -76,6 +78,7 @@ TEST(ChartShadows, EverySettingAgainstTheReferenceWithShadowsHelp) {
   EXPECT_LT(t.rows[1].error, t.rows[0].error);
   EXPECT_LT(t.rows[3].error, t.rows[2].error);
   EXPECT_LT(t.rows[3].error, 0.03);  // the project's image accuracy bar
+  EXPECT_LT(t.rows[6].error, 0.03);
   EXPECT_GT(t.rows[1].extra[0], t.rows[0].extra[0]);  // rays cost the light phase more than none
 }
 

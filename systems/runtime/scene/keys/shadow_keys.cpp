@@ -33,6 +33,10 @@ const ParameterTable& shadow_keys() {
        integer_key("map_slices", 4, 1024, "The map's slices along the light.").with_default(d.map_slices),
        integer_key("mesh_map_size", 16, 8192, "Texels across the light of the meshes' shadow map.")
            .with_default(d.mesh_map_size),
+       enum_key<SplatSunlight>("splat_sunlight",
+                               "Gaussian splats' sunlight at each fragment, or interpolated from each "
+                               "billboard's corners (cheaper).")
+           .with_default(d.splat_sunlight),
        integer_key("fire_lights", 0, kMaxFireLights, "Point lights clustered from the fire; 0: none.")
            .with_default(d.fire_lights),
        object_key("scattering", scattering_keys(), "How the splats scatter the sun.")}};

@@ -259,6 +259,14 @@ TEST(SceneLoader, ShadowsScatteringSetsTheLobeAndOctaves) {
   expect_error_scene_loader(R"({"shadows": {"scattering": {"phase": 0.5}}})", "/shadows/scattering/phase", {"unknown key"});
 }
 
+TEST(SceneLoader, ShadowsSplatSunlightChoosesWhereTheSplatsAreLit) {
+  EXPECT_EQ(parse_scene(R"({"shadows": {}})", kSceneLoaderFile).shadows->splat_sunlight, SplatSunlight::fragments);
+  EXPECT_EQ(parse_scene(R"({"shadows": {"splat_sunlight": "vertices"}})", kSceneLoaderFile).shadows->splat_sunlight,
+            SplatSunlight::vertices);
+  expect_error_scene_loader(R"({"shadows": {"splat_sunlight": "pixels"}})", "/shadows/splat_sunlight",
+                            {"fragments", "vertices"});
+}
+
 TEST(SceneLoader, LoadsFromFile) {
   TempDir dir;
   const std::string path = dir.write("scene.json", kFullScene);
