@@ -5,6 +5,9 @@
 // (docs/scene_format.md, `fires[]`) map onto these fields one to one, and the runtime expands the
 // groups into `billboards` (systems/flipbook_fire/flipbook_layout.h).
 #include "engine/core/enum_names.h"
+#include "engine/math/flame_flicker.h"
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -77,6 +80,11 @@ struct FlipbookFire {
   float overlap_exponent = 0.5f;     // colour scaled by overlap_count^-exponent
   FlipbookBlend blend = FlipbookBlend::one_minus_destination;
   float frames_per_second = 30.0f;   // flipbook time steps per second of scene time
+  // The flame's puffing (engine/math/flame_flicker.h): its billboards' colour and its light scaled
+  // by 1 + flicker n(t), n of unit rms around the puffing frequency; 0: steady (six-way smoke
+  // always is).
+  float flicker = 0.15f;
+  float flicker_frequency = 0.0f;    // Hz; 0: the puffing frequency 1.5 / sqrt(width in metres)
   std::string flipbook;              // folder of PNG frames, resolved; empty: the engine's baked one
   FlipbookPreparation preparation;
   std::vector<FlipbookGroup> groups;
@@ -87,5 +95,19 @@ struct FlipbookFire {
   bool motion_vectors = false;                // the flipbook has them: frames blend between steps
   bool six_way = false;                       // six-way lightmaps: smoke relit by the scene's light
 };
+
+// The fire's flicker: its amplitude, its frequency, and a seed from its name and place so that
+// fires side by side puff out of step. Six-way smoke is lit, not alight: it holds steady.
+inline FlameFlicker flicker_of(const FlipbookFire& fire) {
+  uint32_t seed = 2166136261u;  // FNV-1a over the name's bytes and the position's
+  const auto mix = [&seed](const void* bytes, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) seed = (seed ^ static_cast<const unsigned char*>(bytes)[i]) * 16777619u;
+  };
+  mix(fire.name.data(), fire.name.size());
+  mix(&fire.position, sizeof(fire.position));
+  const double frequency =
+      fire.flicker_frequency > 0.0f ? double(fire.flicker_frequency) : puffing_frequency(double(fire.width));
+  return {fire.six_way ? 0.0 : double(fire.flicker), frequency, seed};
+}
 
 }  // namespace pyro

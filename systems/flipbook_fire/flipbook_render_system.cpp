@@ -39,6 +39,9 @@ void orient_flipbook_fires(ecs::World& world) {
             ? std::clamp(static_cast<float>(time * fire.frames_per_second - static_cast<double>(step)), 0.0f, 1.0f)
             : 0.0f;
     f.quads = flipbook_quads(fire, f.frame, step, fire.frame_count, fraction);
+    // The flame puffs with its light (systems/lighting/flipbook_fire_lights.h).
+    const float flicker = static_cast<float>(flame_flicker(flicker_of(fire), time));
+    for (FlipbookQuad& q : f.quads) q.intensity *= flicker;
     f.texture = fire.texture;
     f.blend = fire.blend;
     f.distance = glm::length(fire.position - list.viewer);

@@ -6,7 +6,8 @@
 // so the fire is taken as a flame that shows the same area from every side: the same model as
 // the explosion's fire particles (intensity = radiance x the area it shows). The emitters sit on
 // the fire's axis, half a card above its base (the cards' offsets across and in depth turn with
-// the viewer and are left out); they flicker as the frames play.
+// the viewer and are left out); they flicker as the frames play, and all together as the flame
+// puffs (flicker_of, engine/math/flame_flicker.h), as its billboards do.
 #include <vector>
 
 #include "components/flipbook_emission.h"

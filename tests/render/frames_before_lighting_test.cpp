@@ -5,8 +5,9 @@
 // frames (campfire, explosion, explosion_behind_tower, flipbook_fire, flipbook_grid) were
 // rendered again when the final pass stopped clipping each channel (the hue-keeping highlight
 // roll-off, engine/math/highlight_rolloff.h) and the baked flame was remade, and fog's when its
-// sun moved behind the tower (so that the tower's shadow falls toward the viewer): changes of
-// their look that are not the light phase's. On the machine that rendered them the frames are byte-identical
+// sun moved behind the tower (so that the tower's shadow falls toward the viewer), and the
+// flipbook fires' (campfire, flipbook_grid) when their flames began to puff: changes of their
+// look that are not the light phase's. On the machine that rendered them the frames are byte-identical
 // (and tools/compare_renders.sh checks every frame against any other checkout); llvmpipe's code
 // follows the CPU it runs on, so elsewhere the values are held to within two levels of 255 with
 // at most 0.5% of them differing at all. Scaling the unlit splats' opacity by 0.995 already makes

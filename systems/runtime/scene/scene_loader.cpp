@@ -510,6 +510,8 @@ void read_fire(ObjectReader& r, FlipbookFire& f, const std::string& scene_file) 
   r.number("overlap_exponent", f.overlap_exponent);
   r.choice("blend", f.blend);
   r.number("frames_per_second", f.frames_per_second);
+  r.number("flicker", f.flicker);
+  r.number("flicker_frequency", f.flicker_frequency);
   if (r.find("flipbook") != nullptr) {
     std::string folder;
     r.string("flipbook", folder);

@@ -69,6 +69,7 @@ SceneDescription billboard_scene(const std::string& flipbook, FlipbookBlend blen
   fire.aspect = 1.0f;
   fire.blend = blend;
   fire.overlap_exponent = 1.0f;
+  fire.flicker = 0.0f;  // steady: the blend's closed forms
   FlipbookGroup g;
   g.rows = rows;
   g.columns = 1;

@@ -52,10 +52,13 @@ TEST(FlipbookFireLights, EachBillboardIsItsCardTimesItsFrame) {
   const std::vector<PointEmitter> e = flipbook_fire_emitters(fire, emission, seconds);
   ASSERT_EQ(e.size(), fire.billboards.size());
   const double area = 0.4 * 0.6;
+  // Every emitter puffs with the flame (engine/math/flame_flicker.h).
+  const double flicker = flame_flicker(flicker_of(fire), seconds);
+  EXPECT_GT(std::abs(flicker - 1.0), 1e-3);
   for (size_t k = 0; k < e.size(); ++k) {
     const FlipbookBillboard& b = fire.billboards[k];
     const int f = flipbook_frame(b.start_frame, b.increment, 7, 4);
-    const glm::dvec3 want = glm::dvec3(emission.frame_radiance[size_t(f)]) * double(b.intensity) * area;
+    const glm::dvec3 want = glm::dvec3(emission.frame_radiance[size_t(f)]) * double(b.intensity) * area * flicker;
     EXPECT_LT(glm::length(e[k].intensity - want), 1e-6) << k;
     EXPECT_LT(glm::length(e[k].position - glm::dvec3(1.0, 0.8, -2.0)), 1e-6);  // half a card up
   }

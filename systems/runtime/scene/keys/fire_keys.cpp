@@ -53,6 +53,10 @@ const ParameterTable& fire_keys() {
            .with_default(d.blend),
        number_key("frames_per_second", kPositive, "Flipbook steps per second of scene time.")
            .with_default(d.frames_per_second),
+       number_key("flicker", Range{0.0, 1.0}, "The flame's and its light's puffing, rms as a fraction of their mean; 0: steady.")
+           .with_default(d.flicker),
+       number_key("flicker_frequency", kNonNegative, "Puffing frequency in Hz; 0: 1.5 / sqrt(width in metres).")
+           .with_default(d.flicker_frequency),
        string_key("flipbook", "A folder of PNG flame frames, a flipbook atlas or a six-way bake (absent: the engine's baked flipbook)."),
        object_key("preparation", fire_preparation_keys(), "How the frames are prepared."),
        objects_key("groups", fire_group_keys(), "Groups of billboards (absent: three overlapped pairs).")
