@@ -16,6 +16,7 @@
 #include "components/volume_medium.h"
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
+#include "engine/io/scratch_folder.h"
 #include "engine/io/vdb_reader.h"
 #include "tools/bench/sun_directions.h"
 #include "systems/runtime/cloud_import/cloud_import.h"
@@ -29,21 +30,6 @@ namespace {
 namespace fs = std::filesystem;
 
 // A folder of its own under the system's temporary folder, removed with everything in it.
-struct ScratchFolder {
-  fs::path path;
-  ScratchFolder() {
-    std::string pattern = (fs::temp_directory_path() / "pyro-bench-cycles-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw UserError(pattern, "a scratch folder", "a writable temporary folder");
-    path = pattern;
-  }
-  ~ScratchFolder() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-};
-
 // Whether `program` runs: a path to an executable file, or a name found on PATH.
 bool program_exists(const std::string& program) {
   if (program.find('/') != std::string::npos) return access(program.c_str(), X_OK) == 0;
@@ -185,7 +171,7 @@ nlohmann::json bench_cycles(const CyclesBenchOptions& o) {
     throw UserError(o.blender, "--blender",
                     "the blender program, on PATH or as a path (Debian: apt-get install --no-install-recommends blender)");
   ProgressTask progress(o.progress, "bench cycles", o.files.size() * size_t(o.directions));
-  const ScratchFolder scratch;
+  const ScratchFolder scratch("pyro-bench-cycles");
   nlohmann::json files = nlohmann::json::array();
   size_t done = 0;
   for (const std::string& file : o.files) {

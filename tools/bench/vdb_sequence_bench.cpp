@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <string_view>
 
 #include <sys/resource.h>
@@ -12,6 +13,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/isolated_call.h"
 #include "engine/io/output_gate.h"
+#include "engine/io/scratch_folder.h"
 #include "engine/volume/puff_sequence.h"
 #include "systems/runtime/cloud_import/vdb_sequence_import.h"
 
@@ -22,23 +24,19 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// The folder the bench works in: `keep`, or a temporary one removed at the end.
+// The folder the bench works in: `keep` (left in place), or a fresh scratch folder removed at
+// the end.
 struct WorkFolder {
+  std::optional<ScratchFolder> scratch;
   fs::path path;
-  bool remove = false;
   explicit WorkFolder(const std::string& keep) {
-    if (!keep.empty()) {
+    if (keep.empty()) {
+      scratch.emplace("pyro-bench-vdb-sequence");
+      path = scratch->path;
+    } else {
       path = keep;
       fs::create_directories(path);
-    } else {
-      path = fs::temp_directory_path() / ("pyro-bench-vdb-sequence-" + std::to_string(::getpid()));
-      fs::create_directories(path);
-      remove = true;
     }
-  }
-  ~WorkFolder() {
-    std::error_code ec;
-    if (remove) fs::remove_all(path, ec);
   }
 };
 

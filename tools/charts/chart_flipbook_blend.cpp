@@ -15,6 +15,7 @@
 
 #include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
+#include "engine/io/scratch_folder.h"
 #include "engine/math/color.h"
 #include "tools/charts/charts.h"
 #include "systems/flipbook_fire/flipbook_atlas_folder.h"
@@ -27,21 +28,6 @@ namespace pyro {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct BlendScratch {
-  fs::path path;
-  BlendScratch() {
-    std::string pattern = (fs::temp_directory_path() / "pyro-flipbook-blend-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw UserError(pattern, "a scratch folder", "a writable temporary folder");
-    path = pattern;
-  }
-  ~BlendScratch() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  BlendScratch(const BlendScratch&) = delete;
-  BlendScratch& operator=(const BlendScratch&) = delete;
-};
 
 // Frame RGB in linear light.
 BlendImage linear_rgb(const FlipbookFrames& f, size_t frame) {
@@ -104,7 +90,7 @@ ChartTable chart_flipbook_blend(const FlipbookBlendChartOptions& o) {
              "motion vectors as the atlas stores them (8-bit, strength from the sidecar)",
              o.border_fade ? "frames faded at the borders as the bake fades them"
                            : "frames without the bake's border fade (a window fixed to the frame, not carried by the medium)"};
-  BlendScratch scratch;
+  ScratchFolder scratch("pyro-flipbook-blend");
   nlohmann::json summary = nlohmann::json::array();
   for (int frames : o.frames_per_loop) {
     const BlendErrors e = measure(scene, o, frames, scratch.path / std::to_string(frames));

@@ -10,6 +10,7 @@
 
 #include "engine/core/format_text.h"
 #include "engine/core/user_error.h"
+#include "engine/io/scratch_folder.h"
 #include "engine/math/camera_math.h"
 #include "systems/runtime/open_scene/open_scene.h"
 #include "engine/io/vdb_reader.h"
@@ -29,21 +30,6 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 // A folder of its own under the system's temporary folder, removed with what it holds.
-struct RoundTripFolder {
-  fs::path path;
-  RoundTripFolder() {
-    std::string pattern = (fs::temp_directory_path() / "pyro-export-round-trip-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw UserError(pattern, "a scratch folder", "a writable temporary folder");
-    path = pattern;
-  }
-  ~RoundTripFolder() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  RoundTripFolder(const RoundTripFolder&) = delete;
-  RoundTripFolder& operator=(const RoundTripFolder&) = delete;
-};
-
 // The frame's particles of `scene` (run to `frame`), white: their opacity is what is compared.
 ParticlePool white_particles(const SceneDescription& scene, int frame, bool gaussians_only) {
   RuntimeOptions o;
@@ -116,7 +102,7 @@ SceneDescription import_scene(const fs::path& folder, const std::string& file, c
 
 VdbRoundTrip measure_vdb_round_trip(const VdbRoundTripOptions& o, const NoteSink& note) {
   const SceneDescription original = load_scene(o.scene);
-  RoundTripFolder work;
+  ScratchFolder work("pyro-export-round-trip");
   VdbExportOptions e;
   e.scene = o.scene;
   e.out = (work.path / "vdb").string();
