@@ -12,6 +12,11 @@
 
 namespace pyro {
 
+// The deepest mesh shadow as an optical depth, -ln of e^-16 of the light (none worth drawing):
+// the particles' light (systems/shadowing/mesh_shadow_map.h, mesh_shadow_depth) and the
+// explosion's per-fragment truth (sphere_billboard.frag, as a uniform) cap the meshes' shadow at it.
+inline constexpr double kMeshShadowDepth = 16.0;
+
 struct MeshShadow {
   // World points to the grid's texture coordinates: x and y across the light in [0, 1] over the
   // grid, z along the light (0 at the nearest caster's depth range start, 1 at the farthest

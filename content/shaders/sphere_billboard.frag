@@ -62,6 +62,7 @@ uniform int u_mesh_shadowed;
 uniform sampler2DShadow u_mesh_shadow;
 uniform mat4 u_mesh_shadow_transform;     // view position -> its texture coordinates and depth
 uniform float u_mesh_shadow_texel_depth;  // a texel's side in its depth units
+uniform float u_mesh_shadow_max_depth;    // -ln of the deepest shadow (kMeshShadowDepth)
 #endif
 #if LIT == 1
 flat in vec3 v_fire;    // the clustered fire lights' in-scattered radiance at the centre
@@ -218,7 +219,7 @@ void main() {
   float own = tau * max(1.0 - light_d / r, 0.0) * chord;
   float light_depth = max(v_light.x + dot(v_light.yzw, m), 0.0) + own;
 #elif LIT == 2
-  float light_depth = exact_depth_to_light(dir * middle, -v_light_view) - log(max(mesh_visibility(dir * middle), 1.12535175e-7));
+  float light_depth = exact_depth_to_light(dir * middle, -v_light_view) - log(max(mesh_visibility(dir * middle), exp(-u_mesh_shadow_max_depth)));
 #else
   float light_depth = tau * chord;
 #endif

@@ -40,6 +40,9 @@ void MeshShadowTexture::bind(const gpu::Program& program, const MeshShadow* shad
   glUniformMatrix4fv(gpu::uniform_location(program, "u_mesh_shadow_transform"), 1, GL_FALSE,
                      glm::value_ptr(transform));
   glUniform1f(gpu::uniform_location(program, "u_mesh_shadow_texel_depth"), shadow->texel_depth);
+  // The deepest shadow as an optical depth, as the particles' light caps it (absent from the
+  // shaders that take the visibility alone).
+  glUniform1f(gpu::uniform_location(program, "u_mesh_shadow_max_depth"), float(kMeshShadowDepth));
 }
 
 }  // namespace pyro

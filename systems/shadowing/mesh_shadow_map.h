@@ -31,8 +31,7 @@ void build_mesh_shadow_map(const std::vector<MeshInstance>& instances, const glm
 double mesh_visibility(const MeshShadow& shadow, const glm::vec3& p, double bias_texels = 1.0);
 
 // The meshes' shadow at p as an optical depth: -ln mesh_visibility, at most kMeshShadowDepth
-// (e^-16 of the light: none worth drawing); 0 outside the shadow or without casters.
-inline constexpr double kMeshShadowDepth = 16.0;
+// (components/mesh_shadow.h); 0 outside the shadow or without casters.
 double mesh_shadow_depth(const MeshShadow& shadow, const glm::vec3& p, double bias_texels = 1.0);
 
 // The light phase's mesh_shadow system: with a ShadowSettings resource whose method is not
