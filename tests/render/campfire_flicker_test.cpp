@@ -10,9 +10,8 @@
 #include <vector>
 
 #include "engine/core/content_path.h"
-#include "systems/runtime/reference/world_snapshot.h"
 #include "systems/runtime/scene/scene_loader.h"
-#include "systems/runtime/scene_runtime/scene_runtime.h"
+#include "tests/support/rendered_frame.h"
 
 namespace pyro {
 namespace {
@@ -34,11 +33,7 @@ double ground_luminance(const RgbImage& image) {
 
 // The standard deviation of the ground's mean luminance over the frames, over its mean.
 double ground_flicker(const SceneDescription& scene) {
-  RuntimeOptions o;
-  o.readback = true;
-  o.width_override = kCampfireFlickerWidth;
-  o.height_override = kCampfireFlickerHeight;
-  SceneRuntime runtime(scene, o);
+  SceneRuntime runtime = test::readback_runtime(scene, kCampfireFlickerWidth, kCampfireFlickerHeight);
   std::vector<double> luminance;
   for (int f = 0; f < kCampfireFlickerFrames; ++f) {
     runtime.draw_frame(f);

@@ -19,6 +19,7 @@
 #include "systems/runtime/reference/world_snapshot.h"
 #include "systems/runtime/scene/scene_loader.h"
 #include "systems/runtime/scene_runtime/scene_runtime.h"
+#include "tests/support/rendered_frame.h"
 #include "tests/support/test_paths.h"
 
 namespace pyro {
@@ -35,11 +36,7 @@ SceneDescription lit_fitted(ShadowMethod method) {
 }
 
 SceneRuntime runtime_of(const SceneDescription& scene) {
-  RuntimeOptions o;
-  o.readback = true;
-  o.width_override = kLitFittedCloudWidth;
-  o.height_override = kLitFittedCloudHeight;
-  return SceneRuntime(scene, o);
+  return test::readback_runtime(scene, kLitFittedCloudWidth, kLitFittedCloudHeight);
 }
 
 RgbImage reference_of(const SceneDescription& scene) {

@@ -6,12 +6,17 @@
 
 namespace pyro::test {
 
-inline RgbImage rendered_frame(const SceneDescription& scene, int width, int height, int frame = 0) {
+// A runtime of the scene at width x height (mono) whose frames are read back.
+inline SceneRuntime readback_runtime(const SceneDescription& scene, int width, int height) {
   RuntimeOptions o;
   o.readback = true;
   o.width_override = width;
   o.height_override = height;
-  SceneRuntime runtime(scene, o);
+  return SceneRuntime(scene, o);
+}
+
+inline RgbImage rendered_frame(const SceneDescription& scene, int width, int height, int frame = 0) {
+  SceneRuntime runtime = readback_runtime(scene, width, height);
   runtime.draw_frame(frame);
   return rgb_of(runtime.image());
 }
