@@ -34,7 +34,9 @@ uniform float u_erf[6];
 flat in vec4 v_others_depth;  // the others' depth toward the sun at the centre (x), its gradient (yzw)
 flat in vec3 v_eye_offset;    // eye - c
 flat in vec3 v_sun_whitened;  // M toward_sun
-#include "lights.glsl"        // the media are lit by the key light and the ambient term
+flat in vec3 v_key_toward;    // the key light (lights.glsl) and the ambient light, per
+flat in vec3 v_key_radiance;  // particle: uniform reads in each fragment cost more
+flat in vec3 v_ambient;
 uniform float u_self_shadow;  // 1: shadowed; 0: lit without shadows
 uniform int u_octaves;
 uniform vec4 u_scattering;
@@ -95,14 +97,14 @@ void main() {
   // about t_closest with variance 1 / a: three-point Gauss-Hermite quadrature (nodes 0 and
   // +-sqrt(3) standard deviations, weights 2/3 and 1/6), nodes kept to the visible chord.
   vec3 w = v_ray / length(v_ray);
-  float mu = dot(w, key_toward()), spread = sqrt(3.0 / a);
-  vec3 light = ambient_light();
+  float mu = dot(w, v_key_toward), spread = sqrt(3.0 / a);
+  vec3 light = v_ambient;
   for (int node = -1; node <= 1; ++node) {
     float t_node = clamp(t_closest + float(node) * spread, lo, hi);
     vec3 offset = v_eye_offset + t_node * w;
     float tau_self = own_depth_toward_sun(v_eye_whitened + t_node * v, v_color_extinction.a);
     float tau_sun = u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, offset) + tau_self);
-    light += (node == 0 ? 2.0 / 3.0 : 1.0 / 6.0) * key_radiance() * sun_scattering(mu, max(tau_sun, 0.0));
+    light += (node == 0 ? 2.0 / 3.0 : 1.0 / 6.0) * v_key_radiance * sun_scattering(mu, max(tau_sun, 0.0));
   }
   o_color = vec4((v_color_extinction.rgb * light + v_emission) * alpha, alpha);
 #else

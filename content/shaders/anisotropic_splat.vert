@@ -27,6 +27,9 @@ layout(std430, binding = 2) readonly buffer OthersDepth { vec4 others_depth[]; }
 flat out vec4 v_others_depth;
 flat out vec3 v_eye_offset;
 flat out vec3 v_sun_whitened;
+flat out vec3 v_key_toward;    // the key light (lights.glsl) and the ambient light for the
+flat out vec3 v_key_radiance;  // fragments: uniform reads in each fragment cost more
+flat out vec3 v_ambient;
 #endif
 
 uniform mat4 u_view_projection;
@@ -82,6 +85,9 @@ void main() {
   v_others_depth = others_depth[particle];
   v_eye_offset = u_eye - centre;
   v_sun_whitened = whitening * key_toward();
+  v_key_toward = key_toward();
+  v_key_radiance = key_radiance();
+  v_ambient = ambient_light();
 #endif
 
   mat4 t = u_view_projection * mat4(vec4(axis0 * (kExtent * scale.x), 0.0), vec4(axis1 * (kExtent * scale.y), 0.0),

@@ -22,7 +22,8 @@ flat in vec4 v_premultiplied;
 #if LIT
 flat in vec4 v_albedo_density;
 flat in vec3 v_self;  // tau0, 1 / s, 1 / (2 s^2)
-#include "lights.glsl"       // the media are lit by the key light and the ambient term
+flat in vec3 v_key_radiance;  // the key light's, and the ambient light (lights.glsl), per
+flat in vec3 v_ambient;       // particle: uniform reads in each fragment cost more
 #if LIT == 2
 flat in vec3 v_fire;          // the fire lights' scattered light, per particle (billboard.vert)
 #endif
@@ -31,6 +32,8 @@ in float v_sunlight;
 #else
 flat in vec4 v_others_depth;
 in vec3 v_offset;
+flat in vec3 v_key_toward;
+#define SPLAT_KEY_TOWARD v_key_toward
 #if LIT == 2
 flat in float v_view_cosine;  // mu, per particle
 uniform int u_octaves;        // 1: single scattering
@@ -59,9 +62,9 @@ void main() {
 #endif
 #endif
 #if LIT == 2
-  vec3 light = key_radiance() * sunlight + ambient_light() + v_fire;
+  vec3 light = v_key_radiance * sunlight + v_ambient + v_fire;
 #else
-  vec3 light = key_radiance() * sunlight + ambient_light();
+  vec3 light = v_key_radiance * sunlight + v_ambient;
 #endif
   // The opacity of the Gaussian's column through this point, 1 - exp(-tau0 f), f the footprint
   // scaled to 1 at the centre: rho at the centre as in the unlit splats, and the exact opacity

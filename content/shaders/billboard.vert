@@ -26,6 +26,9 @@ layout(std430, binding = 2) readonly buffer ParticleShadow { vec4 others_depth[]
 flat out vec4 v_albedo_density;
 flat out vec4 v_others_depth;
 flat out vec3 v_self;     // tau0 = -ln(1 - rho), 1 / s (s = radius / 3), 1 / (2 s^2)
+flat out vec3 v_key_radiance;  // the key light's radiance and the ambient light, for the fragments
+flat out vec3 v_ambient;
+flat out vec3 v_key_toward;  // for the fragments' own shadow (splat_sunlight.glsl)
 out vec3 v_offset;        // the fragment's place on the billboard, from the centre (world units)
 #endif
 #ifndef SUNLIGHT_AT_VERTICES
@@ -97,6 +100,9 @@ void main() {
   float s = a_center_radius.w / 3.0;
   v_self = vec3(-log(max(1.0 - a_color_density.a, 1e-12)), 1.0 / s, 0.5 / (s * s));
   v_offset = world - center;
+  v_key_radiance = key_radiance();
+  v_ambient = ambient_light();
+  v_key_toward = key_toward();
 #endif
 #if LIT == 2
   vec3 to_eye = u_eye - center;

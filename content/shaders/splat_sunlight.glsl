@@ -8,14 +8,19 @@
 // across the direction toward the sun, tail the fraction of a line's depth beyond d_par / s
 // (engine/math/gaussian_line_integral.h, gaussian_tail_fraction, given as the odd polynomial
 // gaussian_tail_polynomial fits to it: a texture lookup costs more than the polynomial).
-// The including shader includes lights.glsl (and, for LIT 2, sun_scattering.glsl) first.
+// The including shader includes lights.glsl (and, for LIT 2, sun_scattering.glsl) first, or
+// defines SPLAT_KEY_TOWARD as the key light's direction passed in (a fragment shader: a uniform
+// read in each fragment costs more than a flat input).
+#ifndef SPLAT_KEY_TOWARD
+#define SPLAT_KEY_TOWARD key_toward()
+#endif
 uniform float u_self_shadow;         // 1: the particle shadows itself; 0: lit without shadows
 uniform float u_tail_polynomial[6];  // c_k of t^(2k+1), t = x / 3
 
 // others_depth: the other particles' depth at the centre and its gradient; self: tau0, 1 / s,
 // 1 / (2 s^2).
 float splat_optical_depth(vec3 offset, vec4 others_depth, vec3 self) {
-  float d_par = dot(offset, key_toward());
+  float d_par = dot(offset, SPLAT_KEY_TOWARD);
   float d_perp2 = max(dot(offset, offset) - d_par * d_par, 0.0);
   float t = clamp(d_par * self.y, -3.0, 3.0) / 3.0, t2 = t * t;
   float p = u_tail_polynomial[5];
