@@ -45,7 +45,7 @@ std::vector<VdbGridToWrite> make_procedural_fire(const ProceduralFireOptions& o)
   VdbGridToWrite density = grid_named("density", dims, o), temperature = grid_named("temperature", dims, o),
                  velocity = grid_named("velocity", dims, o);
   velocity.vec3 = true;
-  const Turbulence noise(o.seed);
+  const Turbulence noise(o.seed), billows(o.seed + 1);
   const double r0 = 0.5 * dims[0];
   const auto smoothstep = [](double a, double b, double x) {
     const double t = std::clamp((x - a) / (b - a), 0.0, 1.0);
@@ -57,9 +57,22 @@ std::vector<VdbGridToWrite> make_procedural_fire(const ProceduralFireOptions& o)
         const double dx = x - 0.5 * dims[0] + 0.5, dz = z - 0.5 * dims[2] + 0.5;
         const double h = (y + 0.5) / dims[1], d = std::hypot(dx, dz);
         const double r = r0 * (0.5 + 0.5 * h), erode = noise.at(0.45 * dx, 0.3 * y, 0.45 * dz);
-        const double flame = std::exp(-std::pow(d / (0.75 * r), 2.0)) * (1.0 - smoothstep(0.05, 0.6, h)) * erode;
-        const double smoke = smoothstep(0.3, 0.7, h) * (1.0 - smoothstep(0.85, 1.0, h));
-        double rho = std::exp(-std::pow(d / r, 2.0)) * (0.6 * flame + 0.9 * smoke) * erode * erode;
+        // Tongues: the flame's height varies around the axis as sines that change fast across and
+        // slowly upward, so each reaches up as a streak.
+        const double reach = 0.25 + 0.6 * (noise.at(0.9 * dx, 0.12 * y, 0.9 * dz) - 0.4);
+        const double flame =
+            std::exp(-std::pow(d / (0.75 * r), 2.0)) * (1.0 - smoothstep(reach - 0.12, reach + 0.02, h)) * erode;
+        // The smoke's axis wanders; its radius grows linearly with height, as a buoyant plume's
+        // does (Morton, Taylor & Turner 1956), its density thins as it spreads, and its top is
+        // as ragged as its billows.
+        const double ax = 0.12 * r0 * std::sin(5.0 * h + billows.phase[0][0]),
+                     az = 0.12 * r0 * std::sin(4.0 * h + billows.phase[0][1]);
+        const double rs = r0 * (0.2 + 0.3 * h), ds = std::hypot(dx - ax, dz - az);
+        const double billow = billows.at(0.25 * dx, 0.2 * y, 0.25 * dz);
+        const double top = h + 0.15 * (billow - 0.7);
+        const double smoke = std::exp(-std::pow(ds / rs, 2.0)) * smoothstep(0.3, 0.55, h) * (1.0 - smoothstep(0.75, 1.0, top)) *
+                             (0.35 * r0 / rs) * billow;
+        double rho = (0.6 * std::exp(-std::pow(d / r, 2.0)) * flame + 0.9 * smoke) * erode * erode;
         double heat = std::min(1.0, 1.3 * flame);
         rho = rho < 0.02 ? 0.0 : rho;  // a fog volume's empty air
         heat = rho == 0.0 || heat < 0.01 ? 0.0 : heat;

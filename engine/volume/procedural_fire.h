@@ -3,15 +3,22 @@
 // smoke cache frame is (grids "density", "temperature" and "velocity"), deterministic from a seed,
 // made without OpenVDB (tools/make_sample_volume --fire writes it through engine/io/vdb_reader.h).
 //
-// Shape (y up): a column whose radius widens with height, r(h) = r0 (0.5 + 0.5 h), h in [0, 1]
-// from the base to the top, d the distance from the axis, s(a, b, h) the smoothstep. The flame
-// fills the lower half, hottest on the axis: flame = exp(-(d / (0.75 r))^2) (1 - s(0.05, 0.6, h)) e,
-// e a few octaves of sines whose phases come from the seed; Mantaflow stores heat normalised
-// (about [0, 1]), here min(1, 1.3 flame). The density is the flame's soot and the smoke above it,
-// which rises from h = 0.3 and thins out at the top: density = exp(-(d / r)^2) (0.6 flame +
-// 0.9 s(0.3, 0.7, h) (1 - s(0.85, 1, h))) e^2, below 0.02 empty air. `kelvin` writes the
-// temperature as 300 K + 1800 K x heat instead (a Houdini-like grid in kelvin). The velocity is
-// the plume's rise, (0, 1 + 2 heat, 0) world units per second, with a swirl about the axis.
+// Shape (y up): h in [0, 1] from the base to the top, d the distance from the axis, s(a, b, h)
+// the smoothstep, e and b two fields of a few octaves of sines whose phases come from the seed
+// (e fine, the flame's erosion; b coarse, the smoke's billows).
+//  - The flame, in tongues: flame = exp(-(d / (0.75 r))^2) (1 - s(k - 0.12, k + 0.02, h)) e, with
+//    r = r0 (0.5 + 0.5 h) and the reach k = 0.25 + 0.6 (e' - 0.4), e' the sines stretched upward
+//    (fast across, slow along the axis), so each tongue reaches up as a streak. Mantaflow stores
+//    heat normalised (about [0, 1]); here min(1, 1.3 flame).
+//  - The smoke, a plume: about an axis that wanders by 0.12 r0, of radius r_s = r0 (0.2 + 0.3 h)
+//    growing linearly with height as a buoyant plume's does (Morton, Taylor & Turner 1956),
+//    thinning as it spreads: smoke = exp(-(d_s / r_s)^2) s(0.3, 0.55, h)
+//    (1 - s(0.75, 1, h + 0.15 (b - 0.7))) (0.35 r0 / r_s) b, its top as ragged as its billows.
+//  - density = (0.6 exp(-(d / r)^2) flame + 0.9 smoke) e^2, below 0.02 empty air; it never
+//    reaches the box's sides.
+// `kelvin` writes the temperature as 300 K + 1800 K x heat instead (a Houdini-like grid in
+// kelvin). The velocity is the plume's rise, (0, 1 + 2 heat, 0) world units per second, with a
+// swirl about the axis.
 #include <cstdint>
 #include <vector>
 

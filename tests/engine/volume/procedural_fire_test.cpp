@@ -43,6 +43,37 @@ TEST(ProceduralFire, IsAMantaflowLikeFrameFromTheSeed) {
   EXPECT_LE(heat_max, 1.0);  // normalised, as Mantaflow stores heat
 }
 
+// A buoyant plume widens as it rises and stays clear of the box's sides: no density on the four
+// side faces, and the smoke's spread about its own axis (the density-weighted RMS distance from
+// each layer's centroid) in the top fifth is at least 1.15 times that at mid-height.
+TEST(ProceduralFire, TheSmokeIsAPlumeThatWidensAsItRisesClearOfTheSides) {
+  const VdbGridToWrite density = make_procedural_fire()[0];
+  const std::array<int, 3> n = density.dims;
+  const auto at = [&](int x, int y, int z) { return double(density.values[(size_t(z) * n[1] + y) * n[0] + x]); };
+  int on_sides = 0;
+  for (int y = 0; y < n[1]; ++y)
+    for (int i = 0; i < n[0]; ++i)
+      on_sides += (at(0, y, i) > 0.0) + (at(n[0] - 1, y, i) > 0.0) + (at(i, y, 0) > 0.0) + (at(i, y, n[2] - 1) > 0.0);
+  EXPECT_EQ(on_sides, 0);
+  // The mean over layers [y0, y1) of each layer's RMS distance from its centroid.
+  const auto spread = [&](int y0, int y1) {
+    double sum = 0.0;
+    for (int y = y0; y < y1; ++y) {
+      double m = 0.0, cx = 0.0, cz = 0.0, r2 = 0.0;
+      for (int z = 0; z < n[2]; ++z)
+        for (int x = 0; x < n[0]; ++x) m += at(x, y, z), cx += x * at(x, y, z), cz += z * at(x, y, z);
+      cx /= m;
+      cz /= m;
+      for (int z = 0; z < n[2]; ++z)
+        for (int x = 0; x < n[0]; ++x) r2 += ((x - cx) * (x - cx) + (z - cz) * (z - cz)) * at(x, y, z);
+      sum += std::sqrt(r2 / m);
+    }
+    return sum / (y1 - y0);
+  };
+  const double middle = spread(n[1] * 9 / 20, n[1] * 11 / 20), top = spread(n[1] * 3 / 4, n[1] * 19 / 20);
+  EXPECT_GT(top, 1.15 * middle) << "mid-height " << middle << ", top " << top;
+}
+
 TEST(ProceduralFire, TheCommittedSampleIsTheGeneratorsOutput) {
   ProceduralFireOptions o;
   o.velocity = false;
