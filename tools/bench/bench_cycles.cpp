@@ -18,6 +18,7 @@
 #include "engine/core/user_error.h"
 #include "engine/io/scratch_folder.h"
 #include "engine/io/vdb_reader.h"
+#include "tools/bench/block_scoring.h"
 #include "tools/bench/sun_directions.h"
 #include "systems/runtime/cloud_import/cloud_import.h"
 #include "systems/runtime/cloud_import/grid_framing.h"
@@ -136,6 +137,18 @@ CyclesRender render_with_cycles(const CyclesBenchOptions& o, const std::string& 
   return r;
 }
 
+// The image plus `offset` in each channel of every pixel that differs from the background.
+RgbImage offset_where_medium_shows(RgbImage image, const glm::dvec3& background, double offset) {
+  if (offset == 0.0) return image;
+  for (size_t i = 0; i < image.rgb.size(); i += 3) {
+    bool medium = false;
+    for (int c = 0; c < 3; ++c) medium = medium || std::abs(image.rgb[i + c] - background[c]) > 1e-6;
+    if (medium)
+      for (int c = 0; c < 3; ++c) image.rgb[i + c] = float(image.rgb[i + c] + offset);
+  }
+  return image;
+}
+
 nlohmann::json score_cycles_direction(const CyclesBenchOptions& o, const DenseGrid& grid, const std::string& leaf,
                                const VolumeMedium& medium, const fs::path& scratch) {
   const CameraDescription cam = framing_camera(grid);
@@ -143,24 +156,33 @@ nlohmann::json score_cycles_direction(const CyclesBenchOptions& o, const DenseGr
   trace.samples_per_pixel = o.samples;
   trace.anisotropy = o.anisotropy;
   trace.threads = o.threads;
-  const PathTracedImage truth = path_trace_volume(grid, camera_frame(cam, o.width, o.height), medium, trace);
+  const PathTracedImage traced = path_trace_volume(grid, camera_frame(cam, o.width, o.height), medium, trace);
+  const RgbImage ours = offset_where_medium_shows(traced.image, medium.background, o.offset_ours);
   const glm::dvec3 d = medium.light_direction;
   nlohmann::json j = {{"direction", {d.x, d.y, d.z}},
-                      {"path_traced_seconds", truth.seconds},
-                      {"monte_carlo_error", truth.monte_carlo_error},
+                      {"path_traced_seconds", traced.seconds},
+                      {"monte_carlo_error", traced.monte_carlo_error},
                       {"cycles_seconds", nullptr},
                       {"cycles_noise", nullptr},
                       {"noise_rmse", nullptr},
-                      {"rmse_vs_cycles", nullptr}};
+                      {"rmse_vs_cycles", nullptr},
+                      {"block_rmse_vs_cycles", nullptr},
+                      {"block_noise_rmse", nullptr},
+                      {"bias_rmse", nullptr}};
   const CyclesRender a = render_with_cycles(o, leaf, grid, medium, cam, 1, scratch);
   if (a.image.rgb.empty()) return j;
   const CyclesRender b = render_with_cycles(o, leaf, grid, medium, cam, 2, scratch);
   j["cycles_seconds"] = a.seconds;
-  j["rmse_vs_cycles"] = image_rmse(truth.image, a.image);
+  j["rmse_vs_cycles"] = image_rmse(ours, a.image);
+  j["block_rmse_vs_cycles"] = block_rmse(ours, a.image, o.block);
   if (b.image.rgb.empty()) return j;
   const double cycles_noise = image_rmse(a.image, b.image) / std::sqrt(2.0);
   j["cycles_noise"] = cycles_noise;
-  j["noise_rmse"] = std::hypot(truth.monte_carlo_error, cycles_noise);
+  j["noise_rmse"] = std::hypot(traced.monte_carlo_error, cycles_noise);
+  const BlockScore blocks = block_score(ours, a.image, o.block, traced.monte_carlo_error / o.block,
+                                        block_rmse(a.image, b.image, o.block) / std::sqrt(2.0));
+  j["block_noise_rmse"] = blocks.noise_rmse;
+  j["bias_rmse"] = blocks.bias_rmse;
   return j;
 }
 
@@ -186,22 +208,26 @@ nlohmann::json bench_cycles(const CyclesBenchOptions& o) {
     medium.albedo = o.albedo;
     medium.ambient = glm::dvec3(0.0);
     nlohmann::json directions = nlohmann::json::array();
-    std::optional<double> worst;
+    std::optional<double> worst, worst_bias;
     for (int k = 0; k < o.directions; ++k) {
       progress.stage(done++, fs::path(file).filename().string() + ", direction " + std::to_string(k + 1));
       medium.light_direction = sun_direction(k, o.directions);
       directions.push_back(score_cycles_direction(o, grid, leaf, medium, scratch.path));
       if (!directions.back()["rmse_vs_cycles"].is_null())
         worst = std::max(worst.value_or(0.0), directions.back()["rmse_vs_cycles"].get<double>());
+      if (!directions.back()["bias_rmse"].is_null())
+        worst_bias = std::max(worst_bias.value_or(0.0), directions.back()["bias_rmse"].get<double>());
     }
     files.push_back({{"file", file}, {"grid", grid.name}, {"extinction", medium.extinction},
                      {"directions", directions},
-                     {"max_rmse_vs_cycles", worst ? nlohmann::json(*worst) : nlohmann::json(nullptr)}});
+                     {"max_rmse_vs_cycles", worst ? nlohmann::json(*worst) : nlohmann::json(nullptr)},
+                     {"max_bias_rmse", worst_bias ? nlohmann::json(*worst_bias) : nlohmann::json(nullptr)}});
   }
   progress.finish();
   return {{"blender", o.blender},   {"width", o.width},           {"height", o.height},
           {"samples", o.samples},   {"cycles_samples", o.cycles_samples}, {"bounces", o.bounces},
-          {"albedo", o.albedo},     {"anisotropy", o.anisotropy}, {"files", files}};
+          {"albedo", o.albedo},     {"anisotropy", o.anisotropy}, {"block", o.block},
+          {"offset_ours", o.offset_ours}, {"files", files}};
 }
 
 }  // namespace pyro

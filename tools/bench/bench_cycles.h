@@ -27,6 +27,8 @@ struct CyclesBenchOptions {
   int bounces = 256;         // Cycles' volume bounces (the engine's paths are not cut)
   double albedo = 0.95;
   double anisotropy = 0.6;
+  int block = 8;             // side of the square blocks of pixels whose means are scored too
+  double offset_ours = 0.0;  // added to the engine's image where the medium shows (a known bias)
   std::string blender = "blender";
   int threads = 0;
   ProgressSink* progress = nullptr;
@@ -35,10 +37,15 @@ struct CyclesBenchOptions {
 
 // Fields: blender, width, height, samples, cycles_samples, bounces, albedo, anisotropy, files
 // [{file, grid, extinction, directions [{direction, path_traced_seconds, monte_carlo_error,
-// cycles_seconds, cycles_noise, noise_rmse, rmse_vs_cycles}], max_rmse_vs_cycles}]. cycles_noise
-// is the RMSE between two Cycles renders with different seeds over √2: the noise of one;
-// noise_rmse = √(monte_carlo_error² + cycles_noise²), the RMSE that noise alone would give. A direction whose
-// Cycles run failed has null in its Cycles fields. Throws UserError naming the file for a grid
+// cycles_seconds, cycles_noise, noise_rmse, rmse_vs_cycles, block_rmse_vs_cycles, block_noise_rmse,
+// bias_rmse}], max_rmse_vs_cycles, max_bias_rmse}], block, offset_ours. cycles_noise is the RMSE
+// between two Cycles renders with different seeds over √2: the noise of one;
+// noise_rmse = √(monte_carlo_error² + cycles_noise²), the RMSE that noise alone would give. The
+// block fields score the means of block × block pixels (tools/bench/block_scoring.h): their noise
+// is the path tracer's monte_carlo_error / block (its pixels are independent) and Cycles' block
+// means' difference over √2; bias_rmse is what that noise leaves unexplained. offset_ours, added
+// to each channel of the engine's image where it differs from the background, shows how small a
+// bias bias_rmse sees. A direction whose Cycles run failed has null in its Cycles fields. Throws UserError naming the file for a grid
 // without active voxels or with a rotated or non-uniform voxel transform (the leaf copy is
 // written with a uniform voxel size and a translation).
 nlohmann::json bench_cycles(const CyclesBenchOptions& options);

@@ -1,5 +1,6 @@
 // pyro bench cycles FILE... [--directions N] [--samples N] [--cycles-samples N] [--bounces N]
-//     [--width W] [--height H] [--albedo A] [--anisotropy G] [--grid NAME] [--blender PATH] [--json]
+//     [--width W] [--height H] [--albedo A] [--anisotropy G] [--block B] [--offset-ours V] [--grid NAME]
+//     [--blender PATH] [--json]
 // The engine's path-traced truth against Blender's Cycles (tools/bench/bench_cycles.h).
 #include <cstdio>
 #include <memory>
@@ -36,12 +37,14 @@ void run_bench_cycles(CyclesBenchOptions options, bool json) {
               options.albedo, options.anisotropy);
   for (const nlohmann::json& f : j["files"])
     for (const nlohmann::json& d : f["directions"])
-      std::printf("  %s, sun (%.2f, %.2f, %.2f): RMSE %s; from noise alone %s (ours %.4f, Cycles' %s)\n",
+      std::printf("  %s, sun (%.2f, %.2f, %.2f): RMSE %s; from noise alone %s (ours %.4f, Cycles' %s); "
+                  "%dx%d block means: RMSE %s, from noise alone %s, bias %s\n",
                   f["file"].get<std::string>().c_str(), d["direction"][0].get<double>(),
                   d["direction"][1].get<double>(), d["direction"][2].get<double>(),
                   number_or_dash(d["rmse_vs_cycles"]).c_str(), number_or_dash(d["noise_rmse"]).c_str(),
-                  d["monte_carlo_error"].get<double>(),
-                  number_or_dash(d["cycles_noise"]).c_str());
+                  d["monte_carlo_error"].get<double>(), number_or_dash(d["cycles_noise"]).c_str(), options.block,
+                  options.block, number_or_dash(d["block_rmse_vs_cycles"]).c_str(),
+                  number_or_dash(d["block_noise_rmse"]).c_str(), number_or_dash(d["bias_rmse"]).c_str());
 }
 
 }  // namespace
@@ -67,6 +70,12 @@ void add_bench_cycles_command(CLI::App& bench) {
   cmd->add_option("--height", o.height, "Image height (default 128)")->check(CLI::Range(1, 4096));
   cmd->add_option("--albedo", o.albedo, "Single-scattering albedo (default 0.95)")->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--anisotropy", o.anisotropy, "Henyey-Greenstein g (default 0.6)")->check(CLI::Range(-0.99, 0.99));
+  cmd->add_option("--block", o.block, "Side of the square blocks of pixels whose means are scored too (default 8)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--offset-ours", o.offset_ours,
+                  "Add this to the engine's image where the medium shows: a known bias, to see what the scores see "
+                  "(default 0)")
+      ->check(CLI::Range(-1.0, 1.0));
   cmd->add_option("--blender", o.blender, "The blender program (default: blender on PATH)");
   cmd->add_flag("--json", args->json, "Print a JSON summary");
   cmd->callback([args] { run_bench_cycles(args->options, args->json); });
