@@ -56,6 +56,19 @@ TEST(ChartBillboardModes, ThreeModesPerSceneWithinTheAccuracyBar) {
   }
 }
 
+// The fitted cloud has no isotropic splats: sunlight at the vertices would chart its frames twice.
+TEST(ChartShadows, ScenesWithoutSplatsAreNotChartedTwice) {
+  ShadowsChartOptions o;
+  o.scenes = {content_path("scenes/cloud_fitted.json")};
+  o.map_sizes = {8};
+  o.width = 32;
+  o.height = 24;
+  o.frames = 1;
+  const ChartTable t = chart_shadows(o);
+  ASSERT_EQ(t.rows.size(), 3u);  // none, rays, the map
+  for (const ChartTable::Row& r : t.rows) EXPECT_EQ(r.label.find("vertices"), std::string::npos) << r.label;
+}
+
 TEST(ChartShadows, EverySettingAgainstTheReferenceWithShadowsHelp) {
   ShadowsChartOptions o;
   o.scenes = {content_path("scenes/clouds.json")};
