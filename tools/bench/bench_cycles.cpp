@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -168,21 +169,30 @@ nlohmann::json score_cycles_direction(const CyclesBenchOptions& o, const DenseGr
                       {"rmse_vs_cycles", nullptr},
                       {"block_rmse_vs_cycles", nullptr},
                       {"block_noise_rmse", nullptr},
-                      {"bias_rmse", nullptr}};
+                      {"bias_rmse", nullptr},
+                      {"mean_difference", nullptr},
+                      {"mean_difference_error", nullptr}};
   const CyclesRender a = render_with_cycles(o, leaf, grid, medium, cam, 1, scratch);
   if (a.image.rgb.empty()) return j;
   const CyclesRender b = render_with_cycles(o, leaf, grid, medium, cam, 2, scratch);
   j["cycles_seconds"] = a.seconds;
   j["rmse_vs_cycles"] = image_rmse(ours, a.image);
-  j["block_rmse_vs_cycles"] = block_rmse(ours, a.image, o.block);
+  const std::array<double, 3> background{medium.background.x, medium.background.y, medium.background.z};
+  const std::vector<bool> medium_blocks = blocks_showing_medium(traced.image, o.block, background);
+  j["block_rmse_vs_cycles"] = block_rmse(ours, a.image, o.block, medium_blocks);
   if (b.image.rgb.empty()) return j;
   const double cycles_noise = image_rmse(a.image, b.image) / std::sqrt(2.0);
   j["cycles_noise"] = cycles_noise;
   j["noise_rmse"] = std::hypot(traced.monte_carlo_error, cycles_noise);
-  const BlockScore blocks = block_score(ours, a.image, o.block, traced.monte_carlo_error / o.block,
-                                        block_rmse(a.image, b.image, o.block) / std::sqrt(2.0));
+  const BlockScore blocks =
+      block_score(ours, a.image, o.block, medium_blocks,
+                  independent_block_noise(traced.monte_carlo_error, traced.image, o.block, medium_blocks),
+                  block_rmse(a.image, b.image, o.block, medium_blocks) / std::sqrt(2.0));
   j["block_noise_rmse"] = blocks.noise_rmse;
   j["bias_rmse"] = blocks.bias_rmse;
+  const MeanDifference mean = medium_mean_difference(ours, a.image, traced.image, background);
+  j["mean_difference"] = mean.mean;
+  j["mean_difference_error"] = mean.standard_error;
   return j;
 }
 

@@ -35,19 +35,24 @@ struct CyclesBenchOptions {
   std::function<void(const std::string&)> on_note;
 };
 
-// Fields: blender, width, height, samples, cycles_samples, bounces, albedo, anisotropy, files
-// [{file, grid, extinction, directions [{direction, path_traced_seconds, monte_carlo_error,
-// cycles_seconds, cycles_noise, noise_rmse, rmse_vs_cycles, block_rmse_vs_cycles, block_noise_rmse,
-// bias_rmse}], max_rmse_vs_cycles, max_bias_rmse}], block, offset_ours. cycles_noise is the RMSE
-// between two Cycles renders with different seeds over √2: the noise of one;
-// noise_rmse = √(monte_carlo_error² + cycles_noise²), the RMSE that noise alone would give. The
-// block fields score the means of block × block pixels (tools/bench/block_scoring.h): their noise
-// is the path tracer's monte_carlo_error / block (its pixels are independent) and Cycles' block
-// means' difference over √2; bias_rmse is what that noise leaves unexplained. offset_ours, added
-// to each channel of the engine's image where it differs from the background, shows how small a
-// bias bias_rmse sees. A direction whose Cycles run failed has null in its Cycles fields. Throws UserError naming the file for a grid
-// without active voxels or with a rotated or non-uniform voxel transform (the leaf copy is
-// written with a uniform voxel size and a translation).
+// Fields: blender, width, height, samples, cycles_samples, bounces, albedo, anisotropy, block,
+// offset_ours, files [{file, grid, extinction, directions [{direction, path_traced_seconds,
+// monte_carlo_error, cycles_seconds, cycles_noise, noise_rmse, rmse_vs_cycles,
+// block_rmse_vs_cycles, block_noise_rmse, bias_rmse, mean_difference, mean_difference_error}],
+// max_rmse_vs_cycles, max_bias_rmse}].
+//  - cycles_noise: the RMSE between two Cycles renders with different seeds over √2, the noise of
+//    one; noise_rmse = √(monte_carlo_error² + cycles_noise²), the RMSE noise alone would give.
+//  - The block fields score the means of block × block pixels over the blocks where the medium
+//    shows in the path tracer's image (tools/bench/block_scoring.h): their noise is the path
+//    tracer's (its pixels are independent: independent_block_noise) and Cycles' (its block means'
+//    difference over √2); bias_rmse is what that noise leaves unexplained.
+//  - mean_difference: ours minus Cycles' over the pixels where the medium shows, with its
+//    standard error (medium_mean_difference): a bias of one sign.
+//  - offset_ours, added to each channel of the engine's image where it differs from the
+//    background, shows how small a bias those scores see.
+// A direction whose Cycles run failed has null in its Cycles fields. Throws UserError naming the
+// file for a grid without active voxels or with a rotated or non-uniform voxel transform (the
+// leaf copy is written with a uniform voxel size and a translation).
 nlohmann::json bench_cycles(const CyclesBenchOptions& options);
 
 }  // namespace pyro

@@ -24,16 +24,73 @@ RgbImage block_means(const RgbImage& image, int block) {
   return means;
 }
 
-double block_rmse(const RgbImage& a, const RgbImage& b, int block) {
-  return image_rmse(block_means(a, block), block_means(b, block));
+std::vector<bool> blocks_showing_medium(const RgbImage& image, int block, const std::array<double, 3>& background) {
+  if (block < 1) throw std::invalid_argument("blocks_showing_medium: the block's side must be at least 1");
+  const int columns = image.width / block, rows = image.height / block;
+  std::vector<bool> shows(size_t(columns) * rows, false);
+  for (int y = 0; y < rows * block; ++y)
+    for (int x = 0; x < columns * block; ++x)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(image.at(x, y)[c] - background[size_t(c)]) > 1e-6) shows[size_t(y / block) * columns + x / block] = true;
+  return shows;
 }
 
-BlockScore block_score(const RgbImage& a, const RgbImage& b, int block, double a_block_noise, double b_block_noise) {
+double block_rmse(const RgbImage& a, const RgbImage& b, int block, const std::vector<bool>& chosen) {
+  if (a.width != b.width || a.height != b.height) throw std::invalid_argument("block_rmse: sizes differ");
+  const RgbImage ma = block_means(a, block), mb = block_means(b, block);
+  if (chosen.size() != size_t(ma.width) * ma.height) throw std::invalid_argument("block_rmse: one choice per block");
+  double sum = 0.0;
+  size_t values = 0;
+  for (size_t k = 0; k < chosen.size(); ++k) {
+    if (!chosen[k]) continue;
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(ma.rgb[3 * k + size_t(c)]) - double(mb.rgb[3 * k + size_t(c)]);
+      sum += d * d;
+    }
+    values += 3;
+  }
+  return values == 0 ? 0.0 : std::sqrt(sum / double(values));
+}
+
+BlockScore block_score(const RgbImage& a, const RgbImage& b, int block, const std::vector<bool>& chosen,
+                       double a_block_noise, double b_block_noise) {
   BlockScore s;
-  s.rmse = block_rmse(a, b, block);
+  s.rmse = block_rmse(a, b, block, chosen);
   s.noise_rmse = std::hypot(a_block_noise, b_block_noise);
   s.bias_rmse = std::sqrt(std::max(s.rmse * s.rmse - s.noise_rmse * s.noise_rmse, 0.0));
   return s;
+}
+
+double independent_block_noise(double pixel_error, const RgbImage& image, int block, const std::vector<bool>& chosen) {
+  const double pixels = double(image.width) * image.height;
+  const double chosen_pixels = double(std::count(chosen.begin(), chosen.end(), true)) * block * block;
+  return chosen_pixels == 0.0 ? 0.0 : pixel_error * std::sqrt(pixels / chosen_pixels) / block;
+}
+
+MeanDifference medium_mean_difference(const RgbImage& a, const RgbImage& b, const RgbImage& medium_of,
+                                      const std::array<double, 3>& background) {
+  if (a.width != b.width || a.height != b.height || a.width != medium_of.width || a.height != medium_of.height)
+    throw std::invalid_argument("medium_mean_difference: sizes differ");
+  double sum = 0.0, sum2 = 0.0;
+  MeanDifference m;
+  for (size_t i = 0; i + 2 < a.rgb.size(); i += 3) {
+    bool medium = false;
+    for (size_t c = 0; c < 3; ++c) medium = medium || std::abs(medium_of.rgb[i + c] - background[c]) > 1e-6;
+    if (!medium) continue;
+    double d = 0.0;
+    for (size_t c = 0; c < 3; ++c)
+      d += std::clamp(double(a.rgb[i + c]), 0.0, 1.0) - std::clamp(double(b.rgb[i + c]), 0.0, 1.0);
+    d /= 3.0;
+    sum += d;
+    sum2 += d * d;
+    ++m.pixels;
+  }
+  if (m.pixels == 0) return m;
+  const double n = double(m.pixels);
+  m.mean = sum / n;
+  const double variance = m.pixels > 1 ? std::max(sum2 - n * m.mean * m.mean, 0.0) / (n - 1.0) : 0.0;
+  m.standard_error = std::sqrt(variance / n);
+  return m;
 }
 
 }  // namespace pyro

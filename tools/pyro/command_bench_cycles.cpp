@@ -38,13 +38,14 @@ void run_bench_cycles(CyclesBenchOptions options, bool json) {
   for (const nlohmann::json& f : j["files"])
     for (const nlohmann::json& d : f["directions"])
       std::printf("  %s, sun (%.2f, %.2f, %.2f): RMSE %s; from noise alone %s (ours %.4f, Cycles' %s); "
-                  "%dx%d block means: RMSE %s, from noise alone %s, bias %s\n",
+                  "%dx%d block means: RMSE %s, from noise alone %s, bias %s; mean difference %s +- %s\n",
                   f["file"].get<std::string>().c_str(), d["direction"][0].get<double>(),
                   d["direction"][1].get<double>(), d["direction"][2].get<double>(),
                   number_or_dash(d["rmse_vs_cycles"]).c_str(), number_or_dash(d["noise_rmse"]).c_str(),
                   d["monte_carlo_error"].get<double>(), number_or_dash(d["cycles_noise"]).c_str(), options.block,
                   options.block, number_or_dash(d["block_rmse_vs_cycles"]).c_str(),
-                  number_or_dash(d["block_noise_rmse"]).c_str(), number_or_dash(d["bias_rmse"]).c_str());
+                  number_or_dash(d["block_noise_rmse"]).c_str(), number_or_dash(d["bias_rmse"]).c_str(),
+                  number_or_dash(d["mean_difference"]).c_str(), number_or_dash(d["mean_difference_error"]).c_str());
 }
 
 }  // namespace
