@@ -138,16 +138,15 @@ CyclesRender render_with_cycles(const CyclesBenchOptions& o, const std::string& 
   return r;
 }
 
-// The image plus `offset` in each channel of every pixel that differs from the background.
-RgbImage offset_where_medium_shows(RgbImage image, const glm::dvec3& background, double offset) {
-  if (offset == 0.0) return image;
-  for (size_t i = 0; i < image.rgb.size(); i += 3) {
-    bool medium = false;
-    for (int c = 0; c < 3; ++c) medium = medium || std::abs(image.rgb[i + c] - background[c]) > 1e-6;
-    if (medium)
-      for (int c = 0; c < 3; ++c) image.rgb[i + c] = float(image.rgb[i + c] + offset);
-  }
-  return image;
+// The image plus `offset` in each channel of every pixel that shows the medium.
+RgbImage offset_where_medium_shows(const RgbImage& image, const std::array<double, 3>& background, double offset) {
+  RgbImage out = image;
+  if (offset == 0.0) return out;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (pixel_shows_medium(image, x, y, background))
+        for (int c = 0; c < 3; ++c) out.at(x, y)[c] = float(image.at(x, y)[c] + offset);
+  return out;
 }
 
 nlohmann::json score_cycles_direction(const CyclesBenchOptions& o, const DenseGrid& grid, const std::string& leaf,
@@ -158,7 +157,8 @@ nlohmann::json score_cycles_direction(const CyclesBenchOptions& o, const DenseGr
   trace.anisotropy = o.anisotropy;
   trace.threads = o.threads;
   const PathTracedImage traced = path_trace_volume(grid, camera_frame(cam, o.width, o.height), medium, trace);
-  const RgbImage ours = offset_where_medium_shows(traced.image, medium.background, o.offset_ours);
+  const std::array<double, 3> background{medium.background.x, medium.background.y, medium.background.z};
+  const RgbImage ours = offset_where_medium_shows(traced.image, background, o.offset_ours);
   const glm::dvec3 d = medium.light_direction;
   nlohmann::json j = {{"direction", {d.x, d.y, d.z}},
                       {"path_traced_seconds", traced.seconds},
@@ -177,7 +177,6 @@ nlohmann::json score_cycles_direction(const CyclesBenchOptions& o, const DenseGr
   const CyclesRender b = render_with_cycles(o, leaf, grid, medium, cam, 2, scratch);
   j["cycles_seconds"] = a.seconds;
   j["rmse_vs_cycles"] = image_rmse(ours, a.image);
-  const std::array<double, 3> background{medium.background.x, medium.background.y, medium.background.z};
   const std::vector<bool> medium_blocks = blocks_showing_medium(traced.image, o.block, background);
   j["block_rmse_vs_cycles"] = block_rmse(ours, a.image, o.block, medium_blocks);
   if (b.image.rgb.empty()) return j;

@@ -6,6 +6,13 @@
 
 namespace pyro {
 
+bool pixel_shows_medium(const RgbImage& image, int x, int y, const std::array<double, 3>& background) {
+  const float* v = image.at(x, y);
+  for (size_t c = 0; c < 3; ++c)
+    if (std::abs(v[c] - background[c]) > 1e-6) return true;
+  return false;
+}
+
 RgbImage block_means(const RgbImage& image, int block) {
   if (block < 1) throw std::invalid_argument("block_means: the block's side must be at least 1");
   RgbImage means;
@@ -30,8 +37,7 @@ std::vector<bool> blocks_showing_medium(const RgbImage& image, int block, const 
   std::vector<bool> shows(size_t(columns) * rows, false);
   for (int y = 0; y < rows * block; ++y)
     for (int x = 0; x < columns * block; ++x)
-      for (int c = 0; c < 3; ++c)
-        if (std::abs(image.at(x, y)[c] - background[size_t(c)]) > 1e-6) shows[size_t(y / block) * columns + x / block] = true;
+      if (pixel_shows_medium(image, x, y, background)) shows[size_t(y / block) * columns + x / block] = true;
   return shows;
 }
 
@@ -73,18 +79,16 @@ MeanDifference medium_mean_difference(const RgbImage& a, const RgbImage& b, cons
     throw std::invalid_argument("medium_mean_difference: sizes differ");
   double sum = 0.0, sum2 = 0.0;
   MeanDifference m;
-  for (size_t i = 0; i + 2 < a.rgb.size(); i += 3) {
-    bool medium = false;
-    for (size_t c = 0; c < 3; ++c) medium = medium || std::abs(medium_of.rgb[i + c] - background[c]) > 1e-6;
-    if (!medium) continue;
-    double d = 0.0;
-    for (size_t c = 0; c < 3; ++c)
-      d += std::clamp(double(a.rgb[i + c]), 0.0, 1.0) - std::clamp(double(b.rgb[i + c]), 0.0, 1.0);
-    d /= 3.0;
-    sum += d;
-    sum2 += d * d;
-    ++m.pixels;
-  }
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      if (!pixel_shows_medium(medium_of, x, y, background)) continue;
+      double d = 0.0;
+      for (int c = 0; c < 3; ++c) d += std::clamp(double(a.at(x, y)[c]), 0.0, 1.0) - std::clamp(double(b.at(x, y)[c]), 0.0, 1.0);
+      d /= 3.0;
+      sum += d;
+      sum2 += d * d;
+      ++m.pixels;
+    }
   if (m.pixels == 0) return m;
   const double n = double(m.pixels);
   m.mean = sum / n;

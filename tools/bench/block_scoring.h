@@ -13,13 +13,16 @@
 
 namespace pyro {
 
+// Whether pixel (x, y) of `image` shows the medium: differs from `background` by more than 1e-6
+// in a channel.
+bool pixel_shows_medium(const RgbImage& image, int x, int y, const std::array<double, 3>& background);
+
 // The mean of each whole `block` x `block` square (from the top-left corner; a partial row or
 // column of pixels at the right or bottom is left out), each value clamped to [0, 1] first as
 // image_rmse does: an image of width / block by height / block pixels.
 RgbImage block_means(const RgbImage& image, int block);
 
-// For each block of block_means, row by row: whether a pixel of `image` in it differs from
-// `background` by more than 1e-6 in a channel.
+// For each block of block_means, row by row: whether a pixel of `image` in it shows the medium.
 std::vector<bool> blocks_showing_medium(const RgbImage& image, int block, const std::array<double, 3>& background);
 
 // sqrt(mean over the chosen blocks and their channels of (mean of a - mean of b)^2); 0 with none.
@@ -42,8 +45,7 @@ BlockScore block_score(const RgbImage& a, const RgbImage& b, int block, const st
 // blocks: pixel_error sqrt(pixels / chosen pixels) / block.
 double independent_block_noise(double pixel_error, const RgbImage& image, int block, const std::vector<bool>& chosen);
 
-// The mean over the pixels where `medium_of` differs from `background` (by more than 1e-6 in a
-// channel) of the difference a - b, each pixel's values clamped to [0, 1] and its channels
+// The mean over the pixels where `medium_of` shows the medium of the difference a - b, each pixel's values clamped to [0, 1] and its channels
 // averaged, and the standard error of that mean: the pixels' differences' standard deviation over
 // sqrt(their count). A bias of one sign over the medium shows as a mean several standard errors
 // from 0 even where it is far below the pixels' noise.
