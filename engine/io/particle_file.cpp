@@ -228,6 +228,9 @@ std::optional<RecordedTemperature> recorded_temperature(const std::string& path,
   r.max = number("max", 0.0);
   r.scale = number("scale", 1.0);
   r.offset = number("offset", 0.0);
+  r.intensity = number("intensity", r.intensity);
+  if (r.intensity < 0.0)
+    throw UserError(path, "metadata/temperature/intensity", "a number at least 0, found " + t->at("intensity").dump());
   return r;
 }
 

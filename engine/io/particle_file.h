@@ -68,13 +68,15 @@ ParticleFile read_particle_file(const std::string& path);
 // metadata is not a JSON object or its "albedo" is not a number in [0, 1].
 double imported_albedo(const std::string& path, const ParticleFile& file);
 // What the import recorded of the particles' temperatures (metadata "temperature", written by
-// pyro import-vdb beside a temperature channel): the grid, its largest value and the automatic
-// map from its values to kelvin the import chose. nullopt when the metadata has none. Throws
-// UserError(path, "metadata/temperature", why) when it is not an object of finite numbers.
+// pyro import-vdb beside a temperature channel): the grid, its largest value, the automatic
+// map from its values to kelvin the import chose and the intensity it exposed the fire at. nullopt
+// when the metadata has none. Throws UserError(path, "metadata/temperature", why) when it is not an
+// object of finite numbers, or its intensity is negative.
 struct RecordedTemperature {
   std::string grid;
   double max = 0.0;                 // the grid's largest value (resampled to the density)
   double scale = 1.0, offset = 0.0; // kelvin = scale * value + offset
+  double intensity = 4.0;           // files written before the exposure was chosen all used 4
 };
 std::optional<RecordedTemperature> recorded_temperature(const std::string& path, const ParticleFile& file);
 

@@ -15,6 +15,8 @@
 #include "engine/io/vdb_temperature_grid.h"
 #include "engine/math/temperature_emission.h"
 #include "engine/volume/sparse_grid.h"
+#include "systems/runtime/cloud_import/fire_exposure.h"
+#include "systems/runtime/cloud_import/grid_framing.h"
 #include "tools/import/fitted_import.h"
 
 namespace pyro {
@@ -45,15 +47,15 @@ VdbFileImport write_import(const VdbFileImportRequest& a, const GridHeader& grid
 }
 
 // The temperature grid beside the density (none, or read into the density's index space) and
-// the emission the import is measured with: the automatic mapping for its values at the default
-// intensity (engine/math/temperature_emission.h), as a scene shows it unless told otherwise.
+// the emission the import is measured with: the automatic mapping for its values at the exposed
+// intensity (systems/runtime/cloud_import/fire_exposure.h), as a scene shows it unless told otherwise.
 struct ImportTemperature {
   std::optional<VdbGridInfo> grid;
   VolumeEmission emission;
   nlohmann::json summary;  // null without a temperature grid
 };
 
-ImportTemperature read_import_temperature(const VdbFileImportRequest& a, const GridHeader& density,
+ImportTemperature read_import_temperature(const VdbFileImportRequest& a, const DenseGrid& density,
                                           const NoteSink& say) {
   ImportTemperature t;
   t.grid = choose_temperature_grid(a.file, list_vdb_grids(a.file), a.temperature_grid, "--temperature-grid");
@@ -65,16 +67,19 @@ ImportTemperature read_import_temperature(const VdbFileImportRequest& a, const G
   t.emission.temperature = read_temperature_grid(a.file, *t.grid, density);
   const double top = t.emission.temperature.max_value;
   const TemperatureMapping mapping = automatic_temperature_mapping(top);
-  t.emission.emission = make_temperature_emission(mapping, kDefaultEmissionIntensity, top);
+  const double intensity =
+      exposed_fire_intensity(density, default_medium(density).extinction, t.emission.temperature, mapping);
+  t.emission.emission = make_temperature_emission(mapping, intensity, top);
   t.summary = {{"grid", t.grid->name},       {"grid_index", t.grid->index},
                {"max", top},                 {"mapping", automatic_mapping_kind(top)},
                {"scale", mapping.scale},     {"offset", mapping.offset},
-               {"intensity", kDefaultEmissionIntensity}, {"hottest_kelvin", t.emission.emission.hottest_kelvin}};
+               {"intensity", intensity},     {"hottest_kelvin", t.emission.emission.hottest_kelvin}};
   char text[256];
   std::snprintf(text, sizeof text,
-                "temperature grid \"%s\" (largest value %g: %s, kelvin = %g value + %g, hottest %.0f K)",
+                "temperature grid \"%s\" (largest value %g: %s, kelvin = %g value + %g, hottest %.0f K, "
+                "exposed at intensity %.3g)",
                 t.grid->name.c_str(), top, automatic_mapping_kind(top).c_str(), mapping.scale, mapping.offset,
-                t.emission.emission.hottest_kelvin);
+                t.emission.emission.hottest_kelvin, intensity);
   say(text);
   return t;
 }

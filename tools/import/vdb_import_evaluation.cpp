@@ -8,19 +8,18 @@
 #include "engine/core/stopwatch.h"
 #include "systems/runtime/reference/volume_reference.h"
 #include "tools/import/particle_snapshot.h"
+#include "systems/runtime/cloud_import/fire_exposure.h"
 #include "systems/runtime/cloud_import/grid_framing.h"
 
 namespace pyro {
-
-namespace {
-
-}  // namespace
 
 VdbImportReference make_vdb_import_reference(const DenseGrid& grid, int width, int height,
                                              bool every_view, VolumeEmission emission) {
   VdbImportReference r;
   r.emission = std::move(emission);
   r.medium = default_medium(grid);
+  // A fire's smoke is soot (fire_exposure.h).
+  if (!r.emission.temperature.empty()) r.medium.albedo = kFireSmokeAlbedo;
   r.width = width;
   r.height = height;
   if (grid.empty()) return r;

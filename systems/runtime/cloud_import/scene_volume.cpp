@@ -12,6 +12,7 @@
 #include "engine/io/vdb_reader.h"
 #include "engine/io/vdb_temperature_grid.h"
 #include "systems/runtime/cloud_import/cloud_import.h"
+#include "systems/runtime/cloud_import/fire_exposure.h"
 #include "systems/runtime/cloud_import/gaussian_temperature.h"
 #include "systems/runtime/cloud_import/grid_gaussian.h"
 #include "systems/runtime/cloud_import/volume_fire.h"
@@ -74,29 +75,53 @@ std::string particle_file_fire(const SceneDescription& scene, const VolumeDescri
     recorded->scale = rec->scale;
     recorded->offset = rec->offset;
   }
-  const TemperatureEmission e = volume_temperature_emission(v.emission, recorded, hottest);
+  const TemperatureEmission e = volume_temperature_emission(
+      v.emission, volume_temperature_mapping(v.emission, recorded, hottest), hottest,
+      rec ? rec->intensity : kDefaultEmissionIntensity);
   apply_emission(file.anisotropic, file.temperature, e);
   if (add_emission_to_colours(file.particles, file.temperature, e) && scene.shadows) refuse_lit_isotropic_fire(scene, v);
   return describe_volume_emission(rec ? rec->grid : "", v.emission, recorded.has_value(), e);
 }
 
-// A VDB file's fire, on load: the temperature grid beside the density, each imported particle's
-// temperature (gaussian_temperature.h) and its emission added to its colour.
-std::string vdb_fire(const SceneDescription& scene, const VolumeDescription& v, const DenseGrid& grid,
-                     const CloudImportOptions& opt, std::vector<GaussianParticle>& particles) {
-  std::optional<VdbGridInfo> info;
+// The temperature grid a VDB volume's fire comes from (none: no fire), named as the scene's
+// entry names it.
+std::optional<VdbGridInfo> vdb_fire_grid(const SceneDescription& scene, const VolumeDescription& v) {
   try {
-    info = choose_temperature_grid(v.path, list_vdb_grids(v.path), v.temperature_grid, "");
+    return choose_temperature_grid(v.path, list_vdb_grids(v.path), v.temperature_grid, "");
   } catch (const UserError& e) {
     throw UserError(scene.file, v.pointer + "/temperature_grid", v.path + ": " + e.expected());
   }
-  if (!info) return "";
-  const DenseGrid heat = read_temperature_grid(v.path, *info, grid);
+}
+
+// The intensity that exposes the particles' fire (fire_exposure.h): their brightest line of
+// sight at intensity 1, emitting alone.
+double particles_exposure(const DenseGrid& grid, const std::vector<GaussianParticle>& particles,
+                          const std::vector<float>& temperatures, const TemperatureMapping& mapping,
+                          double hottest_value, int threads) {
+  const TemperatureEmission unit = make_temperature_emission(mapping, 1.0, hottest_value);
+  std::vector<GaussianParticle> glowing = particles;
+  for (size_t i = 0; i < glowing.size(); ++i) {
+    const glm::vec3 le = i < temperatures.size() ? emitted_radiance(unit, temperatures[i]) : glm::vec3(0.0f);
+    glowing[i].r = le.x;
+    glowing[i].g = le.y;
+    glowing[i].b = le.z;
+  }
+  return exposure_for_sightline(brightest_particle_sightline(grid, glowing, 64, threads));
+}
+
+// A VDB file's fire, on load: the temperature grid beside the density, each imported particle's
+// temperature (gaussian_temperature.h) and its emission added to its colour, exposed
+// (fire_exposure.h) unless the scene gives the intensity.
+std::string vdb_fire(const SceneDescription& scene, const VolumeDescription& v, const VdbGridInfo& info,
+                     const DenseGrid& grid, const CloudImportOptions& opt, std::vector<GaussianParticle>& particles) {
+  const DenseGrid heat = read_temperature_grid(v.path, info, grid);
   const std::vector<float> temperatures =
       gaussian_temperatures(grid, heat, grid_gaussians_from_particles(grid, particles, opt.medium), opt.threads);
-  const TemperatureEmission e = volume_temperature_emission(v.emission, std::nullopt, heat.max_value);
+  const TemperatureMapping mapping = volume_temperature_mapping(v.emission, std::nullopt, heat.max_value);
+  const double exposure = v.emission.intensity_given ? 0.0 : particles_exposure(grid, particles, temperatures, mapping, heat.max_value, opt.threads);
+  const TemperatureEmission e = volume_temperature_emission(v.emission, mapping, heat.max_value, exposure);
   if (add_emission_to_colours(particles, temperatures, e) && scene.shadows) refuse_lit_isotropic_fire(scene, v);
-  return describe_volume_emission(info->name, v.emission, false, e);
+  return describe_volume_emission(info.name, v.emission, false, e);
 }
 
 }  // namespace
@@ -154,8 +179,10 @@ SceneVolume load_scene_volume(const SceneDescription& scene, const VolumeDescrip
       opt.medium.background = glm::dvec3(scene.background);
       opt.tau_tolerance = tau_tolerance_for_error(v.error);
       opt.threads = threads;
+      const std::optional<VdbGridInfo> fire = vdb_fire_grid(scene, v);
+      if (fire) opt.medium.albedo = kFireSmokeAlbedo;
       out.particles = import_cloud(grid, opt);
-      out.fire_note = vdb_fire(scene, v, grid, opt, out.particles);
+      if (fire) out.fire_note = vdb_fire(scene, v, *fire, grid, opt, out.particles);
     }
   } catch (const UserError& e) {
     if (e.file() == scene.file) throw;  // the entry's own keys: already placed in the scene

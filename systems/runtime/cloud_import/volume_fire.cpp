@@ -4,17 +4,20 @@
 
 namespace pyro {
 
-TemperatureEmission volume_temperature_emission(const VolumeEmissionDescription& d,
-                                                const std::optional<TemperatureMapping>& recorded,
-                                                double hottest_value) {
-  TemperatureMapping mapping = recorded ? *recorded : automatic_temperature_mapping(hottest_value);
-  if (!d.automatic) {
-    mapping = TemperatureMapping{};
-    mapping.scale = d.scale;
-    mapping.offset = d.offset;
-    for (const std::array<float, 2>& e : d.table) mapping.table.emplace_back(e[0], e[1]);
-  }
-  return make_temperature_emission(mapping, d.intensity, hottest_value);
+TemperatureMapping volume_temperature_mapping(const VolumeEmissionDescription& d,
+                                              const std::optional<TemperatureMapping>& recorded,
+                                              double hottest_value) {
+  if (d.automatic) return recorded ? *recorded : automatic_temperature_mapping(hottest_value);
+  TemperatureMapping mapping;
+  mapping.scale = d.scale;
+  mapping.offset = d.offset;
+  for (const std::array<float, 2>& e : d.table) mapping.table.emplace_back(e[0], e[1]);
+  return mapping;
+}
+
+TemperatureEmission volume_temperature_emission(const VolumeEmissionDescription& d, const TemperatureMapping& mapping,
+                                                double hottest_value, double exposure) {
+  return make_temperature_emission(mapping, d.intensity_given ? double(d.intensity) : exposure, hottest_value);
 }
 
 std::string describe_volume_emission(const std::string& grid, const VolumeEmissionDescription& d, bool recorded,
@@ -26,9 +29,9 @@ std::string describe_volume_emission(const std::string& grid, const VolumeEmissi
     std::snprintf(map, sizeof map, "kelvin = %g value + %g (%s)", e.mapping.scale, e.mapping.offset,
                   !d.automatic ? "the scene's" : recorded ? "as imported" : "automatic");
   char text[384];
-  std::snprintf(text, sizeof text, "fire from temperature grid \"%s\": %s, hottest %.0f K%s, intensity %g",
+  std::snprintf(text, sizeof text, "fire from temperature grid \"%s\": %s, hottest %.0f K%s, intensity %g (%s)",
                 grid.c_str(), map, e.hottest_kelvin, e.hottest_kelvin > kGlowKelvin ? "" : " (too cool to glow)",
-                e.intensity);
+                e.intensity, d.intensity_given ? "the scene's" : recorded ? "as imported" : "exposed");
   return text;
 }
 

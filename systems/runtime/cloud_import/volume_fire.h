@@ -14,14 +14,21 @@
 
 namespace pyro {
 
-// `recorded`: the particle file's map (engine/io/particle_file.h, recorded_temperature), if any;
-// `hottest_value`: the largest temperature value of the grid the particles came from.
+// The map from grid values to kelvin: the scene's, else `recorded` (the particle file's,
+// engine/io/particle_file.h, recorded_temperature), else the automatic one for `hottest_value`.
+TemperatureMapping volume_temperature_mapping(const VolumeEmissionDescription& description,
+                                              const std::optional<TemperatureMapping>& recorded,
+                                              double hottest_value);
+
+// `hottest_value`: the largest temperature value of the grid the particles came from;
+// `exposure`: the intensity when the scene gives none (the particle file's recorded exposure, or
+// the grid's, fire_exposure.h).
 TemperatureEmission volume_temperature_emission(const VolumeEmissionDescription& description,
-                                                const std::optional<TemperatureMapping>& recorded,
-                                                double hottest_value);
+                                                const TemperatureMapping& mapping, double hottest_value,
+                                                double exposure);
 
 // One line for the run's notes: the grid, how values become kelvin (and who decided), the
-// hottest temperature and the intensity.
+// hottest temperature and the intensity (and who decided: the scene, or the exposure).
 std::string describe_volume_emission(const std::string& grid, const VolumeEmissionDescription& description,
                                      bool recorded, const TemperatureEmission& emission);
 

@@ -120,7 +120,9 @@ struct VolumeEmissionDescription {
   float scale = 1.0f, offset = 0.0f;  // kelvin = scale * value + offset
   std::vector<std::array<float, 2>> table;  // (value, kelvin), values ascending; used when not empty
   // The largest component of the hottest temperature's emitted radiance (engine/math/
-  // temperature_emission.h, kDefaultEmissionIntensity).
+  // temperature_emission.h). Not given: the volume's exposure (systems/runtime/cloud_import/
+  // fire_exposure.h), which a particle file records from its import.
+  bool intensity_given = false;
   float intensity = 4.0f;
 };
 

@@ -366,6 +366,7 @@ void read_volume_emission(ObjectReader& r, VolumeEmissionDescription& e) {
     t.number("scale", e.scale);
     t.number("offset", e.offset);
   });
+  e.intensity_given = r.find("intensity") != nullptr;
   r.number("intensity", e.intensity);
 }
 

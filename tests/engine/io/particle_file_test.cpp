@@ -256,6 +256,16 @@ TEST(ParticleFile, RecordedTemperatureMapComesFromTheMetadata) {
   EXPECT_DOUBLE_EQ(r->max, 3.5);
   EXPECT_DOUBLE_EQ(r->scale, 428.6);
   EXPECT_DOUBLE_EQ(r->offset, 1000.0);
+  EXPECT_DOUBLE_EQ(r->intensity, 4.0);  // written before the exposure was recorded
+  f.metadata_json = R"({"temperature": {"grid": "heat", "intensity": 2.75}})";
+  EXPECT_DOUBLE_EQ(recorded_temperature("f.pyrop", f)->intensity, 2.75);
+  f.metadata_json = R"({"temperature": {"intensity": -1}})";
+  try {
+    recorded_temperature("f.pyrop", f);
+    ADD_FAILURE() << "a negative intensity was accepted";
+  } catch (const UserError& e) {
+    EXPECT_EQ(e.place(), "metadata/temperature/intensity");
+  }
   f.metadata_json = R"({"temperature": {"scale": "hot"}})";
   try {
     recorded_temperature("f.pyrop", f);

@@ -20,13 +20,12 @@ const ParameterTable& volume_temperature_keys() {
 }
 
 const ParameterTable& volume_emission_keys() {
-  static const VolumeEmissionDescription d{};
   static const ParameterTable table{
       "volumes[].emission", "The fire: how temperature values become kelvin and how bright it glows.",
       {object_key("temperature", volume_temperature_keys(),
                   "Absent: the particle file's recorded map, else the automatic one."),
-       number_key("intensity", Range{0.0, 1e6}, "The largest component of the hottest radiance.")
-           .with_default(d.intensity)}};
+       number_key("intensity", Range{0.0, 1e6},
+                  "The largest component of the hottest radiance (absent: the volume's exposure).")}};
   return table;
 }
 
