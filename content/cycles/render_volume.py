@@ -16,7 +16,14 @@ Conventions (the engine's; the script converts them to Blender's):
   VDB world units): the volume object is neither rotated nor scaled, and its
   only translation undoes Cycles' half-voxel shift ("Half-voxel shift" below).
 * Extinction per world unit = K * grid value; single-scattering albedo A (grey);
-  Henyey-Greenstein phase function with asymmetry G. No emission.
+  Henyey-Greenstein phase function with asymmetry G. No emission, unless
+  --temperature-grid T --emission-grid E name two more float grids of the
+  file: then the medium also emits, per world unit, E * c(T) / Y(c(T)), with
+  c(T) the colour of Cycles' own Blackbody node at T kelvin and Y(c) its
+  luminance (Cycles' RGB to BW node): Cycles' black-body chromaticity at the
+  caller's luminance per unit length (a fire's emission goes with its
+  extinction, Max 1995, so E = K * density * luminance of the radiance). No
+  emission where T is at most 0.
 * --sun-direction is the direction the light TRAVELS (sun -> scene). The sun is
   a delta directional light (angle 0).
 * --light-color L: the single-scattered radiance source is
@@ -162,6 +169,10 @@ def parse_args(argv):
         help="radiance seen by camera rays that leave the scene (default 0 0 0)")
     add("--seed", type=int, default=0, help="Cycles' sampling seed (default 0)")
     add("--out", required=True, help="output colour PFM")
+    add("--temperature-grid", default="",
+        help="float grid of kelvin in the same file: the medium emits Cycles' black-body colour there")
+    add("--emission-grid", default="",
+        help="float grid of the emission's luminance per world unit (with --temperature-grid)")
     add("--keep-cycles-voxel-offset", action="store_true",
         help="do not undo Cycles' half-voxel shift (volume matrix_world = identity)")
     args = parser.parse_args(argv)
@@ -187,6 +198,8 @@ def validate(args):
     _require(os.path.isfile(args.vdb), f"--vdb: no such file: {args.vdb}")
     _require(os.access(args.vdb, os.R_OK), f"--vdb: file not readable: {args.vdb}")
     _require(args.grid != "", "--grid: empty grid name")
+    _require(bool(args.temperature_grid) == bool(args.emission_grid),
+             "--temperature-grid and --emission-grid go together")
     _require(args.extinction >= 0.0, f"--extinction: must be >= 0, got {args.extinction}")
     _require(0.0 <= args.albedo <= 1.0, f"--albedo: must be in [0, 1], got {args.albedo}")
     _require(-1.0 < args.anisotropy < 1.0, f"--anisotropy: must be in (-1, 1), got {args.anisotropy}")
@@ -288,6 +301,37 @@ def make_material(obj, grid_name, extinction, albedo, anisotropy):
     material.cycles.volume_sampling = "MULTIPLE_IMPORTANCE"
     material.cycles.volume_step_rate = 1.0
     obj.data.materials.append(material)
+
+
+def add_blackbody_emission(obj, temperature_grid, emission_grid):
+    """Adds E * c(T) / Y(c(T)) emission to the volume's material (see the header)."""
+    tree = obj.data.materials[0].node_tree
+    nodes, links = tree.nodes, tree.links
+    output = next(n for n in nodes if n.type == "OUTPUT_MATERIAL")
+    principled = next(n for n in nodes if n.type == "PRINCIPLED_VOLUME")
+    kelvin = nodes.new("ShaderNodeAttribute")
+    kelvin.attribute_name = temperature_grid
+    strength = nodes.new("ShaderNodeAttribute")
+    strength.attribute_name = emission_grid
+    blackbody = nodes.new("ShaderNodeBlackbody")
+    links.new(kelvin.outputs["Fac"], blackbody.inputs["Temperature"])
+    luminance = nodes.new("ShaderNodeRGBToBW")
+    links.new(blackbody.outputs["Color"], luminance.inputs["Color"])
+    floor = nodes.new("ShaderNodeMath")  # never divide by 0
+    floor.operation = "MAXIMUM"
+    links.new(luminance.outputs["Val"], floor.inputs[0])
+    floor.inputs[1].default_value = 1e-6
+    per_luminance = nodes.new("ShaderNodeMath")
+    per_luminance.operation = "DIVIDE"
+    links.new(strength.outputs["Fac"], per_luminance.inputs[0])
+    links.new(floor.outputs["Value"], per_luminance.inputs[1])
+    glow = nodes.new("ShaderNodeEmission")
+    links.new(blackbody.outputs["Color"], glow.inputs["Color"])
+    links.new(per_luminance.outputs["Value"], glow.inputs["Strength"])
+    both = nodes.new("ShaderNodeAddShader")
+    links.new(principled.outputs["Volume"], both.inputs[0])
+    links.new(glow.outputs["Emission"], both.inputs[1])
+    links.new(both.outputs["Shader"], output.inputs["Volume"])
 
 
 def add_sun(direction, light_color):
@@ -452,6 +496,11 @@ def main():
               file=sys.stderr)
         max_steps = CYCLES_MAX_STEPS_LIMIT
     make_material(obj, args.grid, args.extinction, args.albedo, args.anisotropy)
+    if args.temperature_grid:
+        for name in (args.temperature_grid, args.emission_grid):
+            if obj.data.grids.get(name) is None:
+                raise UsageError(f"--temperature-grid/--emission-grid: no grid named '{name}' in {args.vdb}")
+        add_blackbody_emission(obj, args.temperature_grid, args.emission_grid)
     sun_energy = add_sun(args.sun_direction, args.light_color)
     add_world(args.background)
     far = max((mathutils.Vector(args.camera_position) - obj.matrix_world @ mathutils.Vector(c)).length

@@ -5,6 +5,9 @@
 #include <stdexcept>
 #include <string>
 
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
 namespace pyro {
 
 double planck_radiance(double wavelength_m, double temperature_k) {
@@ -53,6 +56,16 @@ glm::dvec3 xyz_to_linear_srgb(const glm::dvec3& v) {
   return {3.2406 * v.x - 1.5372 * v.y - 0.4986 * v.z,
           -0.9689 * v.x + 1.8758 * v.y + 0.0415 * v.z,
           0.0557 * v.x - 0.2040 * v.y + 1.0570 * v.z};
+}
+
+glm::dvec2 linear_srgb_chromaticity(const glm::dvec3& rgb) {
+  glm::dmat3 to_rgb;
+  for (int c = 0; c < 3; ++c) {
+    glm::dvec3 e(0.0);
+    e[c] = 1.0;
+    to_rgb[c] = xyz_to_linear_srgb(e);
+  }
+  return xyz_chromaticity(glm::inverse(to_rgb) * rgb);
 }
 
 BlackbodyColor blackbody_color(double temperature_k, const ColorMatchingFunctions& cmf) {

@@ -41,6 +41,10 @@ glm::dvec2 xyz_chromaticity(const glm::dvec3& xyz);
 // XYZ to linear sRGB, the matrix of IEC 61966-2-1:1999 (section 5.2), D65 white.
 glm::dvec3 xyz_to_linear_srgb(const glm::dvec3& xyz);
 
+// The chromaticity of linear sRGB: xyz_chromaticity of the colour taken back to XYZ through the
+// inverse of xyz_to_linear_srgb's matrix (so that a black body's colour gives its own xy).
+glm::dvec2 linear_srgb_chromaticity(const glm::dvec3& rgb);
+
 struct BlackbodyColor {
   double temperature_k = 0.0;
   glm::dvec3 xyz{0.0};      // normalised to Y = 1

@@ -91,6 +91,20 @@ TEST(Blackbody, SrgbMatrixMapsD65WhiteToGrey) {
   EXPECT_NEAR(rgb.z, 1.0, 1e-3);
 }
 
+TEST(Blackbody, LinearSrgbChromaticityUndoesTheMatrix) {
+  // Grey is D65's white point; an in-gamut black body's colour, at any scale, is its own xy.
+  const glm::dvec2 white = linear_srgb_chromaticity({0.7, 0.7, 0.7});
+  EXPECT_NEAR(white.x, 0.3127, 2e-4);
+  EXPECT_NEAR(white.y, 0.3290, 2e-4);
+  for (double t : {2500.0, 4000.0, 6504.0}) {
+    const BlackbodyColor c = blackbody_color(t);
+    ASSERT_TRUE(c.in_gamut) << t;
+    const glm::dvec2 xy = linear_srgb_chromaticity(3.0 * c.rgb);
+    EXPECT_NEAR(xy.x, c.xy.x, 1e-9) << t;
+    EXPECT_NEAR(xy.y, c.xy.y, 1e-9) << t;
+  }
+}
+
 TEST(Blackbody, ColourMovesFromRedToBlueAsTemperatureRises) {
   double last_x = 1.0, last_blue_over_red = 0.0, last_luminance = 0.0, last_rgb_ratio = 0.0;
   for (double t = 1000.0; t <= 12000.0; t += 250.0) {

@@ -12,9 +12,8 @@
 #include <string>
 #include <vector>
 
-#include <glm/mat3x3.hpp>
-#include <glm/matrix.hpp>
 
+#include "engine/core/content_path.h"
 #include "engine/core/user_error.h"
 #include "engine/io/particle_file.h"
 #include "engine/io/vdb_reader.h"
@@ -48,17 +47,6 @@ nlohmann::json import(const std::string& vdb, const std::string& out, std::vecto
   EXPECT_EQ(r.exit_code, 0) << r.err;
   std::printf("%s", r.err.c_str());
   return r.exit_code == 0 ? test::last_json_line(r.out) : nlohmann::json::object();
-}
-
-// Linear sRGB -> CIE xy through the inverse of the engine's XYZ -> sRGB matrix.
-glm::dvec2 chromaticity(const glm::dvec3& rgb) {
-  glm::dmat3 to_rgb;
-  for (int c = 0; c < 3; ++c) {
-    glm::dvec3 e(0.0);
-    e[c] = 1.0;
-    to_rgb[c] = xyz_to_linear_srgb(e);
-  }
-  return xyz_chromaticity(glm::inverse(to_rgb) * rgb);
 }
 
 // The frame of a scene drawing `pyrop` unlit over black, with the default emission or dark.
@@ -138,6 +126,16 @@ TEST(PyroImportVdbFire, NamedGridsThatAreAbsentOrNotFloatAreRefused) {
   }
 }
 
+// The Cycles fire comparison needs a fire: a file without a temperature grid is refused by name.
+TEST(PyroImportVdbFire, TheCyclesFireBenchRefusesAFileWithoutFire) {
+  const std::string cloud = content_path("volumes/sample_cloud.vdb");
+  const test::CommandResult r =
+      test::run_pyro({"bench", "cycles-fire", cloud, "--width", "8", "--height", "8", "--blender", "/bin/false"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(cloud), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("a VDB file with a temperature grid"), std::string::npos) << r.err;
+}
+
 // A .vdb named in a scene is imported on load as isotropic particles whose colours carry their
 // fire: an unlit scene glows; a lit one is refused by name (the albedo would replace the fire).
 TEST(PyroImportVdbFire, AVdbSceneGlowsOnLoadAndALitOneIsRefused) {
@@ -189,8 +187,8 @@ TEST(PyroImportVdbFire, OpenUsdDensityAndHeatGlowsWithTheTablesChromaticity) {
   const size_t top = std::max<size_t>(1, emitting.size() / 100);
   for (size_t i = 0; i < top; ++i) hot += emitting[i];
   const BlackbodyTable table = make_blackbody_table(kGlowKelvin, hottest_kelvin, 256);
-  const glm::dvec2 want = chromaticity(glm::dvec3(sample_blackbody_rgb(table, hottest_kelvin)));
-  const glm::dvec2 got = chromaticity(hot);
+  const glm::dvec2 want = linear_srgb_chromaticity(glm::dvec3(sample_blackbody_rgb(table, hottest_kelvin)));
+  const glm::dvec2 got = linear_srgb_chromaticity(hot);
   std::printf("hottest particle %.0f K: table xy (%.4f, %.4f), hottest region xy (%.4f, %.4f)\n", hottest_kelvin,
               want.x, want.y, got.x, got.y);
   EXPECT_LT(glm::length(got - want), 0.01);
