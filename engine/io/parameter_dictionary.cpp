@@ -17,7 +17,11 @@ float read_number(const json& v, const Where& at, const Range& range) {
   if (!v.is_number()) at.fail(expected + ", found " + describe(v));
   const double d = v.get<double>();
   if (!range.contains(d)) at.fail(expected + ", found " + describe(v));
-  const float f = static_cast<float>(d);
+  float f = static_cast<float>(d);
+  // A number at a closed end that rounds just past it (0.99 is 0.99000001 in a float) is the
+  // float on its side of the end: the range's own ends are always accepted.
+  if (!range.contains(f) && !range.hi_open && f > range.hi) f = std::nextafter(f, -INFINITY);
+  if (!range.contains(f) && !range.lo_open && f < range.lo) f = std::nextafter(f, INFINITY);
   if (!range.contains(f)) {  // e.g. 1e-50 for a positive value: rounds to 0 in a float
     at.fail(expected + ", found " + describe(v) + ", which is " + format_float(f) +
             " in single precision");

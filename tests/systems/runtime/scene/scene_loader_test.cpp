@@ -453,6 +453,20 @@ TEST(SceneLoader, AbsurdMagnitudesRefused) {
                {"expected a number in (0, 1e6], found 1e-50", "single precision"});
 }
 
+TEST(SceneLoader, AClosedRangesEndsAreAcceptedThoughTheyRoundPastItInAFloat) {
+  // 0.99 is 0.99000001 in a float, past the anisotropy's closed end 0.99: it reads as the float
+  // on the range's side of that end, and so does -0.99.
+  for (const char* g : {"0.99", "-0.99"}) {
+    const SceneDescription s =
+        parse_scene(std::string(R"({"shadows": {"scattering": {"anisotropy": )") + g + "}}}", "lobe.json");
+    ASSERT_TRUE(s.shadows.has_value());
+    EXPECT_LE(std::abs(s.shadows->scattering.anisotropy), 0.99) << g;
+    EXPECT_GT(std::abs(s.shadows->scattering.anisotropy), 0.98999) << g;
+  }
+  expect_error_scene_loader(R"({"shadows": {"scattering": {"anisotropy": 0.9900001}}})",
+                            "/shadows/scattering/anisotropy", {"expected a number in [-0.99, 0.99], found 0.9900001"});
+}
+
 TEST(SceneLoader, IntegersOutOfRangeNonIntegralOrNegative) {
   expect_error_scene_loader(R"({"output": {"width": 0}})", "/output/width",
                {"expected an integer in [1, 8192], found 0"});
