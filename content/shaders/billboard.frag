@@ -35,7 +35,10 @@ in vec3 v_offset;
 flat in vec3 v_key_toward;
 #define SPLAT_KEY_TOWARD v_key_toward
 #if LIT == 2
-flat in float v_view_cosine;  // mu, per particle
+// The eye - the centre: mu, the sunlight's direction of travel . the way to the eye, is each
+// fragment's own, from its point p = centre + offset, as the reference takes it along each pixel's
+// ray; one mu per particle would spread a narrow lobe (g near +-1) over the whole billboard.
+flat in vec3 v_eye_from_centre;
 uniform int u_octaves;        // 1: single scattering
 uniform vec4 u_scattering;    // Henyey-Greenstein g; the octaves' a, b, c
 #include "sun_scattering.glsl"
@@ -56,7 +59,10 @@ void main() {
   float sunlight = max(v_sunlight, 0.0);
 #else
 #if LIT == 2
-  float sunlight = splat_sunlight(v_offset, v_others_depth, v_self, v_view_cosine);
+  vec3 to_eye = v_eye_from_centre - v_offset;
+  float to_eye2 = dot(to_eye, to_eye);
+  float mu = to_eye2 > 0.0 ? -dot(v_key_toward, to_eye) * inversesqrt(to_eye2) : 1.0;
+  float sunlight = splat_sunlight(v_offset, v_others_depth, v_self, mu);
 #else
   float sunlight = splat_sunlight(v_offset, v_others_depth, v_self, 1.0);
 #endif

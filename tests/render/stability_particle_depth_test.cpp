@@ -14,9 +14,8 @@
 #include <ostream>
 #include <string>
 
-#include "systems/runtime/quality/quality_settings.h"
-#include "systems/runtime/quality_picker/quality_measurement.h"
 #include "systems/runtime/scene/scene_loader.h"
+#include "tests/support/reference_rmse.h"
 
 namespace pyro {
 namespace {
@@ -32,12 +31,6 @@ SceneDescription lone_particle(double density, const char* method) {
   return parse_scene(json, "lone_particle.json");
 }
 
-double rmse_against_reference(const SceneDescription& scene) {
-  const QualityGroundTruth truth(scene, 96, 96, {0});
-  EXPECT_TRUE(truth.cpu_reference());
-  for (float v : truth.image(0).rgb) EXPECT_TRUE(std::isfinite(v));
-  return measure_rmse(scene, 96, 96, QualitySettings{}, truth);
-}
 
 struct DepthCase {
   double tau0;
@@ -50,12 +43,12 @@ class StabilityParticleDepth : public ::testing::TestWithParam<DepthCase> {};
 
 TEST_P(StabilityParticleDepth, OwnShadowKeepsTheSplatNearTheReference) {
   const double tau0 = GetParam().tau0, density = tau0 > 50.0 ? 1.0 : -std::expm1(-tau0);
-  const double lit = rmse_against_reference(lone_particle(density, "map"));
+  const double lit = test::rmse_against_cpu_reference(lone_particle(density, "map"), 96, 96);
   EXPECT_TRUE(std::isfinite(lit));
   EXPECT_LT(lit, GetParam().bound) << "tau0 " << tau0;
   std::printf("tau0 %g: own shadow %.4f", tau0, lit);
   if (tau0 >= 1.0) {
-    const double naive = rmse_against_reference(lone_particle(density, "none"));
+    const double naive = test::rmse_against_cpu_reference(lone_particle(density, "none"), 96, 96);
     std::printf(", without it %.4f", naive);
     EXPECT_GT(naive, 2.0 * lit) << "tau0 " << tau0;
   }
