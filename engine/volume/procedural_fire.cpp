@@ -87,4 +87,24 @@ std::vector<VdbGridToWrite> make_procedural_fire(const ProceduralFireOptions& o)
   return grids;
 }
 
+std::vector<VdbGridToWrite> make_uniform_fire_box(double kelvin) {
+  constexpr int kSide = 16, kMargin = 2;
+  VdbGridToWrite density, temperature;
+  density.name = "density";
+  temperature.name = "temperature";
+  for (VdbGridToWrite* g : {&density, &temperature}) {
+    g->dims = {kSide, kSide, kSide};
+    g->voxel_size = {0.1, 0.1, 0.1};
+  }
+  const auto inside = [](int i) { return i >= kMargin && i < kSide - kMargin; };
+  for (int z = 0; z < kSide; ++z)
+    for (int y = 0; y < kSide; ++y)
+      for (int x = 0; x < kSide; ++x) {
+        const bool in = inside(x) && inside(y) && inside(z);
+        density.values.push_back(in ? 1.0f : 0.0f);
+        temperature.values.push_back(in ? float(kelvin) : 0.0f);
+      }
+  return {density, temperature};
+}
+
 }  // namespace pyro

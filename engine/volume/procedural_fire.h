@@ -38,4 +38,11 @@ struct ProceduralFireOptions {
 // The base's centre is at the world origin (index box from 0, translated).
 std::vector<VdbGridToWrite> make_procedural_fire(const ProceduralFireOptions& options = {});
 
+// A calibration volume for renderers of fire: a cube of density 1 at one temperature `kelvin`,
+// 12 voxels on a side in a grid of 16 (voxel size 0.1, two empty voxels around it), as grids
+// "density" and "temperature" (kelvin, so larger than 10). Every line of sight through it meets one
+// temperature, so two renderers that agree on a black body's colour render it in that colour
+// alone (pyro bench cycles-fire; tools/make_sample_volume --fire-box KELVIN writes it).
+std::vector<VdbGridToWrite> make_uniform_fire_box(double kelvin);
+
 }  // namespace pyro

@@ -1,10 +1,13 @@
 // make_sample_volume [--seed N] [--width N] [--voxel-size S] [--half] [--fire [--kelvin]] --out FILE.vdb
+// make_sample_volume --fire-box KELVIN --out FILE.vdb
 // Writes the project's own procedural cloud (engine/volume/procedural_cloud.h) as an OpenVDB float
 // fog volume named "density" through engine/io's writer, so this file never sees OpenVDB's
 // headers. With --fire it writes the project's fire instead (engine/volume/procedural_fire.h): a
 // Mantaflow-like cache frame with "density" and "temperature" (normalised heat, or kelvin with
 // --kelvin); --width is then the plume's width in voxels (default 20). The committed content/volumes/sample_cloud.vdb is this tool's output with the defaults
 // (`cmake --build build --target regenerate_sample_volume`); a test checks that they agree.
+// --fire-box writes the fire renderers' calibration cube instead (engine/volume/procedural_fire.h,
+// make_uniform_fire_box): density 1 at one temperature in kelvin.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -20,7 +23,8 @@ int usage(const char* why) {
   std::fprintf(stderr,
                "make_sample_volume: %s\n"
                "usage: make_sample_volume [--seed N] [--width N] [--voxel-size S] [--half] [--fire [--kelvin]] "
-               "--out FILE.vdb\n",
+               "--out FILE.vdb\n"
+               "       make_sample_volume --fire-box KELVIN --out FILE.vdb\n",
                why);
   return 2;
 }
@@ -53,6 +57,7 @@ int main(int argc, char** argv) {
   pyro::ProceduralCloudOptions opt;
   std::string out;
   bool half = false, fire = false, kelvin = false, width_given = false;
+  double box_kelvin = 0.0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
@@ -76,13 +81,23 @@ int main(int argc, char** argv) {
       fire = true;
     } else if (a == "--kelvin") {
       kelvin = true;
+    } else if (a == "--fire-box" && has_value) {
+      box_kelvin = std::strtod(argv[++i], &end);
+      if (*end != '\0' || !(box_kelvin > 10.0 && box_kelvin <= 1e6))
+        return usage("--fire-box expects a temperature in kelvin in (10, 1e6]");
     } else {
       return usage(("unexpected argument \"" + a + "\"").c_str());
     }
   }
   if (out.empty()) return usage("--out FILE.vdb is required");
   if (kelvin && !fire) return usage("--kelvin applies to --fire");
+  if (box_kelvin > 0.0 && (fire || half)) return usage("--fire-box takes no --fire or --half");
   try {
+    if (box_kelvin > 0.0) {
+      pyro::write_vdb_grids(out, pyro::make_uniform_fire_box(box_kelvin));
+      std::printf("{\"out\": \"%s\", \"kelvin\": %g}\n", out.c_str(), box_kelvin);
+      return 0;
+    }
     if (fire) return write_fire(out, opt, width_given, kelvin, half);
     const pyro::DenseGrid g = pyro::make_procedural_cloud(opt);
     const glm::dvec4 t = g.index_to_world[3];

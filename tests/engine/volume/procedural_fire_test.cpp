@@ -74,6 +74,24 @@ TEST(ProceduralFire, TheSmokeIsAPlumeThatWidensAsItRisesClearOfTheSides) {
   EXPECT_GT(top, 1.15 * middle) << "mid-height " << middle << ", top " << top;
 }
 
+TEST(ProceduralFire, TheCalibrationBoxIsOneTemperatureInsideTwoEmptyVoxels) {
+  const std::vector<VdbGridToWrite> g = make_uniform_fire_box(1750.0);
+  ASSERT_EQ(g.size(), 2u);
+  EXPECT_EQ(g[0].name, "density");
+  EXPECT_EQ(g[1].name, "temperature");
+  size_t inside = 0;
+  for (int z = 0; z < 16; ++z)
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x) {
+        const size_t i = (size_t(z) * 16 + y) * 16 + x;
+        const bool in = x >= 2 && x < 14 && y >= 2 && y < 14 && z >= 2 && z < 14;
+        EXPECT_EQ(g[0].values[i], in ? 1.0f : 0.0f);
+        EXPECT_EQ(g[1].values[i], in ? 1750.0f : 0.0f);
+        inside += in;
+      }
+  EXPECT_EQ(inside, 12u * 12u * 12u);
+}
+
 TEST(ProceduralFire, TheCommittedSampleIsTheGeneratorsOutput) {
   ProceduralFireOptions o;
   o.velocity = false;
