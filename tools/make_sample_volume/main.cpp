@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "engine/core/user_error.h"
+#include "engine/io/output_gate.h"
 #include "engine/volume/procedural_cloud.h"
 #include "engine/volume/procedural_fire.h"
 
@@ -93,6 +94,9 @@ int main(int argc, char** argv) {
   if (kelvin && !fire) return usage("--kelvin applies to --fire");
   if (box_kelvin > 0.0 && (fire || half)) return usage("--fire-box takes no --fire or --half");
   try {
+    // The one gate (engine/io/output_gate.h): --out is a regular file or absent, in a folder that
+    // exists and takes writes; never a device, a FIFO or a folder.
+    pyro::OutputGate().writes_file(out, "--out").check();
     if (box_kelvin > 0.0) {
       pyro::write_vdb_grids(out, pyro::make_uniform_fire_box(box_kelvin));
       std::printf("{\"out\": \"%s\", \"kelvin\": %g}\n", out.c_str(), box_kelvin);
