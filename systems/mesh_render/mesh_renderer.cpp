@@ -206,7 +206,7 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
   glUniformMatrix4fv(gpu::uniform_location(program, "u_view_projection"), 1, GL_FALSE,
                      glm::value_ptr(frame.view_projection));
   lights.bind();
-  bind_shadows(program, shadows);
+  opacity_map_.bind(program, shadows);
   mesh_shadow_.bind(program, mesh_shadow);
   const GLint model = gpu::uniform_location(program, "u_model");
   const GLint rotation = gpu::uniform_location(program, "u_rotation");
@@ -231,30 +231,6 @@ void MeshRenderer::draw_meshes(const std::vector<MeshInstance>& instances,
   glFrontFace(GL_CCW);
   glBindVertexArray(0);
   if (srgb_writes) glEnable(GL_FRAMEBUFFER_SRGB);
-}
-
-void MeshRenderer::bind_shadows(const gpu::Program& program, const ShadowVolume* shadows) {
-  const bool shadowed = shadows && !shadows->empty();
-  glUniform1i(gpu::uniform_location(program, "u_shadowed"), shadowed ? 1 : 0);
-  if (!shadowed) return;
-  if (shadows->version != shadow_version_) {
-    if (!shadow_texture_ || shadow_size_ != shadows->size) {
-      shadow_texture_ = gpu::make_texture(GL_TEXTURE_3D);
-      glTextureStorage3D(shadow_texture_.get(), 1, GL_R32F, shadows->size.x, shadows->size.y, shadows->size.z);
-      glTextureParameteri(shadow_texture_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-      glTextureParameteri(shadow_texture_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-        glTextureParameteri(shadow_texture_.get(), wrap, GL_CLAMP_TO_EDGE);
-      shadow_size_ = shadows->size;
-    }
-    glTextureSubImage3D(shadow_texture_.get(), 0, 0, 0, 0, shadows->size.x, shadows->size.y,
-                        shadows->size.z, GL_RED, GL_FLOAT, shadows->optical_depth.data());
-    shadow_version_ = shadows->version;
-  }
-  glBindTextureUnit(1, shadow_texture_.get());
-  glUniform1i(gpu::uniform_location(program, "u_shadow_map"), 1);
-  glUniformMatrix4fv(gpu::uniform_location(program, "u_world_to_shadow"), 1, GL_FALSE,
-                     glm::value_ptr(shadows->world_to_texture));
 }
 
 }  // namespace pyro

@@ -16,6 +16,7 @@
 #include "engine/mesh/mesh_data.h"
 #include "systems/lighting/light_buffer.h"
 #include "systems/lighting/mesh_shadow_texture.h"
+#include "systems/lighting/opacity_map_texture.h"
 
 namespace pyro {
 
@@ -54,8 +55,6 @@ class MeshRenderer {
   void draw_meshes(const std::vector<MeshInstance>& instances, const CameraFrame& frame,
                    const RenderSettings& settings, const LightBuffer& lights,
                    const gpu::RenderTarget& target, const ShadowVolume* shadows, const MeshShadow* mesh_shadow);
-  // Sets the shadow uniforms of `program`, uploading `shadows` when it changed.
-  void bind_shadows(const gpu::Program& program, const ShadowVolume* shadows);
   // The GL state a draw leaves, set again after a copy.
   void leave_state(bool meshes, const RenderSettings& settings,
                    const gpu::RenderTarget& target) const;
@@ -76,9 +75,7 @@ class MeshRenderer {
   std::map<std::pair<bool, int>, gpu::Program> fire_programs_;
   const gpu::Program& program_for(bool encode, int fire_lights);
   std::map<uint64_t, GpuMesh> meshes_;  // by SharedMesh::id
-  gpu::Texture shadow_texture_;
-  glm::ivec3 shadow_size_{0};
-  uint64_t shadow_version_ = ~uint64_t(0);
+  OpacityMapTexture opacity_map_;
   MeshShadowTexture mesh_shadow_;
 };
 
