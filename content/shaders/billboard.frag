@@ -3,19 +3,24 @@
 // the kernel texture holds the scaled footprint table, the colour is the particle's own.
 // Output is premultiplied; blending is (ONE, ONE_MINUS_SRC_ALPHA), back to front.
 //
-// LIT 1 and LIT 2: the colour is the albedo times the light reaching the fragment's point p = centre +
-// offset (where the pixel's ray passes closest to the centre):
+// LIT 1 and LIT 2: the colour is the albedo times the light reaching the point p where the eye
+// sees the particle along the pixel's ray (its closest approach to the centre for a thin particle,
+// nearer the eye for a dense one: splat_sunlight_seen):
 //   L = key radiance x sunlight(p) + ambient (+ LIT 2: the fire lights' light at the centre,
 //   billboard.vert),
-// sunlight the sun's scattering toward the eye with the particle's own shadow
-// (splat_sunlight.glsl). SUNLIGHT_AT_VERTICES: sunlight comes interpolated from the billboard's
-// corners, a plane through its value at the centre (billboard.vert); otherwise each fragment
-// evaluates it.
+// sunlight the sun's scattering toward the eye through the optical depth at p: with the map
+// method the opacity map's, read at p (u_shadowed); otherwise the others' depth linearized about
+// the centre plus the particle's own (splat_sunlight.glsl). SUNLIGHT_AT_VERTICES: sunlight comes
+// interpolated from the billboard's corners, a plane through its value at the centre
+// (billboard.vert); otherwise each fragment evaluates it.
 #ifndef LIT
 #define LIT 0
 #endif
 #ifndef SUNLIGHT_AT_VERTICES
 #define SUNLIGHT_AT_VERTICES 0
+#endif
+#ifndef THICK_PARTICLES
+#define THICK_PARTICLES 0
 #endif
 in vec2 v_texcoord;
 flat in vec4 v_premultiplied;
@@ -34,11 +39,20 @@ flat in vec4 v_others_depth;
 in vec3 v_offset;
 flat in vec3 v_key_toward;
 #define SPLAT_KEY_TOWARD v_key_toward
-#if LIT == 2
-// The eye - the centre: mu, the sunlight's direction of travel . the way to the eye, is each
-// fragment's own, from its point p = centre + offset, as the reference takes it along each pixel's
-// ray; one mu per particle would spread a narrow lobe (g near +-1) over the whole billboard.
+// The eye - the centre: the pixel's ray, and (LIT 2) mu, the sunlight's direction of travel . the
+// way to the eye, each fragment's own, as the reference takes them along each pixel's ray; one mu
+// per particle would spread a narrow lobe (g near +-1) over the whole billboard.
 flat in vec3 v_eye_from_centre;
+// The map method's opacity map (systems/lighting/opacity_map_texture.h, the transmittance).
+flat in vec3 v_centre;
+uniform int u_shadowed;
+uniform sampler3D u_shadow_map;
+uniform mat4 u_world_to_shadow;
+#if THICK_PARTICLES
+#define SPLAT_SUNLIGHT_MAP
+#endif
+#define SPLAT_CENTRE v_centre
+#if LIT == 2
 uniform int u_octaves;        // 1: single scattering
 uniform vec4 u_scattering;    // Henyey-Greenstein g; the octaves' a, b, c
 #include "sun_scattering.glsl"
@@ -58,13 +72,24 @@ void main() {
 #if SUNLIGHT_AT_VERTICES
   float sunlight = max(v_sunlight, 0.0);
 #else
-#if LIT == 2
+  // THICK_PARTICLES, for a draw that holds a particle whose optical depth through the centre is 1
+  // or more (the renderer's choice): every particle is lit where the eye sees it along the pixel's
+  // ray (splat_sunlight_seen). Otherwise each is lit at the fragment's point on the billboard,
+  // nearly where the ray passes closest to its centre, from the others' depth linearized about the
+  // centre and its own. A branch per particle would cost the thin ones as much: a software
+  // rasteriser runs both sides of it for every fragment.
   vec3 to_eye = v_eye_from_centre - v_offset;
   float to_eye2 = dot(to_eye, to_eye);
+#if LIT == 2
   float mu = to_eye2 > 0.0 ? -dot(v_key_toward, to_eye) * inversesqrt(to_eye2) : 1.0;
-  float sunlight = splat_sunlight(v_offset, v_others_depth, v_self, mu);
 #else
-  float sunlight = splat_sunlight(v_offset, v_others_depth, v_self, 1.0);
+  float mu = 1.0;
+#endif
+#if THICK_PARTICLES
+  vec3 ray = to_eye2 > 0.0 ? -to_eye * inversesqrt(to_eye2) : -v_key_toward;
+  float sunlight = splat_sunlight_seen(v_offset - ray * dot(v_offset, ray), ray, tau0 * footprint, v_others_depth, v_self, mu);
+#else
+  float sunlight = splat_sunlight(v_offset, v_others_depth, v_self, mu);
 #endif
 #endif
 #if LIT == 2

@@ -40,9 +40,12 @@ out vec3 v_offset;        // the fragment's place on the billboard, from the cen
 // is its irradiance over 4 pi: systems/runtime/reference/lit_particle_reference.h).
 #include "lights.glsl"
 #endif
+#if LIT
+flat out vec3 v_eye_from_centre;  // the eye - the centre: each fragment's own ray (billboard.frag)
+flat out vec3 v_centre;
+#endif
 #if LIT == 2
 flat out float v_view_cosine;  // mu: the sunlight's direction of travel . the way to the eye
-flat out vec3 v_eye_from_centre;  // the eye - the centre: each fragment's own mu (billboard.frag)
 flat out vec3 v_fire;          // the fire lights' light scattered at the centre toward the eye
 uniform vec4 u_scattering;     // Henyey-Greenstein g; the octaves' a, b, c (billboard.frag)
 uniform int u_octaves;         // 1: single scattering
@@ -104,12 +107,13 @@ void main() {
   v_key_radiance = key_radiance();
   v_ambient = ambient_light();
   v_key_toward = key_toward();
+  v_eye_from_centre = u_eye - center;
+  v_centre = center;
 #endif
 #if LIT == 2
   vec3 to_eye = u_eye - center;
   vec3 eye_way = length(to_eye) > 0.0 ? normalize(to_eye) : vec3(0.0);
   v_view_cosine = length(to_eye) > 0.0 ? -dot(key_toward(), eye_way) : 1.0;
-  v_eye_from_centre = to_eye;
 #else
   float v_view_cosine = 1.0;
 #endif

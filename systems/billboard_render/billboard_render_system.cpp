@@ -180,6 +180,7 @@ std::optional<SplatLighting> splat_lighting(ecs::World& world, const EyeDrawList
   s.self_shadow = shadows->method != ShadowMethod::none;
   s.sunlight = shadows->splat_sunlight;
   s.scattering = shadows->scattering;
+  if (shadows->method == ShadowMethod::shadow_map) s.map = world.try_resource<const ShadowVolume>();
   return s;
 }
 
@@ -267,7 +268,7 @@ ecs::SystemDesc billboard_render_system() {
           .phase = ecs::Phase::render,
           .access = ecs::Access::of<
               ecs::Reads<EyeDrawLists, View, RenderSettings, LightBuffer, FrameClock,
-                         ExplosionShading, AnisotropicCloud, ParticleSet, ParticleKind, ParticleLight, SortScratch, ShadowSettings,
+                         ExplosionShading, AnisotropicCloud, ParticleSet, ParticleKind, ParticleLight, SortScratch, ShadowSettings, ShadowVolume,
                          FireLights, MeshShadow>,
               ecs::Writes<GpuFrame, SortDeviceChoice>, Renderers>(),
           .run = draw_billboards,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -106,6 +107,15 @@ void copy_ids(const std::vector<const ParticlePool*>& pools, uint32_t* ids) {
   }
 }
 
+// Whether a particle's optical depth through its centre, -ln(1 - rho), is at least 1
+// (billboard.frag, THICK_PARTICLES).
+bool any_thick(const std::vector<const ParticlePool*>& pools) {
+  const float thick = float(-std::expm1(-1.0));
+  for (const ParticlePool* p : pools)
+    if (std::any_of(p->density.begin(), p->density.end(), [&](float rho) { return rho >= thick; })) return true;
+  return false;
+}
+
 std::size_t particles_in(const std::vector<const ParticlePool*>& pools) {
   std::size_t particles = 0;
   for (const ParticlePool* p : pools) particles += p->size();
@@ -139,6 +149,7 @@ void BillboardRenderer::upload(const DrawList& list, const std::vector<const Par
   }
   const std::size_t shadow_offset = record_bytes + aligned(order_bytes);
   if (lit) pack_shadow(pools, *lighting, reinterpret_cast<glm::vec4*>(slot + shadow_offset));
+  thick_ = lit && any_thick(pools);
   copy_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   bytes_ += 2 * particles * sizeof(glm::vec4) + order_bytes + shadow_bytes;
   const auto offset = static_cast<GLintptr>(ring_.offset());
@@ -156,7 +167,13 @@ void BillboardRenderer::upload(const DrawList& list, const std::vector<const Par
 const gpu::Program& BillboardRenderer::lit_program(const SplatLighting& lighting) const {
   const bool fire = lighting.scene->block().counts.y > 0;
   const bool scattering = fire || !(lighting.scattering == SunScattering{});
-  if (lighting.sunlight == SplatSunlight::fragments) return scattering ? scattering_program_ : lit_program_;
+  if (lighting.sunlight == SplatSunlight::fragments) {
+    if (!thick_) return scattering ? scattering_program_ : lit_program_;
+    std::optional<gpu::Program>& thick = scattering ? scattering_thick_program_ : lit_thick_program_;
+    if (!thick)
+      thick.emplace(gpu::load_program("billboard.vert", "billboard.frag", {scattering ? "LIT 2" : "LIT 1", "THICK_PARTICLES 1"}));
+    return *thick;
+  }
   std::optional<gpu::Program>& program = scattering ? scattering_vertex_program_ : lit_vertex_program_;
   if (!program)
     program.emplace(gpu::load_program("billboard.vert", "billboard.frag",
@@ -164,13 +181,14 @@ const gpu::Program& BillboardRenderer::lit_program(const SplatLighting& lighting
   return *program;
 }
 
-void BillboardRenderer::set_lighting_uniforms(const SplatLighting& lighting) const {
+void BillboardRenderer::set_lighting_uniforms(const SplatLighting& lighting) {
   const gpu::Program& program = lit_program(lighting);
   lighting.scene->bind();
   set_scattering_uniforms(program, lighting.self_shadow, lighting.scattering);
   std::array<float, kTailPolynomialTerms> tail;
   for (size_t k = 0; k < tail.size(); ++k) tail[k] = float(tail_polynomial_[k]);
   glUniform1fv(gpu::uniform_location(program, "u_tail_polynomial"), GLsizei(tail.size()), tail.data());
+  if (lighting.sunlight == SplatSunlight::fragments && thick_) sunlight_map_.bind(program, lighting.map);
 }
 
 void BillboardRenderer::order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools) {

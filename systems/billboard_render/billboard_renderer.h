@@ -9,6 +9,7 @@
 #include "components/draw_list.h"
 #include "components/particle_light.h"
 #include "components/shadow_settings.h"
+#include "components/shadow_volume.h"
 #include "systems/runtime/scene/scene_description.h"
 #include "engine/gpu/buffer_range.h"
 #include "engine/gpu/gl_objects.h"
@@ -21,6 +22,7 @@
 #include "systems/billboard_render/instance_buffer.h"  // UploadCost
 #include "systems/gpu_sorting/gpu_depth_sort.h"
 #include "systems/lighting/light_buffer.h"
+#include "systems/lighting/opacity_map_texture.h"
 
 namespace pyro {
 
@@ -35,6 +37,9 @@ struct SplatLighting {
   bool self_shadow = true;  // false: lit without shadows
   SplatSunlight sunlight = SplatSunlight::fragments;  // where the sunlight is evaluated
   SunScattering scattering;  // the phase lobe and octaves (engine/math/scattering_octaves.h)
+  // The light phase's opacity map (the map method): the fragments read the sunlight's depth from
+  // it at each point they light (billboard.frag); null: from the particles' others' depth.
+  const ShadowVolume* map = nullptr;
 };
 
 // CPU time of the particle pass since the last reset_cost(): packing the particles and copying
@@ -84,6 +89,11 @@ class BillboardRenderer {
   // (SplatSunlight::vertices) is compiled on first use.
   gpu::Program kernel_program_, trivial_program_, lit_program_, scattering_program_;
   mutable std::optional<gpu::Program> lit_vertex_program_, scattering_vertex_program_;
+  // With a thick particle among the last upload's (optical depth through its centre >= 1,
+  // billboard.frag's THICK_PARTICLES), the fragments' programs that light thick particles where
+  // the eye sees them, compiled on first use. Only a draw that holds one pays for them.
+  mutable std::optional<gpu::Program> lit_thick_program_, scattering_thick_program_;
+  bool thick_ = false;
   gpu::Texture kernel_texture_;
   // The lit program's self-shadow: gaussian_tail_polynomial's coefficients.
   std::array<double, kTailPolynomialTerms> tail_polynomial_ = gaussian_tail_polynomial();
@@ -96,7 +106,7 @@ class BillboardRenderer {
               const SplatLighting* lighting = nullptr);
   // The lit program's uniforms.
   const gpu::Program& lit_program(const SplatLighting& lighting) const;
-  void set_lighting_uniforms(const SplatLighting& lighting) const;
+  void set_lighting_uniforms(const SplatLighting& lighting);
   // The last upload's particles ordered by gpu_sort_ (made on first use).
   void order_on_gpu(const DrawList& list, const std::vector<const ParticlePool*>& pools);
 
@@ -105,6 +115,7 @@ class BillboardRenderer {
   std::unique_ptr<GpuDepthSort> gpu_sort_;
 
   gpu::MappedRing ring_;
+  OpacityMapTexture sunlight_map_{OpacityMapHolds::transmittance};
   gpu::VertexArray empty_vao_ = gpu::make_vertex_array();
   double copy_ms_ = 0.0, draw_call_ms_ = 0.0;
   std::size_t bytes_ = 0;

@@ -35,10 +35,12 @@ void OpacityMapTexture::upload(const ShadowVolume& map) {
 void OpacityMapTexture::bind(const gpu::Program& program, const ShadowVolume* map) {
   const bool shadowed = map && !map->empty();
   glUniform1i(gpu::uniform_location(program, "u_shadowed"), shadowed ? 1 : 0);
+  // The sampler's unit is set even when nothing is bound: left at 0, it would share unit 0 with
+  // a sampler of another type, and GL refuses to draw with such a program.
+  glUniform1i(gpu::uniform_location(program, "u_shadow_map"), 1);
   if (!shadowed) return;
   if (map->version != version_) upload(*map);
   glBindTextureUnit(1, texture_.get());
-  glUniform1i(gpu::uniform_location(program, "u_shadow_map"), 1);
   glUniformMatrix4fv(gpu::uniform_location(program, "u_world_to_shadow"), 1, GL_FALSE,
                      glm::value_ptr(map->world_to_texture));
 }

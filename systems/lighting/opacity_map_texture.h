@@ -23,7 +23,8 @@ class OpacityMapTexture {
  public:
   explicit OpacityMapTexture(OpacityMapHolds holds = OpacityMapHolds::optical_depth) : holds_(holds) {}
 
-  // Sets `program`'s uniforms (in use) and binds the texture; null or empty: unshadowed.
+  // Sets `program`'s uniforms (in use) and binds the texture; null or empty: unshadowed
+  // (u_shadowed 0, the sampler still on unit 1).
   void bind(const gpu::Program& program, const ShadowVolume* map);
 
  private:
