@@ -47,6 +47,8 @@ ChartTable make_chart(const ChartRunOptions& a) {
   refuse_unused(a, renders,
                 a.name == "billboard-modes" || a.name == "layer-resolution" ||
                     a.name == "shadows" || a.name == "scattering");
+  if (a.density && a.name != "shadows")
+    throw UserError("command line", "--density", "only the shadows chart has it, not the " + a.name + " chart");
   if (a.name == "footprint") return chart_footprint({});
   if (a.name == "integrators") return chart_integrators({});
   if (a.name == "billboard-modes") {
@@ -60,6 +62,12 @@ ChartTable make_chart(const ChartRunOptions& a) {
     override_size(o, a);
     if (a.frames > 0) o.frames = a.frames;
     return chart_layer_resolution(o);
+  }
+  if (a.name == "shadows" && a.density) {
+    ShadowDensityChartOptions o;
+    override_size(o, a);
+    if (a.frames > 0) o.frames = a.frames;
+    return chart_shadow_density(o);
   }
   if (a.name == "shadows") {
     ShadowsChartOptions o;
@@ -144,7 +152,7 @@ ChartReport run_chart(const ChartRunOptions& a) {
   const fs::path png = out_dir / (table.name + ".png");
   write_text_file(csv.string(), chart_csv(table));
   if (!a.csv_only)
-    run_plot_script("plot_pareto.py", {csv.string(), png.string()},
+    run_plot_script(a.density ? "plot_density.py" : "plot_pareto.py", {csv.string(), png.string()},
                     "; the CSV file is written: " + csv.string());
   nlohmann::json points = nlohmann::json::array();
   for (const ChartTable::Row& row : table.rows)

@@ -13,6 +13,7 @@ struct ChartRunOptions {
   std::string name, out;
   int width = 0, height = 0, frames = 0;  // 0: the chart's default
   bool csv_only = false;
+  bool density = false;  // shadows only: against the medium's density (chart_shadow_density)
   ProgressSink* progress = nullptr;
 };
 

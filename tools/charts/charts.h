@@ -55,6 +55,19 @@ struct ShadowsChartOptions {
 };
 ChartTable chart_shadows(const ShadowsChartOptions& options);
 
+// The same methods on content/scenes/clouds.json's cumulus with 10,000 particles at each density
+// (`pyro chart shadows --density`): the error against the reference as the optical depth across
+// one particle grows, each row's extra columns its density and tau0; the summary names, per
+// setting, the first density whose error exceeds `target` (null: none does).
+struct ShadowDensityChartOptions {
+  std::vector<double> densities{0.4, 0.7, 0.9, 0.99, 1.0};  // ascending
+  std::vector<int> map_sizes{32, 64, 128};
+  int width = 160, height = 90;
+  int frames = 5;  // timed frames per setting
+  double target = 0.03;
+};
+ChartTable chart_shadow_density(const ShadowDensityChartOptions& options);
+
 // The octave approximation of multiple scattering (engine/math/scattering_octaves.h) with each
 // count of octaves, drawn by the engine's lit splats (a grid imported once, relit by the light
 // phase) and timed, against the path-traced truth of the grid

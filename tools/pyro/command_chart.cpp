@@ -1,4 +1,4 @@
-// pyro chart NAME --out DIR [--width W] [--height H] [--frames N] [--csv-only] [--json]
+// pyro chart NAME --out DIR [--width W] [--height H] [--frames N] [--density] [--csv-only] [--json]
 // One chart per command: time (x) against error (y), one point per setting, the Pareto front
 // marked (the scale chart: ms against particles, log-log). The data come from
 // tools/charts/chart_<name>.cpp (charts.h), written and drawn by tools/charts/chart_run.h.
@@ -35,6 +35,8 @@ void add_chart_command(CLI::App& app) {
       ->check(CLI::Range(16, 4096));
   cmd->add_option("--frames", a->options.frames, "Timed frames per point (billboard-modes, layer-resolution, scale)")
       ->check(CLI::Range(1, 10000));
+  cmd->add_flag("--density", a->options.density,
+                "shadows: each method on a cumulus that thickens, error against the particles' optical depth");
   cmd->add_flag("--csv-only", a->options.csv_only, "Write the CSV only (no matplotlib needed)");
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->callback([a] {

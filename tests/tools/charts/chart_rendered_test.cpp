@@ -95,6 +95,34 @@ TEST(ChartShadows, EverySettingAgainstTheReferenceWithShadowsHelp) {
   EXPECT_GT(t.rows[1].extra[0], t.rows[0].extra[0]);  // rays cost the light phase more than none
 }
 
+TEST(ChartShadows, AgainstDensityTheErrorGrowsWithoutShadowsAndTheMapLeavesTheTargetLast) {
+  ShadowDensityChartOptions o;
+  o.densities = {0.4, 1.0};
+  o.map_sizes = {64};
+  o.width = 64;
+  o.height = 36;
+  o.frames = 1;
+  const ChartTable t = chart_shadow_density(o);
+  ASSERT_EQ(t.rows.size(), 6u);  // none, rays, the map at each density
+  EXPECT_EQ(t.rows[2].label, "rho 0.4 map 64x32");
+  EXPECT_EQ(t.rows[3].front, "rho 1");
+  EXPECT_NEAR(t.rows[3].extra[1], -std::log(1e-12), 1e-6);  // tau0 as the splats clamp it
+  EXPECT_NEAR(t.rows[0].extra[1], -std::log(0.6), 1e-12);
+  // Lit without shadows, a thicker medium is further from the reference; the map is closer than
+  // none at either density.
+  EXPECT_GT(t.rows[3].error, t.rows[0].error);
+  for (int k : {0, 3}) EXPECT_LT(t.rows[k + 2].error, t.rows[k].error) << t.rows[k].label;
+  // Where each leaves the target is read off the rows: none past it already at 0.4.
+  const nlohmann::json& leaves = t.summary["leaves_target"];
+  EXPECT_EQ(leaves["none"], 0.4);
+  for (const auto& r : t.rows) {
+    EXPECT_GT(r.time, 0.0) << r.label;
+    if (r.error <= o.target) {
+      EXPECT_TRUE(leaves[r.group].is_null() || leaves[r.group].get<double>() > r.extra[0]) << r.label;
+    }
+  }
+}
+
 TEST(ChartScattering, OctavesComeCloserToThePathTracedTruthThanOne) {
   ScatteringChartOptions o;
   o.octaves = {1, 4};

@@ -52,6 +52,10 @@ TEST(PyroChartCli, AnOptionTheChartDoesNotUseIsRefused) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--frames"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+  const CommandResult density = run_pyro({"chart", "footprint", "--density", "--out", (dir / "out").string()});
+  EXPECT_EQ(density.exit_code, 2);
+  EXPECT_NE(density.err.find("--density"), std::string::npos) << density.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
 }  // namespace
