@@ -21,12 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 // Nine significant digits, never in exponent form when negative: Python's argparse takes
 // "-2.4e-07" for an option (it knows negative numbers only as -D, -D.D or -.D).
 std::string num(double v) {
@@ -61,8 +55,8 @@ RgbImage read_pfm(const fs::path& path, int width, int height) {
 std::string cycles_command(const CyclesRequest& r, const fs::path& out) {
   const VolumeMedium& m = r.medium;
   std::vector<std::pair<const char*, std::string>> args = {
-      {"--vdb", quoted(r.vdb)},
-      {"--grid", quoted(r.grid)},
+      {"--vdb", shell_quoted(r.vdb)},
+      {"--grid", shell_quoted(r.grid)},
       {"--extinction", num(m.extinction)},
       {"--albedo", num(m.albedo)},
       {"--anisotropy", num(r.anisotropy)},
@@ -78,18 +72,23 @@ std::string cycles_command(const CyclesRequest& r, const fs::path& out) {
       {"--samples", std::to_string(r.samples)},
       {"--bounces", std::to_string(r.bounces)},
       {"--seed", std::to_string(r.seed)},
-      {"--out", quoted(out.string())}};
+      {"--out", shell_quoted(out.string())}};
   if (!r.temperature_grid.empty()) {
-    args.emplace_back("--temperature-grid", quoted(r.temperature_grid));
-    args.emplace_back("--emission-grid", quoted(r.emission_grid));
+    args.emplace_back("--temperature-grid", shell_quoted(r.temperature_grid));
+    args.emplace_back("--emission-grid", shell_quoted(r.emission_grid));
   }
-  std::string cmd =
-      quoted(r.blender) + " -b --factory-startup --python " + quoted(content_path("cycles/render_volume.py")) + " --";
+  std::string cmd = blender_script_command(r.blender, "cycles/render_volume.py");
   for (const auto& [flag, value] : args) cmd += std::string(" ") + flag + " " + value;
   return cmd;
 }
 
 }  // namespace
+
+std::string shell_quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
 
 bool program_exists(const std::string& program) {
   if (program.find('/') != std::string::npos) return access(program.c_str(), X_OK) == 0;
@@ -100,15 +99,13 @@ bool program_exists(const std::string& program) {
   return false;
 }
 
-CyclesRender render_with_cycles(const CyclesRequest& r, const fs::path& scratch,
-                                const std::function<void(const std::string&)>& on_note) {
-  const fs::path out = scratch / ("cycles_" + std::to_string(r.seed) + ".pfm"), log = scratch / "cycles.log";
-  const std::string cmd = cycles_command(r, out);
+CyclesRender run_cycles(const std::string& cmd, const fs::path& out, int width, int height, const fs::path& log,
+                        const std::function<void(const std::string&)>& on_note) {
   const auto t = std::chrono::steady_clock::now();
-  const int status = std::system((cmd + " > " + quoted(log.string()) + " 2>&1").c_str());
+  const int status = std::system((cmd + " > " + shell_quoted(log.string()) + " 2>&1").c_str());
   CyclesRender result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  if (status == 0) result.image = read_pfm(out, r.width, r.height);
+  if (status == 0) result.image = read_pfm(out, width, height);
   if (result.image.rgb.empty() && on_note) {
     std::ifstream in(log);
     std::stringstream text;
@@ -116,6 +113,16 @@ CyclesRender render_with_cycles(const CyclesRequest& r, const fs::path& scratch,
     on_note("Cycles failed (status " + std::to_string(status) + "): " + cmd + "\n" + text.str().substr(0, 2000));
   }
   return result;
+}
+
+CyclesRender render_with_cycles(const CyclesRequest& r, const fs::path& scratch,
+                                const std::function<void(const std::string&)>& on_note) {
+  const fs::path out = scratch / ("cycles_" + std::to_string(r.seed) + ".pfm");
+  return run_cycles(cycles_command(r, out), out, r.width, r.height, scratch / "cycles.log", on_note);
+}
+
+std::string blender_script_command(const std::string& blender, const std::string& script) {
+  return shell_quoted(blender) + " -b --factory-startup --python " + shell_quoted(content_path(script)) + " --";
 }
 
 std::array<double, 3> axis_voxel_sizes(const GridHeader& grid) {

@@ -15,6 +15,9 @@
 
 namespace pyro {
 
+// `s` quoted for the shell.
+std::string shell_quoted(const std::string& s);
+
 // Whether `program` runs: a path to an executable file, or a name found on PATH.
 bool program_exists(const std::string& program);
 
@@ -42,6 +45,14 @@ struct CyclesRender {
 // tells `on_note` the command and the head of the log.
 CyclesRender render_with_cycles(const CyclesRequest& request, const std::filesystem::path& scratch,
                                 const std::function<void(const std::string&)>& on_note);
+
+// The command line that runs content/`script` in Blender headless, up to its "--".
+std::string blender_script_command(const std::string& blender, const std::string& script);
+
+// Runs `command` (its output to `log`) and reads the colour PFM it writes at `out` (width x height).
+// A failed run returns an empty image and tells `on_note` the command and the head of the log.
+CyclesRender run_cycles(const std::string& command, const std::filesystem::path& out, int width, int height,
+                        const std::filesystem::path& log, const std::function<void(const std::string&)>& on_note);
 
 // The voxel size along each index axis of a grid whose index-to-world map is a scale along the
 // axes and a translation. Throws UserError naming the grid's file for a rotated map (the Cycles
