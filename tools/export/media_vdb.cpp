@@ -23,6 +23,7 @@ std::vector<VdbGridToWrite> media_vdb_grids(const MediaVoxels& voxels) {
   grids.push_back(grid_of(voxels, "density", voxels.density, false));
   if (!voxels.temperature.empty()) grids.push_back(grid_of(voxels, "temperature", voxels.temperature, false));
   if (!voxels.color.empty()) grids.push_back(grid_of(voxels, "color", voxels.color, true));
+  if (!voxels.emission.empty()) grids.push_back(grid_of(voxels, "emission", voxels.emission, true));
   return grids;
 }
 

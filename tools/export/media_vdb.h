@@ -3,7 +3,8 @@
 // write_vdb_grids, the one module that sees OpenVDB): "density", the extinction per world unit
 // (a float fog volume, what Houdini's and Blender's volume shaders multiply by their density
 // scale, 1 by default); "temperature" in kelvin, where the frame has fire; "color", linear RGB
-// (vec3s), where the particles' colours differ. Every grid has the voxels' transform (a uniform
+// (vec3s), where the particles' colours differ; "emission", the radiance emitted per unit length
+// (vec3s), when the voxels hold it (the Cycles comparison asks for it). Every grid has the voxels' transform (a uniform
 // scale, index (0, 0, 0) at the world origin) and only the voxels with density.
 #include <string>
 #include <vector>

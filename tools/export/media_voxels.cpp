@@ -43,6 +43,7 @@ struct Accumulators {
   MediaVoxels& out;
   std::vector<float>& temperature_sum;
   std::vector<float>& color_sum;
+  std::vector<float>& emission;
 };
 
 void add_sample(const MediaSample& s, const VoxelBox& box, int z0, int z1, Accumulators& acc) {
@@ -58,6 +59,8 @@ void add_sample(const MediaSample& s, const VoxelBox& box, int z0, int z1, Accum
         if (!acc.temperature_sum.empty()) acc.temperature_sum[i] += e * s.temperature;
         if (!acc.color_sum.empty())
           for (int c = 0; c < 3; ++c) acc.color_sum[3 * i + c] += e * s.color[c];
+        if (!acc.emission.empty())
+          for (int c = 0; c < 3; ++c) acc.emission[3 * i + c] += e * s.emission[c];
       }
 }
 
@@ -102,7 +105,8 @@ MediaVoxels voxelize_media(const std::vector<MediaSample>& samples, const VoxelB
   out.density.assign(box.voxels(), 0.0f);
   std::vector<float> temperature_sum(options.temperature ? box.voxels() : 0, 0.0f);
   std::vector<float> color_sum(options.color ? 3 * box.voxels() : 0, 0.0f);
-  Accumulators acc{out, temperature_sum, color_sum};
+  out.emission.assign(options.emission ? 3 * box.voxels() : 0, 0.0f);
+  Accumulators acc{out, temperature_sum, color_sum, out.emission};
   const int slabs = (box.dims[2] + kSlab - 1) / kSlab;
   tbb::parallel_for(tbb::blocked_range<int>(0, slabs), [&](const tbb::blocked_range<int>& r) {
     for (int slab = r.begin(); slab != r.end(); ++slab) {

@@ -30,6 +30,8 @@ struct MediaVoxels {
   std::vector<float> density;      // extinction per world unit, x fastest
   std::vector<float> temperature;  // kelvin where density > 0; empty unless asked for
   std::vector<float> color;        // 3 a voxel, linear RGB where density > 0; empty unless asked for
+  std::vector<float> emission;     // 3 a voxel: emitted radiance per unit length, the sum of each sample's
+                                   // extinction times its emission; empty unless asked for
 };
 
 // The box of voxels of side `voxel` over every sample's support (empty samples: an empty box).
@@ -38,6 +40,7 @@ VoxelBox media_box(const std::vector<MediaSample>& samples, double voxel);
 struct VoxelizeOptions {
   bool temperature = false;
   bool color = false;
+  bool emission = false;
 };
 
 // The samples on `box` (media_box's, or a larger one).

@@ -29,6 +29,7 @@ MediaSample pool_sample(const ParticlePool& p, std::size_t i, bool spheres) {
   s.color = {p.r[i], p.g[i], p.b[i]};
   s.temperature = p.temperature[i];
   s.fire = p.medium[i] == uint8_t(ParticleMedium::fire);
+  s.medium = ParticleMedium(p.medium[i]);
   s.detail = p.radius[i] / 3.0;
   return s;
 }
@@ -43,6 +44,7 @@ void append_clouds(ecs::World& world, std::vector<MediaSample>& out) {
       MediaSample s;
       s.field = ShadowCaster(g);
       s.color = g.color;
+      s.emission = g.emission;
       s.detail = std::min({g.scale.x, g.scale.y, g.scale.z});
       out.push_back(s);
     }

@@ -1,7 +1,7 @@
 // The export's voxels and their measured projection error (tools/export): a particle's mass is
 // kept, the grid's column depth through a Gaussian matches the closed form, the error falls as
 // the voxel shrinks, the chosen size meets its target and a coarse one does not, and colour and
-// temperature are the extinction-weighted means.
+// temperature are the extinction-weighted means, and emission per unit length their sum.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -77,6 +77,20 @@ TEST(MediaVoxels, ColourAndTemperatureAreExtinctionWeightedMeans) {
   EXPECT_NEAR(v.color[3 * centre + 0], 0.25f, 1e-5f);
   EXPECT_NEAR(v.color[3 * centre + 2], 0.75f, 1e-5f);
   EXPECT_NEAR(v.density[centre], a.field.k * 4.0, 1e-4 * a.field.k);
+}
+
+// Absorption plus emission (Max 1995): the radiance emitted per unit length is the sum of each
+// sample's extinction times its own emission, not a mean.
+TEST(MediaVoxels, EmissionIsTheSumOfExtinctionTimesEmission) {
+  MediaSample a = export_test_gaussian({0, 0, 0}, 0.6, 0.5), b = a;
+  a.emission = {2.0f, 1.0f, 0.0f};
+  b.field.k = 3.0 * a.field.k;
+  const MediaVoxels v = voxelize_media({a, b}, media_box({a, b}, 0.1), {false, false, true});
+  const size_t centre = v.box.at(-v.box.origin[0], -v.box.origin[1], -v.box.origin[2]);
+  EXPECT_NEAR(v.emission[3 * centre + 0], 2.0 * a.field.k, 1e-4 * a.field.k);
+  EXPECT_NEAR(v.emission[3 * centre + 1], 1.0 * a.field.k, 1e-4 * a.field.k);
+  EXPECT_EQ(v.emission[3 * centre + 2], 0.0f);
+  EXPECT_TRUE(voxelize_media({a}, media_box({a}, 0.1)).emission.empty());
 }
 
 TEST(MediaVoxels, ASpheresColumnIsTheBillboardsModel) {
