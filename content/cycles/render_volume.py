@@ -334,26 +334,31 @@ def add_blackbody_emission(obj, temperature_grid, emission_grid):
     links.new(both.outputs["Shader"], output.inputs["Volume"])
 
 
-def add_sun(direction, light_color):
-    """A delta sun whose light travels along `direction` with irradiance 4pi*colour."""
-    light = bpy.data.lights.new("pyro_sun", "SUN")
+def add_sun_light(name, direction, light_color, energy_per_color):
+    """A delta sun whose light travels along `direction`, of strength energy_per_color * colour."""
+    light = bpy.data.lights.new(name, "SUN")
     light.angle = 0.0
     peak = max(light_color)
     light.color = [c / peak for c in light_color] if peak > 0.0 else (1.0, 1.0, 1.0)
-    light.energy = SUN_ENERGY_PER_LIGHT_COLOR * peak
+    light.energy = energy_per_color * peak
     light.cycles.cast_shadow = True
     light.cycles.max_bounces = CYCLES_BOUNCE_LIMIT
-    sun = bpy.data.objects.new("pyro_sun", light)
+    sun = bpy.data.objects.new(name, light)
     bpy.context.scene.collection.objects.link(sun)
     # A Blender sun shines along its local -Z axis.
     travel = mathutils.Vector(direction).normalized()
     sun.rotation_mode = "QUATERNION"
     sun.rotation_quaternion = travel.to_track_quat("-Z", "Y")
-    return light.energy
+    return sun
 
 
-def add_world(background):
-    """World radiance `background` for camera rays only, black for all other rays."""
+def add_sun(direction, light_color):
+    """A delta sun whose light travels along `direction` with irradiance 4pi*colour."""
+    return add_sun_light("pyro_sun", direction, light_color, SUN_ENERGY_PER_LIGHT_COLOR).data.energy
+
+
+def add_world(background, ambient=(0.0, 0.0, 0.0)):
+    """World radiance `background` for camera rays only, `ambient` for all other rays."""
     world = bpy.data.worlds.new("pyro_world")
     bpy.context.scene.world = world
     world.use_nodes = True
@@ -363,7 +368,7 @@ def add_world(background):
     light_path = nodes.new("ShaderNodeLightPath")
     mix = nodes.new("ShaderNodeMixRGB")
     mix.blend_type = "MIX"
-    mix.inputs["Color1"].default_value = (0.0, 0.0, 0.0, 1.0)
+    mix.inputs["Color1"].default_value = (*ambient, 1.0)
     mix.inputs["Color2"].default_value = (*background, 1.0)
     links.new(light_path.outputs["Is Camera Ray"], mix.inputs["Fac"])
     emitter = nodes.new("ShaderNodeBackground")
@@ -371,8 +376,8 @@ def add_world(background):
     links.new(mix.outputs["Color"], emitter.inputs["Color"])
     output = nodes.new("ShaderNodeOutputWorld")
     links.new(emitter.outputs["Background"], output.inputs["Surface"])
-    # Never importance-sample the world as a light: it emits nothing off camera rays.
-    world.cycles.sampling_method = "NONE"
+    # A black sky is never importance-sampled as a light: it emits nothing off camera rays.
+    world.cycles.sampling_method = "AUTOMATIC" if max(ambient) > 0.0 else "NONE"
 
 
 def add_camera(position, target, up, fov_y_degrees, max_distance):

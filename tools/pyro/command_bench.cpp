@@ -1,4 +1,4 @@
-// pyro bench ecs | sort | scale | import-cases | render | johnson | layers | table1 | soak | vdb | relight | multiple-scattering | cycles | cycles-fire | schedule ... [--json]
+// pyro bench ecs | sort | scale | import-cases | render | johnson | layers | table1 | soak | vdb | relight | multiple-scattering | cycles | cycles-fire | cycles-scene | schedule ... [--json]
 //
 // Each subcommand parses its options, runs the benchmark (tools/bench; bench ecs:
 // tools/bench/bench_ecs.h) and prints its result.
@@ -231,6 +231,7 @@ void add_bench_commands(CLI::App& app) {
   add_bench_multiple_scattering_command(*bench);
   add_bench_cycles_command(*bench);
   add_bench_cycles_fire_command(*bench);
+  add_bench_cycles_scene_command(*bench);
   add_bench_explosion_shadows_command(*bench);
   add_bench_export_vdb_command(*bench);
 

@@ -33,6 +33,7 @@ void add_bench_relight_command(CLI::App& bench);       // command_bench_relight.
 void add_bench_multiple_scattering_command(CLI::App& bench);  // command_bench_multiple_scattering.cpp
 void add_bench_cycles_command(CLI::App& bench);       // command_bench_cycles.cpp
 void add_bench_cycles_fire_command(CLI::App& bench);  // command_bench_cycles_fire.cpp
+void add_bench_cycles_scene_command(CLI::App& bench);  // command_bench_cycles_scene.cpp
 void add_bench_explosion_shadows_command(CLI::App& bench);  // command_bench_explosion_shadows.cpp
 void add_bench_export_vdb_command(CLI::App& bench);  // command_bench_export_vdb.cpp
 

@@ -153,6 +153,8 @@ const std::map<std::string, std::vector<std::string>>& cheap_json_runs() {
                                      "--directions", "1", "--samples", "2", "--width", "8", "--height", "8"}},
       {"bench cycles", {"bench", "cycles", content_path("volumes/sample_cloud.vdb"), "--directions", "1",
                         "--samples", "2", "--width", "8", "--height", "8", "--blender", "/bin/false"}},
+      {"bench cycles-scene", {"bench", "cycles-scene", test::scene_path("fog.json"), "--width", "8", "--height", "8",
+                              "--voxel-error", "0.5", "--blender", "/bin/false"}},
       {"bench cycles-fire", {"bench", "cycles-fire", content_path("volumes/sample_fire.vdb"), "--width", "8",
                              "--height", "8", "--blender", "/bin/false"}},
       {"bench export-vdb", {"bench", "export-vdb", test::scene_path("fog.json"), "--voxel-size", "0.3",

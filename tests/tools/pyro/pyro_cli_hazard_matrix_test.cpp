@@ -99,6 +99,9 @@ std::vector<Command> commands() {
          return Args{"bench", "vdb-sequence", "--keep", o, "--frames", "1"}; }, "", ""},
       {"bench import-scale --keep", Shape::file, [](const fs::path&, const std::string& o) {
          return Args{"bench", "import-scale", "--keep", o, "--voxels", "1000"}; }, "", ""},
+      {"bench cycles-scene --image", Shape::file, [](const fs::path& f, const std::string& o) {
+         return Args{"bench", "cycles-scene", in_fixture(f, "scene.json"), "--image", o, "--blender", "/nonexistent/blender"}; },
+       "scene.json", "flame"},
       {"bench multiple-scattering --images", Shape::container, [](const fs::path& f, const std::string& o) {
          return Args{"bench", "multiple-scattering", in_fixture(f, "cloud.vdb"), "--images", o}; }, "", ""},
   };
