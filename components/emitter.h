@@ -29,6 +29,19 @@ struct EmitterBurst {
   uint32_t count = 0;
 };
 
+// Where births gather: a particle is born only where a space-time value noise over the emitter's
+// shape, n(frequency p + speed t d) with d a fixed diagonal, reaches `threshold` (its birth point
+// is drawn again, up to kPatternTries times, else the highest seen is kept). Flames' tongues: hot
+// patches that rise as streaks and break off when their patch moves on. frequency 0: everywhere.
+struct EmitterPattern {
+  float frequency = 0.0f;   // noise cells per world unit
+  float speed = 0.0f;       // noise cells per second
+  float threshold = -1.0f;  // in [−1, 1]
+
+  bool operator==(const EmitterPattern&) const = default;
+};
+inline constexpr int kPatternTries = 16;
+
 struct Emitter {
   std::string name;                        // for reports
   ParticleMedium medium = ParticleMedium::smoke;
@@ -40,6 +53,7 @@ struct Emitter {
   bool surface = false;
   glm::vec3 half_extent{1.0f};
   glm::vec3 axis{0.0f, 1.0f, 0.0f};
+  EmitterPattern pattern;
   // Timing: `rate` particles per second from `start` for `duration` seconds (fractions carry
   // over: after time t, floor(rate · (t − start)) have been emitted), plus bursts.
   float rate = 0.0f;

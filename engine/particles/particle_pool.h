@@ -31,6 +31,7 @@ struct ParticleInit {
   float temperature = 0.0f;
   float opacity = 1.0f;       // multiplies density's effect; curves over life drive it
   uint8_t medium = 0;         // a ParticleMedium (components/particle_medium.h): dust, smoke, fire
+  float age = 0.0f;           // seconds lived already (a stream's particle born within the step)
 };
 
 class ParticlePool {
@@ -61,7 +62,7 @@ class ParticlePool {
   uint64_t rejected() const { return rejected_; }
   uint32_t next_id() const { return next_id_; }
 
-  // Appends a particle with age 0; nullopt (and one more rejected()) if the pool is full.
+  // Appends a particle of age p.age; nullopt (and one more rejected()) if the pool is full.
   std::optional<std::size_t> spawn(const ParticleInit& p) {
     if (full()) {
       ++rejected_;
@@ -79,7 +80,7 @@ class ParticlePool {
     r[i] = p.color.x;
     g[i] = p.color.y;
     b[i] = p.color.z;
-    age[i] = 0.0f;
+    age[i] = p.age;
     lifetime[i] = p.lifetime;
     temperature[i] = p.temperature;
     opacity[i] = p.opacity;

@@ -10,16 +10,34 @@
 #include "components/particle_set.h"
 #include "components/simulation_environment.h"
 #include "engine/ecs/world.h"
+#include "engine/math/value_noise.h"
 #include "systems/emitter/emitter_sampling.h"
 
 namespace pyro {
 
 namespace {
 
-ParticleInit sample_particle(Emitter& e) {
+// A birth point on the shape where the pattern is on at time t (components/emitter.h).
+glm::vec3 birth_point(Emitter& e, double t) {
+  glm::vec3 p = sample_shape(e, e.rng);
+  const EmitterPattern& pattern = e.pattern;
+  if (!(pattern.frequency > 0.0f)) return p;
+  const glm::vec3 drift = glm::vec3(0.37f, 0.81f, 0.45f) * static_cast<float>(t * pattern.speed);
+  glm::vec3 best = p;
+  float best_value = -2.0f;
+  for (int i = 0; i < kPatternTries; ++i) {
+    if (i > 0) p = sample_shape(e, e.rng);
+    const float n = value_noise(p * pattern.frequency + drift, e.seed ^ 0x5bd1e995u);
+    if (n >= pattern.threshold) return p;
+    if (n > best_value) best_value = n, best = p;
+  }
+  return best;
+}
+
+ParticleInit sample_particle(Emitter& e, double birth) {
   Rng& rng = e.rng;
   ParticleInit p;
-  p.position = sample_shape(e, rng);
+  p.position = birth_point(e, birth);
   glm::vec3 dir = sample_cone(e.direction, e.cone_deg, rng);  // always drawn: fixed stream use
   if (e.radial) {
     const glm::vec3 out = p.position - e.position;
@@ -41,19 +59,20 @@ ParticleInit sample_particle(Emitter& e) {
 
 uint64_t emit_until(Emitter& e, ParticlePool& pool, double t, uint64_t& scene_room,
                     uint64_t* scene_refused) {
-  uint64_t owed = 0;
+  uint64_t bursts = 0, streamed = 0;
   while (e.next_burst < e.bursts.size() && e.bursts[e.next_burst].time <= t)
-    owed += e.bursts[e.next_burst++].count;
+    bursts += e.bursts[e.next_burst++].count;
+  const uint64_t stream_first = e.rate_emitted;  // the stream's particles born before this call
   if (e.rate > 0.0f && t > e.start) {
     const double active = std::min(t - e.start, static_cast<double>(e.duration));
     const auto target = static_cast<uint64_t>(std::floor(static_cast<double>(e.rate) * active));
-    if (target > e.rate_emitted) owed += target - e.rate_emitted;
+    if (target > e.rate_emitted) streamed = target - e.rate_emitted;
     e.rate_emitted = std::max(e.rate_emitted, target);
   }
   e.time = t;
   const std::size_t cap = std::min<std::size_t>(e.budget, pool.capacity());
   uint64_t spawned = 0;
-  for (uint64_t k = 0; k < owed; ++k) {
+  for (uint64_t k = 0; k < bursts + streamed; ++k) {
     if (pool.size() >= cap) {
       ++e.over_budget;
       continue;
@@ -63,7 +82,15 @@ uint64_t emit_until(Emitter& e, ParticlePool& pool, double t, uint64_t& scene_ro
       if (scene_refused) ++*scene_refused;
       continue;
     }
-    pool.spawn(sample_particle(e));
+    // The stream's n-th particle is born at start + n / rate, within the step: it is as old as the
+    // time since and has flown along its initial velocity, so a stream shows no bands a step's
+    // flight apart.
+    const double birth =
+        k >= bursts ? e.start + static_cast<double>(stream_first + (k - bursts) + 1) / e.rate : t;
+    ParticleInit p = sample_particle(e, birth);
+    p.age = static_cast<float>(std::max(0.0, t - birth));
+    p.position += p.velocity * p.age;
+    pool.spawn(p);
     --scene_room;
     ++spawned;
   }

@@ -35,6 +35,7 @@ const ParameterTable& fire_group_keys();
 const ParameterTable& emitter_keys();
 const ParameterTable& emitter_shape_keys();
 const ParameterTable& emitter_burst_keys();
+const ParameterTable& emitter_pattern_keys();
 const ParameterTable& dynamics_keys();
 const ParameterTable& dynamics_curve_keys();
 const ParameterTable& environment_keys();

@@ -645,6 +645,11 @@ void read_emitter(ObjectReader& r, EmitterDescription& out) {
     s.vec3("axis", e.axis);
     require_nonzero(e.axis, s.at("axis"), "disc axis");
   });
+  r.object("pattern", [&](ObjectReader& p) {
+    p.number("frequency", e.pattern.frequency);
+    p.number("speed", e.pattern.speed);
+    p.number("threshold", e.pattern.threshold);
+  });
   r.number("rate", e.rate);
   r.number("start", e.start);
   r.number("duration", e.duration);

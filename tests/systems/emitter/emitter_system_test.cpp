@@ -1,4 +1,4 @@
-// The emitter system on hand-built worlds: rate with fractional carry, bursts, budgets,
+// The emitter system on hand-built worlds: rate with fractional carry, births within the step, bursts, budgets,
 // shapes and distributions, determinism from seeds, prewarm.
 #include <gtest/gtest.h>
 
@@ -41,6 +41,23 @@ TEST(EmitterSystem, RateCarriesFractionsExactly) {
   for (int f = 31; f <= 60; ++f) total += emit_until(e, pool, f * dt, room);
   EXPECT_EQ(total, 15u);  // floor(7.5 · 2 s): the half carried over
   EXPECT_EQ(pool.size(), 15u);
+}
+
+// A stream's n-th particle is born at n / rate and has flown since: three born in a step of 0.1 s
+// at 30 a second, at 1/30, 2/30 and 3/30 s, are 2/30, 1/30 and 0 s old and stand as far along their
+// velocity (no band).
+TEST(EmitterSystem, StreamParticlesHaveFlownSinceTheirBirthInTheStep) {
+  Emitter e = make_emitter();
+  e.rate = 30.0f;
+  e.speed = Distribution::constant(1.5f);
+  ParticlePool pool(10);
+  uint64_t room = 10;
+  ASSERT_EQ(emit_until(e, pool, 0.1, room), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(pool.py[size_t(i)], 1.5 * (2 - i) / 30.0, 1e-6) << "particle " << i;
+    EXPECT_NEAR(pool.px[size_t(i)], 0.0, 1e-6);
+    EXPECT_NEAR(pool.age[size_t(i)], (2 - i) / 30.0, 1e-6);
+  }
 }
 
 TEST(EmitterSystem, RateRespectsStartAndDuration) {

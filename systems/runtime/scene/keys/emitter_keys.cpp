@@ -32,6 +32,17 @@ const ParameterTable& emitter_burst_keys() {
   return table;
 }
 
+const ParameterTable& emitter_pattern_keys() {
+  static const EmitterPattern d{};
+  static const ParameterTable table{
+      "emitters[].pattern", "Where births gather: a space-time noise over the shape (flames' tongues).",
+      {number_key("frequency", kNonNegative, "Noise cells per world unit; 0: births everywhere.").with_default(d.frequency),
+       number_key("speed", kNonNegative, "Noise cells the pattern moves per second.").with_default(d.speed),
+       number_key("threshold", Range{-1.0, 1.0}, "Births only where the noise in [-1, 1] reaches this.")
+           .with_default(d.threshold)}};
+  return table;
+}
+
 const ParameterTable& dynamics_curve_keys() {
   static const ParameterTable table{
       "emitters[].dynamics.curves", "Curves over the particle's life, [[t, value], ...], t in [0, 1].",
@@ -73,6 +84,7 @@ const ParameterTable& emitter_keys() {
       {string_key("name", "Label for reports.").with_default(d.name),
        enum_key<ParticleMedium>("medium", "What the particles are.").with_default(d.medium),
        object_key("shape", emitter_shape_keys(), "Where particles are born."),
+       object_key("pattern", emitter_pattern_keys(), "Where births gather over the shape."),
        number_key("rate", kNonNegative, "Particles per second.").with_default(d.rate),
        number_key("start", kNonNegative, "Seconds before the rate starts.").with_default(d.start),
        number_key("duration", kNonNegative, "Seconds the rate lasts (absent: forever)."),
