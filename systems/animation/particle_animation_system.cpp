@@ -114,8 +114,15 @@ void advance_particles(ParticlePool& p, const ParticleDynamics& d, const Simulat
     if (f.turbulent)
       w += d.turbulence * curl_noise(x * d.turbulence_frequency + f.noise_shift, d.turbulence_seed);
     const glm::vec3 forcing = a + f.k * w;
-    x += v * f.phi1 + forcing * f.phi2;
-    v = v * f.e_drag + forcing * f.phi1;
+    // A particle born within the last step (systems/emitter: as old as the time since its birth)
+    // catches up over that time too: it is stepped over its age plus the step.
+    float phi1 = f.phi1, phi2 = f.phi2, e_drag = f.e_drag;
+    if (p.age[i] > 0.0f && p.age[i] < dt) {
+      const float h = dt + p.age[i];
+      phi1 = exp_phi1(f.k, h), phi2 = exp_phi2(f.k, h), e_drag = std::exp(-f.k * h);
+    }
+    x += v * phi1 + forcing * phi2;
+    v = v * e_drag + forcing * phi1;
     if (d.collide) collide_particle(x, v, env, d.restitution, d.friction);
     p.px[i] = x.x, p.py[i] = x.y, p.pz[i] = x.z;
     p.vx[i] = v.x, p.vy[i] = v.y, p.vz[i] = v.z;

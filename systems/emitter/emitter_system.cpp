@@ -83,13 +83,12 @@ uint64_t emit_until(Emitter& e, ParticlePool& pool, double t, uint64_t& scene_ro
       continue;
     }
     // The stream's n-th particle is born at start + n / rate, within the step: it is as old as the
-    // time since and has flown along its initial velocity, so a stream shows no bands a step's
-    // flight apart.
+    // time since, over which the animation system moves it on top of the step (a stream shows no
+    // bands a step's flight apart).
     const double birth =
         k >= bursts ? e.start + static_cast<double>(stream_first + (k - bursts) + 1) / e.rate : t;
     ParticleInit p = sample_particle(e, birth);
     p.age = static_cast<float>(std::max(0.0, t - birth));
-    p.position += p.velocity * p.age;
     pool.spawn(p);
     --scene_room;
     ++spawned;

@@ -2,8 +2,9 @@
 // Spawn phase: every Emitter spawns into its entity's ParticleSet what its rate and bursts ask
 // for up to the current scene time t = (frame + prewarm steps) · dt. Counting is by absolute
 // time (after t, floor(rate · (t − start)) rate particles in all), so fractions carry over
-// exactly and the count never drifts; the stream's n-th particle is born at start + n / rate and
-// has flown along its initial velocity since, so a fast stream shows no bands a step apart. Budgets: an emitter never holds more than its `budget`
+// exactly and the count never drifts; the stream's n-th particle is born at start + n / rate, as
+// old as the time since, which the animation system's next step adds to its own (a stream shows
+// no bands a step apart). Budgets: an emitter never holds more than its `budget`
 // live particles, nor the scene more than SimulationEnvironment::particle_budget; refused spawns
 // are counted (Emitter::over_budget, SimulationEnvironment::over_budget) and draw no random
 // numbers. Emitters run in entity order, one stream each: deterministic for any thread count.
