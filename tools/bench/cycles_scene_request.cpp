@@ -24,22 +24,22 @@ namespace pyro {
 
 namespace {
 
-nlohmann::json vec3_json(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+nlohmann::json world_vec3_json(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
 nlohmann::json camera_json(const CameraFrame& f) {
-  return {{"position", vec3_json(glm::dvec3(f.eye))},
-          {"target", vec3_json(glm::dvec3(f.eye) + glm::dvec3(f.forward))},
-          {"up", vec3_json(glm::dvec3(f.up))},
+  return {{"position", world_vec3_json(glm::dvec3(f.eye))},
+          {"target", world_vec3_json(glm::dvec3(f.eye) + glm::dvec3(f.forward))},
+          {"up", world_vec3_json(glm::dvec3(f.up))},
           {"fov_y_deg", double(f.fov_y_rad) * 180.0 / M_PI}};
 }
 
 void add_lights(const LightBlock& block, CyclesScene& out) {
   nlohmann::json suns = nlohmann::json::array();
   for (int i = 0; i < block.counts.x; ++i)
-    suns.push_back({{"travel", vec3_json(glm::dvec3(block.sun_travel[i]))},
-                    {"radiance", vec3_json(glm::dvec3(block.sun_radiance[i]))}});
+    suns.push_back({{"travel", world_vec3_json(glm::dvec3(block.sun_travel[i]))},
+                    {"radiance", world_vec3_json(glm::dvec3(block.sun_radiance[i]))}});
   out.request["suns"] = suns;
-  out.request["ambient"] = vec3_json(glm::dvec3(block.ambient));
+  out.request["ambient"] = world_vec3_json(glm::dvec3(block.ambient));
   if (block.counts.x > 0) out.toward_key = glm::dvec3(block.sun_toward[0]);
   if (block.counts.x > 1) out.approximations.push_back("suns after the first are unshadowed in the engine");
   if (block.counts.y > 0) out.approximations.push_back("the engine lights with the fire's clustered point lights, Cycles with the glowing medium itself");
@@ -63,7 +63,7 @@ void add_meshes(ecs::World& world, CyclesScene& out) {
     for (size_t t = 0; t + 2 < d.indices.size(); t += 3)
       out.triangles.push_back({world_points[d.indices[t]], world_points[d.indices[t + 1]], world_points[d.indices[t + 2]]});
     meshes.push_back({{"name", "mesh_" + std::to_string(e.index)},
-                      {"albedo", vec3_json(glm::dvec3(m.color))},
+                      {"albedo", world_vec3_json(glm::dvec3(m.color))},
                       {"positions", positions},
                       {"normals", normals},
                       {"indices", d.indices}});
@@ -127,7 +127,7 @@ void add_media(ecs::World& world, const CyclesSceneOptions& o, CyclesScene& out)
   write_vdb_grids(o.vdb, media_vdb_grids(out.media));
   out.request["media"] = {{"vdb", o.vdb},
                           {"anisotropy", g},
-                          {"albedo", vec3_json(glm::dvec3(samples.front().color))},
+                          {"albedo", world_vec3_json(glm::dvec3(samples.front().color))},
                           {"color_grid", vary ? "color" : ""},
                           {"emission_grid", emits ? "emission" : ""}};
 }
