@@ -14,6 +14,7 @@
 
 #include "engine/gpu/shader_program.h"
 #include "engine/math/gaussian_line_integral.h"
+#include "engine/math/thick_particle.h"
 #include "systems/billboard_render/particle_blending.h"
 #include "systems/billboard_render/parallel_copy.h"
 #include "systems/billboard_render/scattering_uniforms.h"
@@ -107,12 +108,10 @@ void copy_ids(const std::vector<const ParticlePool*>& pools, uint32_t* ids) {
   }
 }
 
-// Whether a particle's optical depth through its centre, -ln(1 - rho), is at least 1
-// (billboard.frag, THICK_PARTICLES).
+// Whether a particle is thick (engine/math/thick_particle.h; billboard.frag, THICK_PARTICLES).
 bool any_thick(const std::vector<const ParticlePool*>& pools) {
-  const float thick = float(-std::expm1(-1.0));
   for (const ParticlePool* p : pools)
-    if (std::any_of(p->density.begin(), p->density.end(), [&](float rho) { return rho >= thick; })) return true;
+    if (std::any_of(p->density.begin(), p->density.end(), thick_particle)) return true;
   return false;
 }
 

@@ -155,6 +155,24 @@ TEST(QualityCandidates, SearchTheKnobsEachSceneHas) {
   EXPECT_EQ(d.substeps, 1);
 }
 
+// Thick clouds (centre opacity at least 1 - 1/e) also try the 128-texel map; thinner ones do not.
+TEST(QualityCandidates, ThickCloudsAlsoTryTheFinerMap) {
+  SceneDescription lit;
+  lit.render.particles = ParticleShape::gaussian;
+  lit.shadows = ShadowSettings{};
+  lit.clouds.emplace_back();
+  lit.clouds.back().density = 0.62f;
+  const auto finer = [](const std::vector<QualitySettings>& c) {
+    return std::count_if(c.begin(), c.end(), [](const QualitySettings& q) {
+      return q.shadows && q.shadows->method == ShadowMethod::shadow_map && q.shadows->map_size == 128 &&
+             q.shadows->map_slices == 64;
+    });
+  };
+  EXPECT_EQ(finer(quality_candidates(lit)), 0);
+  lit.clouds.back().density = 0.7f;
+  EXPECT_EQ(finer(quality_candidates(lit)), 12);  // layer scales x footprints
+}
+
 TEST(QualityCandidates, LitScenesAlsoChooseTheirShadows) {
   SceneDescription lit;
   lit.render.particles = ParticleShape::gaussian;
