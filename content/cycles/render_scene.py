@@ -132,19 +132,9 @@ def add_media(media):
 
 def add_emission(obj, grid):
     """The vector grid's radiance per unit length, emitted beside the scattering."""
-    tree = obj.data.materials[0].node_tree
-    nodes, links = tree.nodes, tree.links
-    output = next(n for n in nodes if n.type == "OUTPUT_MATERIAL")
-    principled = next(n for n in nodes if n.type == "PRINCIPLED_VOLUME")
-    attribute = nodes.new("ShaderNodeAttribute")
+    attribute = obj.data.materials[0].node_tree.nodes.new("ShaderNodeAttribute")
     attribute.attribute_name = grid
-    glow = nodes.new("ShaderNodeEmission")
-    glow.inputs["Strength"].default_value = 1.0
-    links.new(attribute.outputs["Vector"], glow.inputs["Color"])
-    both = nodes.new("ShaderNodeAddShader")
-    links.new(principled.outputs["Volume"], both.inputs[0])
-    links.new(glow.outputs["Emission"], both.inputs[1])
-    links.new(both.outputs["Shader"], output.inputs["Volume"])
+    rv.add_glow(obj, attribute.outputs["Vector"])
 
 
 def add_sun_pair(sun, index):

@@ -303,12 +303,27 @@ def make_material(obj, grid_name, extinction, albedo, anisotropy):
     obj.data.materials.append(material)
 
 
-def add_blackbody_emission(obj, temperature_grid, emission_grid):
-    """Adds E * c(T) / Y(c(T)) emission to the volume's material (see the header)."""
+def add_glow(obj, color_socket, strength_socket=None):
+    """Adds an Emission of that colour (and strength, else 1) beside the volume's scattering."""
     tree = obj.data.materials[0].node_tree
     nodes, links = tree.nodes, tree.links
     output = next(n for n in nodes if n.type == "OUTPUT_MATERIAL")
     principled = next(n for n in nodes if n.type == "PRINCIPLED_VOLUME")
+    glow = nodes.new("ShaderNodeEmission")
+    glow.inputs["Strength"].default_value = 1.0
+    links.new(color_socket, glow.inputs["Color"])
+    if strength_socket is not None:
+        links.new(strength_socket, glow.inputs["Strength"])
+    both = nodes.new("ShaderNodeAddShader")
+    links.new(principled.outputs["Volume"], both.inputs[0])
+    links.new(glow.outputs["Emission"], both.inputs[1])
+    links.new(both.outputs["Shader"], output.inputs["Volume"])
+
+
+def add_blackbody_emission(obj, temperature_grid, emission_grid):
+    """Adds E * c(T) / Y(c(T)) emission to the volume's material (see the header)."""
+    tree = obj.data.materials[0].node_tree
+    nodes, links = tree.nodes, tree.links
     kelvin = nodes.new("ShaderNodeAttribute")
     kelvin.attribute_name = temperature_grid
     strength = nodes.new("ShaderNodeAttribute")
@@ -325,13 +340,7 @@ def add_blackbody_emission(obj, temperature_grid, emission_grid):
     per_luminance.operation = "DIVIDE"
     links.new(strength.outputs["Fac"], per_luminance.inputs[0])
     links.new(floor.outputs["Value"], per_luminance.inputs[1])
-    glow = nodes.new("ShaderNodeEmission")
-    links.new(blackbody.outputs["Color"], glow.inputs["Color"])
-    links.new(per_luminance.outputs["Value"], glow.inputs["Strength"])
-    both = nodes.new("ShaderNodeAddShader")
-    links.new(principled.outputs["Volume"], both.inputs[0])
-    links.new(glow.outputs["Emission"], both.inputs[1])
-    links.new(both.outputs["Shader"], output.inputs["Volume"])
+    add_glow(obj, blackbody.outputs["Color"], per_luminance.outputs["Value"])
 
 
 def add_sun_light(name, direction, light_color, energy_per_color):
