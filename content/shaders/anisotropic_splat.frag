@@ -13,7 +13,7 @@
 // footprint of its own extinction (Max 1995, absorption plus emission).
 //
 // LIT: the colour is the albedo times the light reaching the particle along the pixel's ray,
-// averaged over the particle's density there (three points, below):
+// averaged over the particle's density there (two points, below):
 //   L(p) = sun S(mu, tau_others(c) + grad . (p - c) + tau_self(p)) + ambient,
 // tau_others and its gradient the light phase's (components/particle_light.h), tau_self(p) the
 // particle's own depth from p toward the sun in the same closed form (the segment from
@@ -57,20 +57,31 @@ float erf_as_7_1_26(float x) {
 }
 
 #if LIT
+// The sun's whitened way, s = M toward_sun, and what the particle's own depth toward the sun
+// needs of it, the same for every point of the fragment.
+struct SunSegment {
+  float inv_a;  // 1 / |s|^2
+  float rate;   // sqrt(|s|^2 / 2)
+  float scale;  // sqrt(pi / (2 |s|^2))
+};
+SunSegment sun_segment() {
+  float a = dot(v_sun_whitened, v_sun_whitened);
+  return SunSegment(1.0 / a, sqrt(0.5 * a), sqrt(kPi / (2.0 * a)));
+}
+
 // The particle's own optical depth from the point whose whitened coordinates are u toward the sun
 // (AnisotropicRaySegment::depth(0, infinity) of the segment from u along M toward_sun), peak
 // extinction k.
-float own_depth_toward_sun(vec3 u, float k) {
+float own_depth_toward_sun(vec3 u, float k, SunSegment s) {
   float e2 = kExtent * kExtent;
-  float a = dot(v_sun_whitened, v_sun_whitened);
-  float t_c = -dot(u, v_sun_whitened) / a;
+  float t_c = -dot(u, v_sun_whitened) * s.inv_a;
   vec3 nearest = u + t_c * v_sun_whitened;
   float m2 = dot(nearest, nearest);
   if (!(m2 < e2)) return 0.0;
-  float h = sqrt((e2 - m2) / a), rate = sqrt(0.5 * a);
+  float h = sqrt((e2 - m2) * s.inv_a);
   float from = max(0.0, t_c - h), to = t_c + h;
   if (!(to > from)) return 0.0;
-  return k * exp(-0.5 * m2) * sqrt(kPi / (2.0 * a)) * (erf_as_7_1_26(rate * (to - t_c)) - erf_as_7_1_26(rate * (from - t_c)));
+  return k * exp(-0.5 * m2) * s.scale * (erf_as_7_1_26(s.rate * (to - t_c)) - erf_as_7_1_26(s.rate * (from - t_c)));
 }
 #endif
 
@@ -94,18 +105,19 @@ void main() {
   float alpha = 1.0 - exp(-tau);
 #if LIT
   // The light averaged over the particle's density along the ray, which is a normal profile in t
-  // about t_closest with variance 1 / a: three-point Gauss-Hermite quadrature (nodes 0 and
-  // +-sqrt(3) standard deviations, weights 2/3 and 1/6), nodes kept to the visible chord.
+  // about t_closest with variance 1 / a: two-point Gauss-Hermite quadrature (nodes at +-1
+  // standard deviation, weights 1/2; exact for cubics), nodes kept to the visible chord.
   vec3 w = v_ray / length(v_ray);
-  float mu = dot(w, v_key_toward), spread = sqrt(3.0 / a);
-  vec3 light = v_ambient;
-  for (int node = -1; node <= 1; ++node) {
-    float t_node = clamp(t_closest + float(node) * spread, lo, hi);
+  float mu = dot(w, v_key_toward), spread = sqrt(1.0 / a);
+  SunSegment sun = sun_segment();
+  vec2 tau_nodes;
+  for (int node = 0; node < 2; ++node) {
+    float t_node = clamp(t_closest + float(2 * node - 1) * spread, lo, hi);
     vec3 offset = v_eye_offset + t_node * w;
-    float tau_self = own_depth_toward_sun(v_eye_whitened + t_node * v, v_color_extinction.a);
-    float tau_sun = u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, offset) + tau_self);
-    light += (node == 0 ? 2.0 / 3.0 : 1.0 / 6.0) * v_key_radiance * sun_scattering(mu, max(tau_sun, 0.0));
+    float tau_self = own_depth_toward_sun(v_eye_whitened + t_node * v, v_color_extinction.a, sun);
+    tau_nodes[node] = max(u_self_shadow * (v_others_depth.x + dot(v_others_depth.yzw, offset) + tau_self), 0.0);
   }
+  vec3 light = v_ambient + v_key_radiance * sun_scattering_mean(mu, tau_nodes);
   o_color = vec4((v_color_extinction.rgb * light + v_emission) * alpha, alpha);
 #else
   o_color = vec4((v_color_extinction.rgb + v_emission) * alpha, alpha);
